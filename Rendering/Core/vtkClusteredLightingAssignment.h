@@ -1,0 +1,150 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @file vtkClusteredLightingAssignment.h
+ * @brief GL-free per-view step: light records in view coordinates and list-pass quads.
+ *
+ * Data flow of one frame (CPU in double precision, GPU in float):
+ *
+ *   PreparedLight[]  --PackLightData-->   clLightData  (2 RGBA32F texels / light,
+ *   (world coords,                         uploaded when lights change)
+ *    Morton order)   --ComputeViewData--> clLightView  (2 RGBA32F texels / light,
+ *                                          uploaded when the view changes)
+ *                                       + clQuads      (2 RGBA32F texels per (light, slice))
+ *
+ *   clQuads --list pass (instanced quads, logic-op OR)--> list texture (R32UI)
+ *   list    --master pass (full screen)----------------> master texture (R32UI)
+ *   fragment: cluster -> master bits -> list bits -> clLightData/clLightView -> shade
+ *
+ * Positions are transformed to view coordinates in double precision, so scenes far from
+ * the origin keep their precision (the float records are relative to the eye).
+ */
+#ifndef vtkClusteredLightingAssignment_h
+#define vtkClusteredLightingAssignment_h
+
+#include "vtkClusteredLightingLights.h"
+#include "vtkClusteredLightingReference.h"
+#include "vtkClusteredLightingSphereBounds.h"
+
+#include <glm/glm.hpp>
+#include <vector> // for std::vector
+
+namespace vtkClusteredLighting
+{
+
+/// Floats per light in clLightData / clLightView, and per (light, slice) quad in clQuads:
+///   (tileMinX, tileMinY, tileMaxX, tileMaxY), (slice, light index, 0, 0).
+constexpr int FloatsPerLightRecord = 8;
+constexpr int FloatsPerQuad = 8;
+
+/// Radius used in the shader for always-on lights (comparisons with +inf are avoided).
+constexpr float AlwaysOnRadius = 1e30f;
+
+/// How light spheres are bounded on screen.
+enum class BoundsMethod
+{
+  Tangent = 0,        ///< exact, conservative (default)
+  CenterDepthQuad = 1 ///< non-conservative; for benchmark comparisons only
+};
+
+struct ViewParameters
+{
+  glm::dmat4 WCVC = glm::dmat4(1.0); ///< world -> view (VTK's model-view matrix)
+  glm::dmat4 VCDC = glm::dmat4(1.0); ///< view -> clip (VTK's projection matrix)
+  ClusterGridParams Grid;            ///< includes the clustering near/far (camera planes)
+  BoundsMethod Bounds = BoundsMethod::Tangent;
+  ClusterRangePadding Padding;
+};
+
+struct ViewData
+{
+  std::vector<float> LightView;         ///< FloatsPerLightRecord per light
+  std::vector<float> Quads;             ///< FloatsPerQuad per (light, slice)
+  std::vector<ReferenceLight> LightsVC; ///< double-precision VC centre + radius
+  int NumberOfQuads = 0;
+  int NumberOfAssignedLights = 0; ///< lights with at least one quad
+  int NumberOfCulled = 0;         ///< lights with a radius that miss the view frustum
+};
+
+/// clLightData: (color * intensity, exponent), (a0, a1, a2, cos(cone) or -2).
+inline std::vector<float> PackLightData(const std::vector<PreparedLight>& lights)
+{
+  std::vector<float> out(lights.size() * FloatsPerLightRecord);
+  for (std::size_t i = 0; i < lights.size(); ++i)
+  {
+    const PreparedLight& l = lights[i];
+    float* o = &out[i * FloatsPerLightRecord];
+    o[0] = static_cast<float>(l.Color.x);
+    o[1] = static_cast<float>(l.Color.y);
+    o[2] = static_cast<float>(l.Color.z);
+    o[3] = static_cast<float>(l.Exponent);
+    o[4] = static_cast<float>(l.Attenuation.x);
+    o[5] = static_cast<float>(l.Attenuation.y);
+    o[6] = static_cast<float>(l.Attenuation.z);
+    o[7] = static_cast<float>(l.CosCone);
+  }
+  return out;
+}
+
+/**
+ * View records and list-pass quads for the current view. Lights whose radius is 0, or
+ * whose sphere misses the frustum, get no quad (they cost nothing in the list pass).
+ */
+inline ViewData ComputeViewData(const std::vector<PreparedLight>& lights, const ViewParameters& v)
+{
+  ViewData out;
+  const std::size_t n = lights.size();
+  out.LightView.resize(n * FloatsPerLightRecord);
+  out.LightsVC.resize(n);
+  out.Quads.reserve(n * FloatsPerQuad);
+  // Spot axes transform like vtkTransform::TransformNormal (inverse transpose), as VTK.
+  const glm::dmat3 normalMatrix = glm::transpose(glm::inverse(glm::dmat3(v.WCVC)));
+  std::vector<SliceTileRange> ranges;
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    const PreparedLight& l = lights[i];
+    const glm::dvec3 c = glm::dvec3(v.WCVC * glm::dvec4(l.PositionWC, 1.0));
+    glm::dvec3 dir(0.0);
+    if (l.CosCone > -1.5)
+    {
+      dir = normalMatrix * l.DirectionWC;
+      const double len = glm::length(dir);
+      dir = len > 0.0 ? dir / len : glm::dvec3(0.0);
+    }
+    float* o = &out.LightView[i * FloatsPerLightRecord];
+    o[0] = static_cast<float>(c.x);
+    o[1] = static_cast<float>(c.y);
+    o[2] = static_cast<float>(c.z);
+    o[3] = std::isinf(l.Radius) ? AlwaysOnRadius : static_cast<float>(l.Radius);
+    o[4] = static_cast<float>(dir.x);
+    o[5] = static_cast<float>(dir.y);
+    o[6] = static_cast<float>(dir.z);
+    o[7] = 0.0f;
+    out.LightsVC[i] = ReferenceLight{ c, l.Radius };
+    if (!(l.Radius > 0.0))
+    {
+      continue;
+    }
+    ranges.clear();
+    if (ComputeSliceTileRanges(c, l.Radius, v.VCDC, v.Grid, ranges,
+          v.Bounds == BoundsMethod::CenterDepthQuad, v.Padding) == 0)
+    {
+      ++out.NumberOfCulled;
+      continue;
+    }
+    for (const SliceTileRange& r : ranges)
+    {
+      const float q[FloatsPerQuad] = { static_cast<float>(r.TileMin[0]),
+        static_cast<float>(r.TileMin[1]), static_cast<float>(r.TileMax[0]),
+        static_cast<float>(r.TileMax[1]), static_cast<float>(r.Slice), static_cast<float>(i), 0.0f,
+        0.0f };
+      out.Quads.insert(out.Quads.end(), q, q + FloatsPerQuad);
+    }
+    out.NumberOfQuads += static_cast<int>(ranges.size());
+    ++out.NumberOfAssignedLights;
+  }
+  return out;
+}
+
+} // namespace vtkClusteredLighting
+
+#endif

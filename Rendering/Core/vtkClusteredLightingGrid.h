@@ -1,0 +1,172 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @file vtkClusteredLightingGrid.h
+ * @brief GL-free cluster grid: screen tiles and depth slices.
+ *
+ * The view frustum of one renderer is cut into TilesX x TilesY screen tiles and
+ * Slices depth slices. A fragment belongs to cluster (tx, ty, s):
+ *
+ *   tx = floor((fragCoord.x - viewportOrigin.x) * TilesX / viewportWidth)   clamped to [0, X-1]
+ *   ty = floor((fragCoord.y - viewportOrigin.y) * TilesY / viewportHeight)  clamped to [0, Y-1]
+ *   s  = ComputeSliceIndex(depth)                                            clamped to [0, Z-1]
+ *
+ * where depth = -z of the fragment in view coordinates (VC: eye at the origin looking
+ * down -z). Depth slicing runs between the clustering near and far depths NearVC and
+ * FarVC (the pass uses the camera clipping range of the current frame):
+ *
+ *   Exponential:  s = floor(Z * ln(depth / NearVC) / ln(FarVC / NearVC))
+ *   Linear:       s = floor(Z * (depth - NearVC) / (FarVC - NearVC))
+ *
+ * Both are clamped to [0, Z-1] and monotonic in depth. A depth at or below NearVC
+ * (including 0 and negative depths: a light that reaches the camera or straddles the
+ * near plane) maps to slice 0 without evaluating a logarithm of a non-positive number;
+ * depths beyond FarVC land in the last slice. Slice k spans
+ * [ComputeSliceBoundary(k), ComputeSliceBoundary(k+1)) and ComputeSliceIndex of a
+ * boundary returns exactly k (pinned by unit tests).
+ *
+ * The GLSL function clComputeSliceIndex mirrors ComputeSliceIndex with the values of
+ * ComputeSliceShaderParameters.
+ */
+#ifndef vtkClusteredLightingGrid_h
+#define vtkClusteredLightingGrid_h
+
+#include <algorithm> // for std::clamp
+#include <cmath>     // for std::log
+
+namespace vtkClusteredLighting
+{
+
+/// How depth is cut into slices.
+enum class SlicingScheme
+{
+  Exponential = 0, ///< slices grow geometrically with depth (good for perspective)
+  Linear = 1       ///< equal depth slices (good for parallel projection)
+};
+
+/// Screen-tile and depth-slice counts of one renderer's cluster grid.
+struct ClusterGridParams
+{
+  int TilesX = 32;
+  int TilesY = 16;
+  int Slices = 32;
+  int ViewportWidth = 1;  ///< pixels
+  int ViewportHeight = 1; ///< pixels
+  double NearVC = 0.1;    ///< clustering near depth (> 0)
+  double FarVC = 1000.0;  ///< clustering far depth (> NearVC)
+  SlicingScheme Scheme = SlicingScheme::Exponential;
+
+  int GetNumberOfClusters() const { return this->TilesX * this->TilesY * this->Slices; }
+};
+
+/// Sanitize near/far so that slicing is always well defined (NearVC > 0, FarVC > NearVC).
+inline void SanitizeDepthRange(double& nearVC, double& farVC)
+{
+  if (!(nearVC > 0.0) || !std::isfinite(nearVC))
+  {
+    nearVC = 1e-6;
+  }
+  if (!(farVC > nearVC) || !std::isfinite(farVC))
+  {
+    farVC = nearVC * 2.0;
+  }
+}
+
+/// Continuous slice coordinate (before flooring and clamping). Monotonic in depth.
+inline double ComputeSliceCoordinate(double depthVC, const ClusterGridParams& grid)
+{
+  const double z = static_cast<double>(grid.Slices);
+  if (grid.Scheme == SlicingScheme::Linear)
+  {
+    return z * (depthVC - grid.NearVC) / (grid.FarVC - grid.NearVC);
+  }
+  if (!(depthVC > grid.NearVC))
+  {
+    return 0.0; // no log of a non-positive (or tiny) number: near slice
+  }
+  return z * std::log(depthVC / grid.NearVC) / std::log(grid.FarVC / grid.NearVC);
+}
+
+/// Depth where slice k begins (k in [0, Slices]). For assignment, slice 0 also holds
+/// every depth below NearVC and the last slice every depth beyond FarVC.
+inline double ComputeSliceBoundary(int k, const ClusterGridParams& grid)
+{
+  const double t = static_cast<double>(k) / static_cast<double>(grid.Slices);
+  if (grid.Scheme == SlicingScheme::Linear)
+  {
+    return grid.NearVC + t * (grid.FarVC - grid.NearVC);
+  }
+  return grid.NearVC * std::pow(grid.FarVC / grid.NearVC, t);
+}
+
+/// Slice index of a view depth, clamped to [0, Slices-1]. NaN maps to slice 0.
+/// Consistent with ComputeSliceBoundary: boundary(s) <= depth < boundary(s+1).
+inline int ComputeSliceIndex(double depthVC, const ClusterGridParams& grid)
+{
+  const int last = grid.Slices - 1;
+  const double c = std::floor(ComputeSliceCoordinate(depthVC, grid));
+  int s = 0;
+  if (c > 0.0)
+  {
+    s = c >= static_cast<double>(last) ? last : static_cast<int>(c);
+  }
+  else if (!(c == c))
+  {
+    return 0; // NaN depth
+  }
+  // log/pow rounding can put a depth one slice off right at a boundary: fix up.
+  if (s > 0 && depthVC < ComputeSliceBoundary(s, grid))
+  {
+    --s;
+  }
+  else if (s < last && depthVC >= ComputeSliceBoundary(s + 1, grid))
+  {
+    ++s;
+  }
+  return s;
+}
+
+/// Tile index along one axis for a pixel-centre coordinate relative to the viewport
+/// origin (e.g. 0.5 for the first pixel), clamped to [0, tiles-1].
+inline int ComputeTileIndex(double pixelCoord, int viewportSize, int tiles)
+{
+  const double t = std::floor(pixelCoord * static_cast<double>(tiles) / viewportSize);
+  if (!(t > 0.0))
+  {
+    return 0;
+  }
+  return t >= tiles - 1 ? tiles - 1 : static_cast<int>(t);
+}
+
+/// Linear cluster id used by CPU-side tables: ((ty * X) + tx) * Z + s.
+inline int ComputeClusterId(int tx, int ty, int s, const ClusterGridParams& grid)
+{
+  return (ty * grid.TilesX + tx) * grid.Slices + s;
+}
+
+/**
+ * Uniform values for the GLSL mirror clComputeSliceIndex(depth):
+ *   exponential: s = floor(log(depth * P[0]) * P[1])   (depth <= NearVC -> 0)
+ *   linear:      s = floor((depth - P[2]) * P[1])
+ * P[3] is 0 for exponential and 1 for linear.
+ */
+inline void ComputeSliceShaderParameters(const ClusterGridParams& grid, double p[4])
+{
+  if (grid.Scheme == SlicingScheme::Linear)
+  {
+    p[0] = 1.0 / grid.NearVC;
+    p[1] = grid.Slices / (grid.FarVC - grid.NearVC);
+    p[2] = grid.NearVC;
+    p[3] = 1.0;
+  }
+  else
+  {
+    p[0] = 1.0 / grid.NearVC;
+    p[1] = grid.Slices / std::log(grid.FarVC / grid.NearVC);
+    p[2] = grid.NearVC;
+    p[3] = 0.0;
+  }
+}
+
+} // namespace vtkClusteredLighting
+
+#endif

@@ -1,0 +1,324 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @file vtkClusteredLightingLights.h
+ * @brief GL-free light preparation: validation, influence radius, Morton order.
+ *
+ * Shading follows VTK 9.1's positional-light formulas exactly:
+ *
+ *   att(d)   = 1 / (a0 + a1 d + a2 d^2)
+ *   spot     : att *= coneDot^exponent if coneDot >= cos(coneAngle), else 0
+ *   diffuse  += max(0, att N.(-L)) * color * intensity
+ *   specular += sign(df) att max(0, reflect(L, N).V)^power * color * intensity
+ *
+ * att never reaches 0, so clustering needs a finite influence radius. With
+ * peak = intensity * max(color) and a cutoff eps (the contribution below which a light
+ * is ignored), the radius solves  peak * att(r) = eps,  i.e.
+ *
+ *   a2 r^2 + a1 r + a0 = peak / eps  ->  r = 2 (K - a0) / (a1 + sqrt(a1^2 + 4 a2 (K - a0)))
+ *
+ * with K = peak / eps (this form is stable when a2 -> 0). Then:
+ *  - a1 = a2 = 0 (VTK's default attenuation (1,0,0)) gives r = infinity: the light is an
+ *    "always-on" light, assigned to every cluster and never dropped;
+ *  - a0 >= K means the light is below the cutoff everywhere: r = 0 (it is still kept in
+ *    the light buffer so that the brute-force reference evaluates it);
+ *  - an explicit radius caps the derived one: r = min(explicit, derived).
+ * The cutoff is per light and per channel for a white material with Diffuse = 1;
+ * material coefficients scale it (Diffuse + Specular <= 1 keeps the bound).
+ *
+ * Invalid input (non-finite or negative values, attenuation that is negative, non-finite
+ * or all zero, a spot without a direction) is reported per light with a message naming
+ * it; such a light is skipped and no other light is affected.
+ */
+#ifndef vtkClusteredLightingLights_h
+#define vtkClusteredLightingLights_h
+
+#include "vtkClusteredLightingMorton.h"
+
+#include <cmath> // for std::isfinite
+#include <cstdint>
+#include <functional> // for std::function
+#include <glm/glm.hpp>
+#include <limits>  // for std::numeric_limits
+#include <sstream> // for std::ostringstream
+#include <string>  // for std::string
+#include <vector>  // for std::vector
+
+namespace vtkClusteredLighting
+{
+
+/// One light as the user describes it (world coordinates, VTK conventions).
+struct LightSource
+{
+  glm::dvec3 PositionWC = glm::dvec3(0.0);
+  glm::dvec3 Color = glm::dvec3(1.0); ///< VTK's DiffuseColor
+  double Intensity = 1.0;
+  glm::dvec3 Attenuation = glm::dvec3(1.0, 0.0, 0.0); ///< (constant, linear, quadratic)
+  double Radius = 0.0;                                ///< used only when HasRadius
+  bool HasRadius = false;
+  glm::dvec3 DirectionWC = glm::dvec3(0.0, 0.0, -1.0); ///< spot axis (need not be unit)
+  double ConeAngle = 180.0; ///< half angle in degrees; < 90 makes a spot light (as VTK)
+  double Exponent = 1.0;
+
+  bool IsSpot() const { return this->ConeAngle < 90.0; }
+};
+
+/// A validated light ready for upload (sorted order).
+struct PreparedLight
+{
+  glm::dvec3 PositionWC;
+  double Radius;    ///< 0: below the cutoff everywhere; +inf: always on
+  glm::dvec3 Color; ///< color * intensity
+  double Exponent;
+  glm::dvec3 Attenuation;
+  double CosCone;            ///< cos(coneAngle) for spots, -2 for point lights
+  glm::dvec3 DirectionWC;    ///< unit spot axis (0 for point lights)
+  std::uint32_t SourceIndex; ///< index into the LightSource array
+};
+
+struct LightPreparationOptions
+{
+  double Cutoff = 1.0 / 1024.0;
+  bool MortonOrder = true;
+};
+
+struct PreparedLights
+{
+  std::vector<PreparedLight> Lights;
+  std::vector<std::string> Problems; ///< one message per skipped light
+  std::size_t NumberOfAlwaysOn = 0;
+  std::size_t NumberOfBelowCutoff = 0;
+  std::size_t NumberOfSpots = 0;
+};
+
+/// Attenuation exactly as VTK's shader computes it.
+inline double EvaluateAttenuation(double d, const glm::dvec3& att)
+{
+  return 1.0 / (att.x + att.y * d + att.z * d * d);
+}
+
+/**
+ * Distance where peak * att(d) falls to cutoff. +inf when the light never falls off,
+ * 0 when it never exceeds the cutoff. Inputs must be valid (see ValidateLightSource).
+ */
+inline double ComputeInfluenceRadius(double peak, const glm::dvec3& att, double cutoff)
+{
+  if (!(peak > 0.0))
+  {
+    return 0.0;
+  }
+  if (!(cutoff > 0.0))
+  {
+    return std::numeric_limits<double>::infinity();
+  }
+  const double k = peak / cutoff;
+  if (!std::isfinite(k))
+  {
+    return std::numeric_limits<double>::infinity();
+  }
+  const double excess = k - att.x;
+  if (!(excess > 0.0))
+  {
+    return 0.0;
+  }
+  if (att.y == 0.0 && att.z == 0.0)
+  {
+    return std::numeric_limits<double>::infinity();
+  }
+  return 2.0 * excess / (att.y + std::sqrt(att.y * att.y + 4.0 * att.z * excess));
+}
+
+namespace Detail
+{
+inline bool IsFinite(const glm::dvec3& v)
+{
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+inline std::string ToString(const glm::dvec3& v)
+{
+  std::ostringstream os;
+  os << "(" << v.x << ", " << v.y << ", " << v.z << ")";
+  return os.str();
+}
+} // namespace Detail
+
+/// Empty string when the light is valid, else a message naming the light (who) and the
+/// problem.
+inline std::string ValidateLightSource(const LightSource& l, const std::string& who)
+{
+  std::ostringstream os;
+  if (!Detail::IsFinite(l.PositionWC))
+  {
+    os << who << ": position " << Detail::ToString(l.PositionWC) << " is not finite";
+  }
+  else if (!Detail::IsFinite(l.Color))
+  {
+    os << who << ": color " << Detail::ToString(l.Color) << " is not finite";
+  }
+  else if (l.Color.x < 0.0 || l.Color.y < 0.0 || l.Color.z < 0.0)
+  {
+    os << who << ": color " << Detail::ToString(l.Color) << " is negative";
+  }
+  else if (!std::isfinite(l.Intensity))
+  {
+    os << who << ": intensity " << l.Intensity << " is not finite";
+  }
+  else if (l.Intensity < 0.0)
+  {
+    os << who << ": intensity " << l.Intensity << " is negative";
+  }
+  else if (!Detail::IsFinite(l.Attenuation) || l.Attenuation.x < 0.0 || l.Attenuation.y < 0.0 ||
+    l.Attenuation.z < 0.0 ||
+    (l.Attenuation.x == 0.0 && l.Attenuation.y == 0.0 && l.Attenuation.z == 0.0))
+  {
+    os << who << ": attenuation " << Detail::ToString(l.Attenuation)
+       << " is invalid (coefficients must be finite, non-negative and not all zero; "
+          "otherwise 1/(a0 + a1 d + a2 d^2) is infinite or negative)";
+  }
+  else if (l.HasRadius && !(l.Radius >= 0.0))
+  {
+    os << who << ": radius " << l.Radius << " is negative or NaN";
+  }
+  else if (l.HasRadius && std::isinf(l.Radius))
+  {
+    os << who << ": radius is infinite (unset the radius to derive it from the attenuation)";
+  }
+  else if (l.IsSpot())
+  {
+    if (!std::isfinite(l.ConeAngle) || !std::isfinite(l.Exponent) || l.Exponent < 0.0)
+    {
+      os << who << ": spot cone angle " << l.ConeAngle << " or exponent " << l.Exponent
+         << " is invalid";
+    }
+    else if (!Detail::IsFinite(l.DirectionWC) || !(glm::dot(l.DirectionWC, l.DirectionWC) > 0.0))
+    {
+      os << who << ": spot direction " << Detail::ToString(l.DirectionWC)
+         << " is zero or not finite";
+    }
+  }
+  else if (std::isnan(l.ConeAngle))
+  {
+    os << who << ": cone angle is NaN";
+  }
+  std::string msg = os.str();
+  if (!msg.empty())
+  {
+    msg += "; the light is skipped";
+  }
+  return msg;
+}
+
+/// Validates, derives radii and sorts (always-on lights first, then Morton order).
+/// nameOf(i) names source i in messages (default: "light i").
+inline PreparedLights PrepareLights(const std::vector<LightSource>& sources,
+  const LightPreparationOptions& options,
+  const std::function<std::string(std::size_t)>& nameOf = nullptr)
+{
+  PreparedLights out;
+  std::vector<PreparedLight> valid;
+  valid.reserve(sources.size());
+  for (std::size_t i = 0; i < sources.size(); ++i)
+  {
+    const LightSource& s = sources[i];
+    std::string problem =
+      ValidateLightSource(s, nameOf ? nameOf(i) : std::string("light ") + std::to_string(i));
+    if (!problem.empty())
+    {
+      out.Problems.push_back(std::move(problem));
+      continue;
+    }
+    PreparedLight p;
+    p.PositionWC = s.PositionWC;
+    p.Color = s.Color * s.Intensity;
+    const double peak = std::max(p.Color.x, std::max(p.Color.y, p.Color.z));
+    double r = ComputeInfluenceRadius(peak, s.Attenuation, options.Cutoff);
+    if (s.HasRadius)
+    {
+      r = std::min(r, s.Radius);
+    }
+    p.Radius = r;
+    p.Exponent = s.Exponent;
+    p.Attenuation = s.Attenuation;
+    if (s.IsSpot())
+    {
+      const double halfAngle = std::max(s.ConeAngle, 0.0) * (3.14159265358979323846 / 180.0);
+      p.CosCone = std::cos(halfAngle);
+      p.DirectionWC = glm::normalize(s.DirectionWC);
+      ++out.NumberOfSpots;
+    }
+    else
+    {
+      p.CosCone = -2.0;
+      p.DirectionWC = glm::dvec3(0.0);
+    }
+    p.SourceIndex = static_cast<std::uint32_t>(i);
+    out.NumberOfAlwaysOn += std::isinf(r) ? 1 : 0;
+    out.NumberOfBelowCutoff += r == 0.0 ? 1 : 0;
+    valid.push_back(p);
+  }
+
+  if (options.MortonOrder)
+  {
+    std::vector<glm::dvec3> points(valid.size());
+    std::vector<std::uint8_t> group(valid.size());
+    for (std::size_t i = 0; i < valid.size(); ++i)
+    {
+      points[i] = valid[i].PositionWC;
+      group[i] = std::isinf(valid[i].Radius) ? 0 : 1;
+    }
+    const std::vector<std::uint32_t> order = ComputeMortonOrder(points, &group);
+    out.Lights.reserve(valid.size());
+    for (std::uint32_t idx : order)
+    {
+      out.Lights.push_back(valid[idx]);
+    }
+  }
+  else
+  {
+    out.Lights = std::move(valid);
+  }
+  return out;
+}
+
+/// The windowed falloff factor (1 - (d/r)^4)^2 of vtkClusteredLightingPass::FALLOFF_WINDOWED.
+inline double EvaluateFalloffWindow(double d, double radius)
+{
+  if (!(radius > 0.0) || std::isinf(radius))
+  {
+    return std::isinf(radius) ? 1.0 : 0.0;
+  }
+  const double x2 = (d * d) / (radius * radius);
+  const double w = std::min(1.0, std::max(0.0, 1.0 - x2 * x2));
+  return w * w;
+}
+
+/**
+ * Upper bound of what the cutoff removes at a point: the sum, over the lights whose
+ * radius the point is at or beyond, of their peak contribution color * att(d) (spot
+ * factor and N.L taken as 1). Multiply by the material's Diffuse + Specular. Lights within
+ * (1 - slack) * radius count as reached. With windowed falloff, reached lights add what
+ * the window removes, color * att(d) * (1 - window).
+ */
+inline glm::dvec3 ComputeCutoffTailBound(const glm::dvec3& pointVC,
+  const std::vector<PreparedLight>& lights, const std::vector<glm::dvec3>& centersVC,
+  bool windowed = false, double slack = 1e-3)
+{
+  glm::dvec3 tail(0.0);
+  for (std::size_t i = 0; i < lights.size(); ++i)
+  {
+    const double d = glm::length(pointVC - centersVC[i]);
+    const glm::dvec3 c = lights[i].Color * EvaluateAttenuation(d, lights[i].Attenuation);
+    if (d >= lights[i].Radius * (1.0 - slack))
+    {
+      tail += c;
+    }
+    else if (windowed)
+    {
+      tail += c * (1.0 - EvaluateFalloffWindow(d, lights[i].Radius * (1.0 + slack)));
+    }
+  }
+  return tail;
+}
+
+} // namespace vtkClusteredLighting
+
+#endif

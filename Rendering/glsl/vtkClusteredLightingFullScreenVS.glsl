@@ -1,0 +1,9 @@
+//VTK::System::Dec
+// SPDX-License-Identifier: BSD-3-Clause
+// One triangle covering the whole target, without vertex attributes.
+
+void main()
+{
+  vec2 p = vec2(float((gl_VertexID << 1) & 2), float(gl_VertexID & 2));
+  gl_Position = vec4(2.0 * p - 1.0, 0.0, 1.0);
+}

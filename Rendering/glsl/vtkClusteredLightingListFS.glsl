@@ -1,0 +1,75 @@
+//VTK::System::Dec
+// SPDX-License-Identifier: BSD-3-Clause
+// List pass: set this light's bit in every texel (cluster) of its quad whose cell the
+// light's sphere can reach. Bits are OR-ed by glLogicOp(GL_OR) on the R32UI
+// target, so overlapping writes are harmless and no carry can corrupt another light.
+//
+// Per-cluster culling (clCullClusters = 1): the cell of cluster (tx, ty, s) is the part
+// of the frustum between NDC tile edges and slice depths; its view-space bounding box is
+// spanned by the 8 corners (x and y are bilinear in NDC and depth). A light whose sphere
+// misses the box, grown by a margin far above float error, cannot reach any fragment the
+// shading pass puts in that cluster.
+
+uniform ivec4 clGrid;        // tilesX, tilesY, slices, batchRows
+uniform int clCullClusters;  // 0: whole rectangle x slice range
+uniform vec3 clProjectionX;  // (P00, P02, P03) of VC->clip; culling needs P01 = P10 = 0
+uniform vec3 clProjectionY;  // (P11, P12, P13)
+uniform vec2 clProjectionW;  // (P32, P33); P30 = P31 = 0
+uniform vec4 clSlicing;      // ComputeSliceShaderParameters
+uniform vec2 clDepthRange;   // camera near and far depth
+
+flat in uint clBitVSOutput;
+flat in vec4 clSphereVSOutput;
+
+out uvec4 clListOutput;
+
+// Mirrors ComputeSliceBoundary (Rendering/Core/vtkClusteredLightingGrid.h).
+float clSliceBoundary(int k)
+{
+  if (clSlicing.w == 0.0)
+  {
+    return clDepthRange.x * exp(float(k) / clSlicing.y);
+  }
+  return clDepthRange.x + float(k) / clSlicing.y;
+}
+
+// View-space coordinate on an axis (row = (Paa, Pa2, Pa3)) for an NDC value and depth.
+float clUnproject(vec3 row, float ndc, float depth)
+{
+  float zVC = -depth;
+  float w = clProjectionW.x * zVC + clProjectionW.y;
+  return (ndc * w - row.y * zVC - row.z) / row.x;
+}
+
+void main()
+{
+  if (clCullClusters != 0 && clSphereVSOutput.w < 1e29)
+  {
+    ivec2 texel = ivec2(gl_FragCoord.xy);
+    int inBlock = texel.x % (clGrid.x * clGrid.z);
+    int slice = inBlock / clGrid.x;
+    int tx = inBlock - slice * clGrid.x;
+    int ty = texel.y % clGrid.y;
+    float z0 = slice == 0 ? clDepthRange.x : max(clSliceBoundary(slice), clDepthRange.x);
+    float z1 = slice == clGrid.z - 1 ? clDepthRange.y : min(clSliceBoundary(slice + 1), clDepthRange.y);
+    vec2 ndc0 = 2.0 * vec2(tx, ty) / vec2(clGrid.xy) - 1.0;
+    vec2 ndc1 = 2.0 * vec2(tx + 1, ty + 1) / vec2(clGrid.xy) - 1.0;
+    vec4 xs = vec4(clUnproject(clProjectionX, ndc0.x, z0), clUnproject(clProjectionX, ndc1.x, z0),
+      clUnproject(clProjectionX, ndc0.x, z1), clUnproject(clProjectionX, ndc1.x, z1));
+    vec4 ys = vec4(clUnproject(clProjectionY, ndc0.y, z0), clUnproject(clProjectionY, ndc1.y, z0),
+      clUnproject(clProjectionY, ndc0.y, z1), clUnproject(clProjectionY, ndc1.y, z1));
+    vec3 lo = vec3(min(min(xs.x, xs.y), min(xs.z, xs.w)), min(min(ys.x, ys.y), min(ys.z, ys.w)), -z1);
+    vec3 hi = vec3(max(max(xs.x, xs.y), max(xs.z, xs.w)), max(max(ys.x, ys.y), max(ys.z, ys.w)), -z0);
+    vec3 c = clSphereVSOutput.xyz;
+    float margin = 1e-4 * (z1 + length(c)) + 1e-6;
+    lo -= vec3(margin);
+    hi += vec3(margin);
+    vec3 outside = max(max(lo - c, c - hi), vec3(0.0));
+    float r = clSphereVSOutput.w;
+    if (dot(outside, outside) > r * r)
+    {
+      discard;
+    }
+  }
+  clListOutput = uvec4(clBitVSOutput, 0u, 0u, 0u);
+}

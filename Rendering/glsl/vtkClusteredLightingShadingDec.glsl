@@ -1,0 +1,165 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Clustered lighting: declarations injected at //VTK::Light::Dec of the polydata
+// fragment shader. Names mirror the GL-free core (Rendering/Core). Lines between
+// //CL_IF(FLAG) and //CL_ENDIF are kept only for the variants that need them
+// (vtkClusteredLightingShaderVariant), so each shader holds only its own code paths.
+
+#ifdef GL_ARB_gpu_shader5
+#define clFindLSB(v) findLSB(v)
+#else
+int clFindLSB(uint v)
+{
+  int n = 0;
+  if ((v & 0xFFFFu) == 0u) { n += 16; v >>= 16; }
+  if ((v & 0xFFu) == 0u) { n += 8; v >>= 8; }
+  if ((v & 0xFu) == 0u) { n += 4; v >>= 4; }
+  if ((v & 0x3u) == 0u) { n += 2; v >>= 2; }
+  if ((v & 0x1u) == 0u) { n += 1; }
+  return n;
+}
+#endif
+
+// Light records: 2 RGBA32F texels per light (upload order = Morton order).
+//  clLightData (uploaded when lights change): (color * intensity, exponent), (a0, a1, a2, cos(cone) or -2)
+//  clLightView (uploaded when the view changes): (positionVC, radius), (spot axis VC, 0)
+uniform samplerBuffer clLightData;
+uniform samplerBuffer clLightView;
+//CL_IF(CLUSTERED)
+uniform usampler2D clMaster;
+uniform usampler2D clList;
+uniform ivec4 clGrid;     // tilesX, tilesY, slices, batchRows
+uniform mat4 clProjection; // VC -> clip of the current camera (VTK's VCDC)
+uniform vec4 clSlicing;   // ComputeSliceShaderParameters
+const int clMasterTexels = @CL_MASTER_TEXELS@;
+
+// Mirrors vtkClusteredLighting::ComputeSliceIndex (Rendering/Core/vtkClusteredLightingGrid.h).
+int clComputeSliceIndex(float depthVC)
+{
+//CL_IF(LINEAR_SLICES)
+  float s = floor((depthVC - clSlicing.z) * clSlicing.y);
+//CL_ELSE
+  float s = depthVC * clSlicing.x > 1.0 ? floor(log(depthVC * clSlicing.x) * clSlicing.y) : 0.0;
+//CL_ENDIF
+  return int(clamp(s, 0.0, float(clGrid.z - 1)));
+}
+
+// Mirrors ComputeTileIndex for both axes (from the fragment's own projection, so it is
+// independent of the viewport origin, tiled displays and offscreen peeling buffers),
+// then ComputeSliceIndex.
+ivec3 clComputeCluster(vec4 positionVC)
+{
+  vec4 clip = clProjection * positionVC;
+  vec2 u = 0.5 * clip.xy / clip.w + 0.5;
+  vec2 t = clamp(floor(u * vec2(clGrid.xy)), vec2(0.0), vec2(clGrid.xy - ivec2(1)));
+  return ivec3(int(t.x), int(t.y), clComputeSliceIndex(-positionVC.z));
+}
+
+// Mirrors ClusterTextureLayout::ListTexel / MasterTexel.
+ivec2 clListTexel(ivec3 c, int b)
+{
+  int column = b / clGrid.w;
+  int row = b - column * clGrid.w;
+  return ivec2(column * clGrid.x * clGrid.z + c.z * clGrid.x + c.x, row * clGrid.y + c.y);
+}
+
+ivec2 clMasterTexel(ivec3 c, int m)
+{
+  return ivec2(c.z * clGrid.x + c.x, c.y * clMasterTexels + m);
+}
+//CL_ENDIF
+//CL_IF(BRUTE_FORCE)
+uniform int clLightCount;
+//CL_ENDIF
+//CL_IF(HEAT_MAP)
+uniform float clHeatMapMaximum;
+vec3 clHeatColor(float t)
+{
+  t = clamp(t, 0.0, 1.0);
+  return clamp(vec3(1.5 - abs(4.0 * t - 3.0), 1.5 - abs(4.0 * t - 2.0), 1.5 - abs(4.0 * t - 1.0)),
+    0.0, 1.0) * (t > 0.0 ? 1.0 : 0.0);
+}
+//CL_ENDIF
+
+// Distance test and VTK's attenuation/spot formula; returns false if the light does not
+// reach P. L is the unit direction from the light to P (VTK's vertLightDirectionVC).
+bool clLightAttenuation(int i, vec3 P, out vec3 L, out float att, out vec3 color)
+{
+  vec4 view0 = texelFetch(clLightView, 2 * i);
+  vec3 toP = P - view0.xyz;
+  float d = length(toP);
+//CL_IF(CUTOFF)
+  if (!(d < view0.w))
+  {
+    return false;
+  }
+//CL_ENDIF
+  L = d > 0.0 ? toP / d : vec3(0.0, 0.0, -1.0);
+  vec4 data0 = texelFetch(clLightData, 2 * i);
+  vec4 data1 = texelFetch(clLightData, 2 * i + 1);
+  att = 1.0 / max(data1.x + data1.y * d + data1.z * d * d, 1e-30);
+//CL_IF(SPOT)
+  if (data1.w > -1.5)
+  {
+    float coneDot = dot(L, texelFetch(clLightView, 2 * i + 1).xyz);
+    if (coneDot < data1.w)
+    {
+      return false;
+    }
+    att *= pow(coneDot, data0.w);
+  }
+//CL_ENDIF
+//CL_IF(WINDOW)
+  float x2 = d * d / (view0.w * view0.w);
+  float window = clamp(1.0 - x2 * x2, 0.0, 1.0);
+  att *= window * window;
+//CL_ENDIF
+  color = data0.rgb;
+  return true;
+}
+
+//CL_IF(PHONG)
+// VTK's positional-light Phong terms (vtkOpenGLPolyDataMapper, lighting complexity 3).
+bool clShadeLight(int i, vec3 P, vec3 N, vec3 V, float power, inout vec3 diffuse,
+  inout vec3 specular)
+{
+  vec3 L;
+  float att;
+  vec3 color;
+  if (!clLightAttenuation(i, P, L, att, color))
+  {
+    return false;
+  }
+  float df = max(0.0, att * dot(N, -L));
+  diffuse += df * color;
+//CL_IF(SPECULAR)
+  float rv = max(0.0, dot(reflect(L, N), V));
+  float sf = sign(df) * att * (rv > 0.0 ? pow(rv, power) : 0.0);
+  specular += sf * color;
+//CL_ENDIF
+  return true;
+}
+//CL_ENDIF
+//CL_IF(PBR)
+// VTK's positional-light PBR terms (isotropic, vtkPBRFunctions.glsl).
+bool clShadeLight(int i, vec3 P, vec3 N, vec3 V, float NdV, vec3 albedo, float roughness,
+  float metallic, vec3 F0, vec3 F90, inout vec3 Lo)
+{
+  vec3 Lin;
+  float att;
+  vec3 color;
+  if (!clLightAttenuation(i, P, Lin, att, color))
+  {
+    return false;
+  }
+  vec3 L = -Lin;
+  vec3 H = normalize(V + L);
+  float NdL = clamp(dot(N, L), 1e-5, 1.0);
+  float NdH = clamp(dot(N, H), 1e-5, 1.0);
+  float HdL = clamp(dot(H, L), 1e-5, 1.0);
+  vec3 F;
+  vec3 spec = SpecularIsotropic(NdH, NdV, NdL, HdL, roughness, F0, F90, F);
+  vec3 diff = (1.0 - metallic) * (1.0 - F) * DiffuseLambert(albedo);
+  Lo += color * att * (diff + spec) * NdL;
+  return true;
+}
+//CL_ENDIF

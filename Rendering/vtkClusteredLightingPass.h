@@ -1,0 +1,379 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @class   vtkClusteredLightingPass
+ * @brief   render pass that shades thousands of point and spot lights by clustering
+ *
+ * Drop-in use: `vtkNew<vtkClusteredLightingPass> pass; renderer->SetPass(pass);`
+ *
+ * The pass wraps a delegate (by default a vtkRenderStepsPass whose translucent step
+ * behaves like stock VTK: order-independent transparency, or depth peeling when the
+ * renderer asks for it), so opaque, translucent and overlay props render as before.
+ *
+ * Clustered lights come from
+ *  1. every switched-on positional vtkLight of the renderer (point lights and spot lights
+ *     with a cone angle < 90), when ClusterRendererLights is on (default). While the
+ *     delegate renders, these lights are hidden from the renderer so that VTK does not
+ *     generate its per-light shader code for them (stock VTK 9.1 needs minutes to compile
+ *     hundreds of lights and fails to link at about 1,090); directional lights and the
+ *     headlight stay with VTK's own lighting code;
+ *  2. vtkClusteredLightSet objects added with AddLightSet(), for tens of thousands of
+ *     lights without one vtkObject per light.
+ *
+ * Algorithm (compute-less clustered lighting, after wizgrav/cl2): the view frustum is cut
+ * into TilesX x TilesY screen tiles and Slices depth slices (exponential or linear
+ * between the camera clipping planes). Each frame in which lights, camera or viewport
+ * changed:
+ *  - CPU (double precision, GL-free core in Rendering/Core): every light gets an influence
+ *    radius (where its contribution falls to Cutoff), exact conservative screen bounds of
+ *    its sphere under the actual projection (off-axis and parallel included, no NaN when
+ *    the camera is inside or the light straddles the near plane), snapped outward to a
+ *    tile and slice range;
+ *  - list pass: one instanced draw of one quad per visible light into an R32UI "list"
+ *    texture holding, per cluster, a 32-light bitmask per batch of 32 lights; bits are
+ *    OR-ed with glLogicOp(GL_OR);
+ *  - master pass: one full-screen draw folds the list into an R32UI "master" texture with
+ *    one bit per non-empty batch.
+ * The polydata fragment shaders then find their cluster, walk the master bits, then the
+ * list bits, and shade only those lights, with VTK's own positional-light formulas
+ * (attenuation 1/(a0 + a1 d + a2 d^2), spot cone and exponent, diffuse and specular of
+ * the actor's vtkProperty, or VTK's PBR terms for PBR actors). Lights are sorted in
+ * Morton order so that nearby lights share batches.
+ *
+ * Accuracy: the only approximation is the cutoff: a light is ignored where its
+ * contribution is below Cutoff (default 1/1024, a quarter of an 8-bit step). Lights that
+ * never fall off (VTK's default attenuation (1, 0, 0)) are always-on lights, assigned to
+ * every cluster, never dropped. ShadingMode BRUTE_FORCE evaluates every light for every
+ * fragment with no cutoff: the reference for images and speed comparisons.
+ *
+ * Limits: the list texture is (X*Z*C) x (Y*R) texels for C columns of R batches; with
+ * GL_MAX_TEXTURE_SIZE 16384 the default 32x16x32 grid holds 524,288 lights. Past a
+ * limit the pass reports an error naming the limit and renders without the clustered
+ * lights; it never truncates silently. Invalid lights (NaN/Inf, negative values, bad
+ * attenuation) are skipped with a warning naming them.
+ *
+ * Memory at the default grid (X*Y*Z = 16384 clusters): list = 16384 * ceil(N/32) * 4
+ * bytes (8 MiB at 4,096 lights, 128 MiB at 65,536), master = 16384 * ceil(N/1024) * 4
+ * bytes, light records 64 bytes per light (+32 per visible light for the list pass).
+ *
+ * @sa vtkClusteredLightSet vtkRenderStepsPass vtkLight
+ */
+#ifndef vtkClusteredLightingPass_h
+#define vtkClusteredLightingPass_h
+
+#include "vtkOpenGLRenderPass.h"
+#include "vtkRenderingClusteredModule.h" // For export macro
+
+#include <cstdint> // for std::uint32_t
+#include <memory>  // for std::unique_ptr
+#include <vector>  // for std::vector
+
+class vtkClusteredLightSet;
+class vtkRenderer;
+class vtkRenderWindow;
+struct vtkClusteredLightingFrameState;
+
+class VTKRENDERINGCLUSTERED_EXPORT vtkClusteredLightingPass : public vtkOpenGLRenderPass
+{
+public:
+  static vtkClusteredLightingPass* New();
+  vtkTypeMacro(vtkClusteredLightingPass, vtkOpenGLRenderPass)
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /**
+   * Render the delegate with clustered lighting.
+   */
+  void Render(const vtkRenderState* s) override;
+
+  /**
+   * Release every GL object the pass made for the given window (all windows if null),
+   * and the delegate's.
+   */
+  void ReleaseGraphicsResources(vtkWindow* w) override;
+
+  ///@{
+  /**
+   * The pass that renders the scene. Default is a vtkRenderStepsPass whose translucent
+   * step matches stock VTK (OIT, or depth peeling when the renderer uses it).
+   */
+  vtkGetObjectMacro(DelegatePass, vtkRenderPass);
+  virtual void SetDelegatePass(vtkRenderPass* delegatePass);
+  ///@}
+
+  ///@{
+  /**
+   * Bulk light sets shaded by the pass, in addition to the renderer's positional lights.
+   */
+  void AddLightSet(vtkClusteredLightSet* lights);
+  void RemoveLightSet(vtkClusteredLightSet* lights);
+  void RemoveAllLightSets();
+  int GetNumberOfLightSets() const;
+  vtkClusteredLightSet* GetLightSet(int i) const;
+  ///@}
+
+  ///@{
+  /**
+   * Take the renderer's switched-on positional vtkLights over as clustered lights.
+   * Default is on.
+   */
+  vtkSetMacro(ClusterRendererLights, bool);
+  vtkGetMacro(ClusterRendererLights, bool);
+  vtkBooleanMacro(ClusterRendererLights, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Screen tiles across (X) and down (Y), and depth slices (Z), in [1, 256].
+   * Defaults are 32, 16 and 32.
+   */
+  vtkSetClampMacro(TilesX, int, 1, 256);
+  vtkGetMacro(TilesX, int);
+  vtkSetClampMacro(TilesY, int, 1, 256);
+  vtkGetMacro(TilesY, int);
+  vtkSetClampMacro(Slices, int, 1, 256);
+  vtkGetMacro(Slices, int);
+  ///@}
+
+  enum SlicingSchemes
+  {
+    SLICING_AUTO = 0,        ///< exponential for perspective, linear for parallel cameras
+    SLICING_EXPONENTIAL = 1, ///< slice k starts at near * (far/near)^(k/Z)
+    SLICING_LINEAR = 2       ///< equal slices between near and far
+  };
+  ///@{
+  /**
+   * How depth between the camera clipping planes is cut into slices.
+   * Default is SLICING_AUTO.
+   */
+  vtkSetClampMacro(SlicingScheme, int, SLICING_AUTO, SLICING_LINEAR);
+  vtkGetMacro(SlicingScheme, int);
+  ///@}
+
+  ///@{
+  /**
+   * Contribution (per light, per channel, for a white material) below which a light is
+   * ignored; it sets each light's influence radius. Range [1e-9, 1].
+   * Default is 1/1024 (a quarter of an 8-bit step).
+   */
+  vtkSetClampMacro(Cutoff, double, 1e-9, 1.0);
+  vtkGetMacro(Cutoff, double);
+  ///@}
+
+  enum Falloffs
+  {
+    FALLOFF_HARD_CUT = 0, ///< VTK's attenuation, zero beyond the radius
+    FALLOFF_WINDOWED = 1  ///< VTK's attenuation times (1 - (d/r)^4)^2 (smooth, darker)
+  };
+  ///@{
+  /**
+   * Falloff at the influence radius. Default is FALLOFF_HARD_CUT, which matches VTK
+   * within the cutoff.
+   */
+  vtkSetClampMacro(Falloff, int, FALLOFF_HARD_CUT, FALLOFF_WINDOWED);
+  vtkGetMacro(Falloff, int);
+  ///@}
+
+  enum ShadingModes
+  {
+    SHADING_CLUSTERED = 0,  ///< walk the fragment's cluster lists
+    SHADING_BRUTE_FORCE = 1 ///< every light for every fragment, no cutoff (reference)
+  };
+  ///@{
+  /**
+   * Clustered shading, or brute force for reference images and speed comparisons.
+   * Default is SHADING_CLUSTERED.
+   */
+  vtkSetClampMacro(ShadingMode, int, SHADING_CLUSTERED, SHADING_BRUTE_FORCE);
+  vtkGetMacro(ShadingMode, int);
+  ///@}
+
+  enum DebugViews
+  {
+    DEBUG_NONE = 0,
+    DEBUG_CLUSTER_INDEX = 1,   ///< (tile x, tile y, slice) / (X-1, Y-1, Z-1) as RGB
+    DEBUG_HEAT_MAP = 2,        ///< lights evaluated per pixel, colour map up to HeatMapMaximum
+    DEBUG_EVALUATED_COUNT = 3, ///< lights evaluated (R + 256 G), lights reaching (B, saturates)
+    DEBUG_REACHED_COUNT = 4,   ///< lights that reach the fragment (R + 256 G)
+    DEBUG_NON_FINITE = 5       ///< red where the lit colour is NaN or Inf
+  };
+  ///@{
+  /**
+   * Debug view replacing the shaded colour of lit surfaces (compiled in only when set).
+   * Default is DEBUG_NONE.
+   */
+  vtkSetClampMacro(DebugView, int, DEBUG_NONE, DEBUG_NON_FINITE);
+  vtkGetMacro(DebugView, int);
+  ///@}
+
+  ///@{
+  /**
+   * Lights per pixel shown as the hottest colour of DEBUG_HEAT_MAP. Default is 64.
+   */
+  vtkSetClampMacro(HeatMapMaximum, double, 1.0, 1e6);
+  vtkGetMacro(HeatMapMaximum, double);
+  ///@}
+
+  ///@{
+  /**
+   * Sort lights in Morton order before upload so that nearby lights share batches.
+   * Default is on.
+   */
+  vtkSetMacro(MortonOrder, bool);
+  vtkGetMacro(MortonOrder, bool);
+  vtkBooleanMacro(MortonOrder, bool);
+  ///@}
+
+  enum BoundsMethods
+  {
+    BOUNDS_TANGENT = 0,          ///< exact tangent bounds, conservative
+    BOUNDS_CENTER_DEPTH_QUAD = 1 ///< NOT conservative; only to measure what it gets wrong
+  };
+  ///@{
+  /**
+   * How light spheres are bounded on screen. Default is BOUNDS_TANGENT.
+   */
+  vtkSetClampMacro(BoundsMethod, int, BOUNDS_TANGENT, BOUNDS_CENTER_DEPTH_QUAD);
+  vtkGetMacro(BoundsMethod, int);
+  ///@}
+
+  ///@{
+  /**
+   * In the list pass, test each light's sphere against the view-space bounding box of
+   * every cluster of its screen rectangle and slice range (with a margin far above float
+   * error), instead of assigning the whole range. Removes the corners of the range, so
+   * fewer lights are evaluated per fragment; stays conservative. Default is on.
+   */
+  vtkSetMacro(PerClusterCulling, bool);
+  vtkGetMacro(PerClusterCulling, bool);
+  vtkBooleanMacro(PerClusterCulling, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Finish the GL work around the assignment and shading stages and record their times
+   * (GetLastAssignmentTime, GetLastShadingTime). Costs a pipeline stall; for
+   * benchmarks. Default is off.
+   */
+  vtkSetMacro(MeasureTimings, bool);
+  vtkGetMacro(MeasureTimings, bool);
+  vtkBooleanMacro(MeasureTimings, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Statistics of the last render.
+   */
+  vtkGetMacro(NumberOfClusteredLights, int);   ///< valid lights shaded by the pass
+  vtkGetMacro(NumberOfRejectedLights, int);    ///< invalid lights skipped with a warning
+  vtkGetMacro(NumberOfAlwaysOnLights, int);    ///< lights that never fall off
+  vtkGetMacro(NumberOfLightsBelowCutoff, int); ///< below the cutoff everywhere
+  vtkGetMacro(NumberOfSpotLights, int);
+  vtkGetMacro(NumberOfAssignedLights, int); ///< lights drawn in the list pass (visible)
+  vtkGetMacro(LastAssignmentTime, double);  ///< ms, list + master passes (MeasureTimings)
+  vtkGetMacro(LastShadingTime, double);     ///< ms, delegate render (MeasureTimings)
+  vtkGetMacro(LastAssignmentUpdated, bool); ///< whether the last render reassigned lights
+  ///@}
+
+  ///@{
+  /**
+   * Counters since construction: light-data uploads, list/master runs, shader rebuilds
+   * of mappers that use the pass.
+   */
+  vtkGetMacro(NumberOfLightUploads, int);
+  vtkGetMacro(NumberOfAssignmentUpdates, int);
+  vtkGetMacro(NumberOfShaderBuilds, int);
+  ///@}
+
+  ///@{
+  /**
+   * GPU memory held for the last rendered renderer, in bytes.
+   */
+  vtkGetMacro(ListTextureBytes, vtkTypeUInt64);
+  vtkGetMacro(MasterTextureBytes, vtkTypeUInt64);
+  vtkGetMacro(LightBufferBytes, vtkTypeUInt64);
+  ///@}
+
+  /**
+   * Number of GL objects the pass holds across all renderers (textures, buffers, FBO,
+   * VAO). Zero after ReleaseGraphicsResources.
+   */
+  int GetNumberOfGLObjects() const;
+
+  /**
+   * Largest number of lights a grid can hold with a given maximum texture size.
+   */
+  static vtkTypeInt64 GetMaximumNumberOfLights(
+    int tilesX, int tilesY, int slices, int maxTextureSize);
+
+  ///@{
+  /**
+   * vtkOpenGLRenderPass hooks: inject the clustered shading code, set its uniforms.
+   */
+  bool PreReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
+    std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
+  bool PostReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
+    std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
+  bool SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop,
+    vtkOpenGLVertexArrayObject* VAO = nullptr) override;
+  vtkMTimeType GetShaderStageMTime() override;
+  ///@}
+
+#ifndef __VTK_WRAP__
+  /**
+   * For tests: read the list and master textures of a renderer back (row-major).
+   */
+  bool ReadBackAssignment(
+    vtkRenderer* renderer, std::vector<std::uint32_t>& list, std::vector<std::uint32_t>& master);
+
+  /**
+   * For tests: what the last assignment for a renderer used (grid, matrices, layout,
+   * lights in view coordinates). See vtkClusteredLightingFrameState.h. Null if none.
+   */
+  const vtkClusteredLightingFrameState* GetFrameState(vtkRenderer* renderer) const;
+#endif
+
+protected:
+  vtkClusteredLightingPass();
+  ~vtkClusteredLightingPass() override;
+
+  vtkRenderPass* DelegatePass = nullptr;
+
+  bool ClusterRendererLights = true;
+  int TilesX = 32;
+  int TilesY = 16;
+  int Slices = 32;
+  int SlicingScheme = SLICING_AUTO;
+  double Cutoff = 1.0 / 1024.0;
+  int Falloff = FALLOFF_HARD_CUT;
+  int ShadingMode = SHADING_CLUSTERED;
+  int DebugView = DEBUG_NONE;
+  double HeatMapMaximum = 64.0;
+  bool MortonOrder = true;
+  int BoundsMethod = BOUNDS_TANGENT;
+  bool PerClusterCulling = true;
+  bool MeasureTimings = false;
+
+  int NumberOfClusteredLights = 0;
+  int NumberOfRejectedLights = 0;
+  int NumberOfAlwaysOnLights = 0;
+  int NumberOfLightsBelowCutoff = 0;
+  int NumberOfSpotLights = 0;
+  int NumberOfAssignedLights = 0;
+  double LastAssignmentTime = 0.0;
+  double LastShadingTime = 0.0;
+  bool LastAssignmentUpdated = false;
+  int NumberOfLightUploads = 0;
+  int NumberOfAssignmentUpdates = 0;
+  int NumberOfShaderBuilds = 0;
+  vtkTypeUInt64 ListTextureBytes = 0;
+  vtkTypeUInt64 MasterTextureBytes = 0;
+  vtkTypeUInt64 LightBufferBytes = 0;
+
+private:
+  vtkClusteredLightingPass(const vtkClusteredLightingPass&) = delete;
+  void operator=(const vtkClusteredLightingPass&) = delete;
+
+  struct vtkInternals;
+  std::unique_ptr<vtkInternals> Internals;
+};
+
+#endif

@@ -1,0 +1,241 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Helpers shared by the GL tests: scenes, image capture and comparison, and the
+// comparison of read-back list/master textures with the double-precision reference.
+#ifndef ClusteredLightingTestUtilities_h
+#define ClusteredLightingTestUtilities_h
+
+#include "vtkClusteredLightingFrameState.h"
+#include "vtkClusteredLightingPass.h"
+#include "vtkClusteredLightingReference.h"
+
+#include "vtkImageData.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkSmartPointer.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkWindowToImageFilter.h"
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+namespace ClusteredLightingTest
+{
+
+/// RGB pixels of the window's back buffer as floats in [0, 1] (render first).
+inline std::vector<float> CapturePixels(vtkRenderWindow* rw)
+{
+  vtkNew<vtkWindowToImageFilter> w2i;
+  w2i->SetInput(rw);
+  w2i->SetInputBufferTypeToRGB();
+  w2i->ReadFrontBufferOff();
+  w2i->ShouldRerenderOff();
+  w2i->Update();
+  vtkUnsignedCharArray* a =
+    vtkUnsignedCharArray::SafeDownCast(w2i->GetOutput()->GetPointData()->GetScalars());
+  std::vector<float> out(static_cast<std::size_t>(a->GetNumberOfValues()));
+  for (vtkIdType i = 0; i < a->GetNumberOfValues(); ++i)
+  {
+    out[static_cast<std::size_t>(i)] = a->GetValue(i) / 255.0f;
+  }
+  return out;
+}
+
+struct ImageComparison
+{
+  double MaxAbsError = 0.0;
+  double RMSE = 0.0;
+  double FractionOverOneStep = 0.0; ///< share of pixels off by more than 1/255 in a channel
+  std::size_t Pixels = 0;
+};
+
+inline ImageComparison CompareImages(const std::vector<float>& a, const std::vector<float>& b)
+{
+  ImageComparison c;
+  if (a.size() != b.size() || a.empty())
+  {
+    c.MaxAbsError = 1e30;
+    return c;
+  }
+  double sum = 0.0;
+  std::size_t over = 0;
+  c.Pixels = a.size() / 3;
+  for (std::size_t p = 0; p < c.Pixels; ++p)
+  {
+    double worst = 0.0;
+    for (int k = 0; k < 3; ++k)
+    {
+      const double d = std::abs(double(a[3 * p + k]) - double(b[3 * p + k]));
+      worst = std::max(worst, d);
+      sum += d * d;
+    }
+    c.MaxAbsError = std::max(c.MaxAbsError, worst);
+    over += worst > 1.5 / 255.0 ? 1 : 0;
+  }
+  c.RMSE = std::sqrt(sum / (3.0 * c.Pixels));
+  c.FractionOverOneStep = double(over) / c.Pixels;
+  return c;
+}
+
+inline void PrintComparison(const char* what, const ImageComparison& c)
+{
+  std::printf("%s: max abs error %.5f (%.2f steps), RMSE %.6f, pixels over one step %.4f%%\n", what,
+    c.MaxAbsError, c.MaxAbsError * 255.0, c.RMSE, 100.0 * c.FractionOverOneStep);
+}
+
+/// Compares the GPU assignment of the last render with the double-precision reference.
+inline vtkClusteredLighting::AssignmentComparison CheckAssignment(
+  vtkClusteredLightingPass* pass, vtkRenderer* ren, const char* what)
+{
+  vtkClusteredLighting::AssignmentComparison cmp;
+  const vtkClusteredLightingFrameState* frame = pass->GetFrameState(ren);
+  std::vector<std::uint32_t> list, master;
+  if (!frame || !frame->Valid || !pass->ReadBackAssignment(ren, list, master))
+  {
+    std::printf("%s: no assignment to check\n", what);
+    cmp.FalseNegatives = ~0ull;
+    return cmp;
+  }
+  const auto ref = vtkClusteredLighting::ComputeReferenceAssignment(
+    frame->LightsVC, frame->Grid, frame->VCDC, frame->Grid.NearVC, frame->Grid.FarVC);
+  cmp = vtkClusteredLighting::CompareWithReference(ref, list, master, frame->Layout, frame->Grid);
+  std::printf("%s: %llu reference pairs, %llu GPU pairs, false negatives %llu, "
+              "false-positive rate %.3f, master mismatches %llu%s%s\n",
+    what, static_cast<unsigned long long>(cmp.ReferencePairs),
+    static_cast<unsigned long long>(cmp.GPUPairs),
+    static_cast<unsigned long long>(cmp.FalseNegatives), cmp.GetFalsePositiveRate(),
+    static_cast<unsigned long long>(cmp.MasterMismatches),
+    cmp.FirstFalseNegative.empty() ? "" : ", first: ", cmp.FirstFalseNegative.c_str());
+  return cmp;
+}
+
+/// Window depth ([0,1], 1 = background) of a renderer's viewport, row-major from bottom.
+inline std::vector<float> CaptureDepth(vtkRenderWindow* rw, vtkRenderer* ren, int& w, int& h)
+{
+  int x0, y0;
+  ren->GetTiledSizeAndOrigin(&w, &h, &x0, &y0);
+  std::vector<float> z(static_cast<std::size_t>(w) * h);
+  rw->GetZbufferData(x0, y0, x0 + w - 1, y0 + h - 1, z.data());
+  return z;
+}
+
+/// View-space point of pixel (x, y) of a viewport at window depth z.
+inline glm::dvec3 UnprojectPixel(
+  int x, int y, double z, int w, int h, const glm::dmat4& inverseVCDC)
+{
+  const glm::dvec4 ndc(2.0 * (x + 0.5) / w - 1.0, 2.0 * (y + 0.5) / h - 1.0, 2.0 * z - 1.0, 1.0);
+  const glm::dvec4 p = inverseVCDC * ndc;
+  return glm::dvec3(p) / p.w;
+}
+
+struct BruteForceCheck
+{
+  std::size_t Pixels = 0;
+  std::size_t Violations = 0; ///< pixels whose error exceeds their derived tolerance
+  double MaxError = 0.0;      ///< largest |clustered - brute force| (any channel)
+  double MaxTolerance = 0.0;  ///< largest derived tolerance
+  double MeanTail = 0.0;      ///< mean cutoff tail bound over geometry pixels
+  ImageComparison Image;
+};
+
+/**
+ * Renders the current scene with clustered shading and with brute force, and checks every
+ * pixel: |clustered - brute| <= material * (sum of cut tails at the pixel) + rounding.
+ * The tail is computed in double precision from the depth buffer (opaque surface). With
+ * raySamples > 0 the tail is instead maximized over that many points along the pixel ray
+ * up to the opaque surface (for translucent surfaces in front of it). The pass is left
+ * in clustered mode.
+ */
+inline BruteForceCheck CheckAgainstBruteForce(vtkClusteredLightingPass* pass, vtkRenderWindow* rw,
+  vtkRenderer* ren, double materialFactor, const char* what, int raySamples = 0)
+{
+  BruteForceCheck out;
+  pass->SetShadingMode(vtkClusteredLightingPass::SHADING_CLUSTERED);
+  rw->Render();
+  const std::vector<float> clustered = CapturePixels(rw);
+  int w = 0, h = 0;
+  const std::vector<float> depth = CaptureDepth(rw, ren, w, h);
+  const vtkClusteredLightingFrameState frame = *pass->GetFrameState(ren);
+  pass->SetShadingMode(vtkClusteredLightingPass::SHADING_BRUTE_FORCE);
+  rw->Render();
+  const std::vector<float> brute = CapturePixels(rw);
+  pass->SetShadingMode(vtkClusteredLightingPass::SHADING_CLUSTERED);
+  out.Image = CompareImages(clustered, brute);
+
+  int x0, y0, ww, wh;
+  ren->GetTiledSizeAndOrigin(&ww, &wh, &x0, &y0);
+  const int windowWidth = rw->GetSize()[0];
+  std::vector<glm::dvec3> centers(frame.Lights.size());
+  for (std::size_t i = 0; i < centers.size(); ++i)
+  {
+    centers[i] = frame.LightsVC[i].CenterVC;
+  }
+  const bool windowed = pass->GetFalloff() == vtkClusteredLightingPass::FALLOFF_WINDOWED;
+  const glm::dmat4 inverse = glm::inverse(frame.VCDC);
+  const double rounding = 1.5 / 255.0;
+  double tailSum = 0.0;
+  std::size_t geometry = 0;
+  for (int y = 0; y < h; ++y)
+  {
+    for (int x = 0; x < w; ++x)
+    {
+      const float z = depth[static_cast<std::size_t>(y) * w + x];
+      double tail = 0.0;
+      if (z < 1.0f || raySamples > 0)
+      {
+        const int n = raySamples > 0 ? raySamples : 1;
+        for (int k = 0; k < n; ++k)
+        {
+          const double zk = raySamples > 0 ? z * (k + 1.0) / n : z;
+          const glm::dvec3 p = UnprojectPixel(x, y, zk, w, h, inverse);
+          const glm::dvec3 t =
+            vtkClusteredLighting::ComputeCutoffTailBound(p, frame.Lights, centers, windowed);
+          tail = std::max(tail, std::max(t.x, std::max(t.y, t.z)) * materialFactor);
+        }
+        tailSum += tail;
+        ++geometry;
+      }
+      const double tolerance = tail * 1.001 + rounding;
+      const std::size_t pi = 3 * (static_cast<std::size_t>(y + y0) * windowWidth + (x + x0));
+      double err = 0.0;
+      for (int c = 0; c < 3; ++c)
+      {
+        err = std::max(err, std::abs(double(clustered[pi + c]) - double(brute[pi + c])));
+      }
+      out.MaxError = std::max(out.MaxError, err);
+      out.MaxTolerance = std::max(out.MaxTolerance, tolerance);
+      out.Violations += err > tolerance ? 1 : 0;
+      ++out.Pixels;
+    }
+  }
+  out.MeanTail = geometry ? tailSum / geometry : 0.0;
+  std::printf("%s: clustered vs brute force: max error %.2f steps, RMSE %.5f, %.2f%% pixels over "
+              "one step; derived tolerance up to %.2f steps (mean cutoff tail %.3f steps); "
+              "%zu of %zu pixels over their tolerance\n",
+    what, out.MaxError * 255.0, out.Image.RMSE, 100.0 * out.Image.FractionOverOneStep,
+    out.MaxTolerance * 255.0, out.MeanTail * 255.0, out.Violations, out.Pixels);
+  return out;
+}
+
+/// Number of pixels whose lit colour is NaN or Inf (DEBUG_NON_FINITE view).
+inline std::size_t CountNonFinitePixels(vtkClusteredLightingPass* pass, vtkRenderWindow* rw)
+{
+  const int previous = pass->GetDebugView();
+  pass->SetDebugView(vtkClusteredLightingPass::DEBUG_NON_FINITE);
+  rw->Render();
+  const std::vector<float> px = CapturePixels(rw);
+  pass->SetDebugView(previous);
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < px.size(); i += 3)
+  {
+    n += (px[i] > 0.99f && px[i + 1] < 0.01f && px[i + 2] < 0.01f) ? 1 : 0;
+  }
+  return n;
+}
+
+} // namespace ClusteredLightingTest
+
+#endif

@@ -1,0 +1,163 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Influence radius, validation and light preparation.
+#include "vtkClusteredLightingLights.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+using namespace vtkClusteredLighting;
+
+TEST(LightRadius, ContributionAtRadiusEqualsCutoff)
+{
+  const double cutoff = 1.0 / 1024.0;
+  for (const glm::dvec3& att : { glm::dvec3(1, 0, 1), glm::dvec3(0.5, 0.2, 0.05),
+         glm::dvec3(0, 1, 0), glm::dvec3(1, 0, 1e-6), glm::dvec3(0, 0, 3) })
+  {
+    for (double peak : { 0.01, 1.0, 5.0, 1000.0 })
+    {
+      const double r = ComputeInfluenceRadius(peak, att, cutoff);
+      ASSERT_TRUE(std::isfinite(r));
+      if (r > 0.0)
+      {
+        EXPECT_NEAR(peak * EvaluateAttenuation(r, att), cutoff, 1e-9 * cutoff)
+          << "att " << att.x << "," << att.y << "," << att.z << " peak " << peak;
+        // Just inside the radius the light is above the cutoff, just outside below.
+        EXPECT_GT(peak * EvaluateAttenuation(r * (1 - 1e-6), att), cutoff);
+        EXPECT_LT(peak * EvaluateAttenuation(r * (1 + 1e-6), att), cutoff);
+      }
+    }
+  }
+}
+
+TEST(LightRadius, VTKDefaultAttenuationIsAlwaysOn)
+{
+  EXPECT_TRUE(std::isinf(ComputeInfluenceRadius(1.0, glm::dvec3(1, 0, 0), 1.0 / 1024.0)));
+}
+
+TEST(LightRadius, LightBelowCutoffEverywhereHasZeroRadius)
+{
+  EXPECT_EQ(ComputeInfluenceRadius(1e-4, glm::dvec3(1, 0, 1), 1.0 / 1024.0), 0.0);
+  EXPECT_EQ(ComputeInfluenceRadius(0.0, glm::dvec3(1, 0, 1), 1.0 / 1024.0), 0.0);
+  EXPECT_EQ(ComputeInfluenceRadius(2.0, glm::dvec3(4096, 0, 0), 1.0 / 1024.0), 0.0);
+}
+
+TEST(LightRadius, StableForTinyQuadraticTerm)
+{
+  // a2 -> 0 must converge to the linear solution (K - a0) / a1 without cancellation.
+  const double cutoff = 1e-3;
+  const double linear = ComputeInfluenceRadius(1.0, glm::dvec3(1, 0.5, 0), cutoff);
+  EXPECT_NEAR(linear, (1000.0 - 1.0) / 0.5, 1e-9);
+  const double tiny = ComputeInfluenceRadius(1.0, glm::dvec3(1, 0.5, 1e-18), cutoff);
+  EXPECT_NEAR(tiny, linear, 1e-6 * linear);
+}
+
+TEST(LightRadius, MonotonicInCutoff)
+{
+  double last = std::numeric_limits<double>::infinity();
+  for (double cutoff = 1.0 / 4096.0; cutoff <= 1.0 / 16.0; cutoff *= 2.0)
+  {
+    const double r = ComputeInfluenceRadius(1.0, glm::dvec3(1, 0.1, 0.5), cutoff);
+    EXPECT_LT(r, last);
+    last = r;
+  }
+}
+
+TEST(LightValidation, BadInputIsNamedAndSkipped)
+{
+  const double nan = std::nan(""), inf = std::numeric_limits<double>::infinity();
+  std::vector<LightSource> lights(12);
+  for (std::size_t i = 0; i < lights.size(); ++i)
+  {
+    lights[i].PositionWC = glm::dvec3(double(i), 0, 0);
+    lights[i].Attenuation = glm::dvec3(1, 0, 1);
+  }
+  lights[1].PositionWC.y = nan;
+  lights[2].Color = glm::dvec3(inf, 0, 0);
+  lights[3].Intensity = nan;
+  lights[4].Intensity = -1.0;
+  lights[5].HasRadius = true;
+  lights[5].Radius = -2.0;
+  lights[6].Attenuation = glm::dvec3(0, 0, 0);  // 1/0: infinite everywhere
+  lights[7].Attenuation = glm::dvec3(1, -1, 0); // reaches 1/0 at d = 1
+  lights[8].ConeAngle = 30.0;
+  lights[8].DirectionWC = glm::dvec3(0.0); // spot without direction
+  lights[9].Color = glm::dvec3(-1, 1, 1);
+  lights[10].HasRadius = true;
+  lights[10].Radius = inf;
+  const PreparedLights p = PrepareLights(lights, LightPreparationOptions());
+  ASSERT_EQ(p.Problems.size(), 10u);
+  EXPECT_EQ(p.Lights.size(), 2u);
+  for (const std::string& msg : p.Problems)
+  {
+    EXPECT_NE(msg.find("light "), std::string::npos) << msg;
+    EXPECT_NE(msg.find("skipped"), std::string::npos) << msg;
+  }
+  EXPECT_NE(p.Problems[0].find("light 1:"), std::string::npos);
+  EXPECT_NE(p.Problems[5].find("attenuation"), std::string::npos);
+  // The two valid lights are intact.
+  for (const PreparedLight& l : p.Lights)
+  {
+    EXPECT_TRUE(l.SourceIndex == 0 || l.SourceIndex == 11);
+    EXPECT_GT(l.Radius, 0.0);
+    EXPECT_TRUE(std::isfinite(l.Radius));
+  }
+}
+
+TEST(LightPreparation, AlwaysOnLightsComeFirstAndEveryValidLightIsKept)
+{
+  std::vector<LightSource> lights(100);
+  for (std::size_t i = 0; i < lights.size(); ++i)
+  {
+    lights[i].PositionWC =
+      glm::dvec3(std::sin(i * 1.3) * 10, std::cos(i * 0.7) * 10, double(i % 7));
+    lights[i].Attenuation = (i % 10 == 3) ? glm::dvec3(1, 0, 0) : glm::dvec3(1, 0, 0.2);
+    lights[i].Intensity = (i % 10 == 4) ? 0.0 : 1.0;
+  }
+  const PreparedLights p = PrepareLights(lights, LightPreparationOptions());
+  ASSERT_EQ(p.Lights.size(), lights.size());
+  EXPECT_EQ(p.NumberOfAlwaysOn, 10u);
+  EXPECT_EQ(p.NumberOfBelowCutoff, 10u); // intensity 0
+  for (std::size_t i = 0; i < 10; ++i)
+  {
+    EXPECT_TRUE(std::isinf(p.Lights[i].Radius));
+  }
+  std::vector<bool> seen(lights.size(), false);
+  for (const PreparedLight& l : p.Lights)
+  {
+    ASSERT_LT(l.SourceIndex, lights.size());
+    EXPECT_FALSE(seen[l.SourceIndex]);
+    seen[l.SourceIndex] = true;
+  }
+}
+
+TEST(LightPreparation, SpotParametersFollowVTKConventions)
+{
+  LightSource spot;
+  spot.ConeAngle = 30.0; // half angle in degrees, as vtkLight
+  spot.DirectionWC = glm::dvec3(0, 0, -5);
+  spot.Attenuation = glm::dvec3(1, 0, 1);
+  LightSource wide = spot;
+  wide.ConeAngle = 90.0; // >= 90 is not a spot in VTK
+  const PreparedLights p = PrepareLights({ spot, wide }, LightPreparationOptions{ 1e-3, false });
+  ASSERT_EQ(p.Lights.size(), 2u);
+  EXPECT_NEAR(p.Lights[0].CosCone, std::cos(30.0 * 3.14159265358979323846 / 180.0), 1e-15);
+  EXPECT_NEAR(glm::length(p.Lights[0].DirectionWC), 1.0, 1e-15);
+  EXPECT_EQ(p.Lights[1].CosCone, -2.0);
+  EXPECT_EQ(p.NumberOfSpots, 1u);
+}
+
+TEST(LightPreparation, ExplicitRadiusCapsDerivedRadius)
+{
+  LightSource l;
+  l.Attenuation = glm::dvec3(1, 0, 1);
+  l.HasRadius = true;
+  l.Radius = 2.0;
+  EXPECT_DOUBLE_EQ(PrepareLights({ l }, LightPreparationOptions()).Lights[0].Radius, 2.0);
+  l.Radius = 1e6; // larger than what the cutoff needs: the derived radius wins
+  const double derived = ComputeInfluenceRadius(1.0, l.Attenuation, 1.0 / 1024.0);
+  EXPECT_DOUBLE_EQ(PrepareLights({ l }, LightPreparationOptions()).Lights[0].Radius, derived);
+  l.Radius = 0.0; // explicit zero radius: valid, reaches nothing
+  EXPECT_EQ(PrepareLights({ l }, LightPreparationOptions()).Lights[0].Radius, 0.0);
+}

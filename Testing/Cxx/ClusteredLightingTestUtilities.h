@@ -8,6 +8,7 @@
 #include "vtkClusteredLightingPass.h"
 #include "vtkClusteredLightingReference.h"
 
+#include "vtkCommand.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
@@ -24,6 +25,31 @@
 
 namespace ClusteredLightingTest
 {
+
+/// Collects the error and warning messages an object emits (they are not printed, so
+/// ctest's "ERR|" failure pattern does not fire on expected errors).
+class MessageCollector : public vtkCommand
+{
+public:
+  static MessageCollector* New() { return new MessageCollector; }
+  void Execute(vtkObject*, unsigned long event, void* data) override
+  {
+    const std::string msg = data ? static_cast<const char*>(data) : "";
+    (event == vtkCommand::ErrorEvent ? this->Errors : this->Warnings).push_back(msg);
+  }
+  void Watch(vtkObject* o)
+  {
+    o->AddObserver(vtkCommand::ErrorEvent, this);
+    o->AddObserver(vtkCommand::WarningEvent, this);
+  }
+  void Clear()
+  {
+    this->Errors.clear();
+    this->Warnings.clear();
+  }
+  std::vector<std::string> Errors;
+  std::vector<std::string> Warnings;
+};
 
 /// RGB pixels of the window's back buffer as floats in [0, 1] (render first).
 inline std::vector<float> CapturePixels(vtkRenderWindow* rw)

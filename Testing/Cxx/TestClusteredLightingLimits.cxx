@@ -1,0 +1,129 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Light counts and limits:
+//  - 16,384 lights render correctly: zero false negatives against the CPU reference, and
+//    clustered vs brute force within the derived cutoff tolerance, no NaN pixel;
+//  - the documented maximum (GetMaximumNumberOfLights for the context's
+//    GL_MAX_TEXTURE_SIZE) is what the pass enforces: a grid too fine for the light count
+//    gets a clear error naming the limit, no crash, no clustered light silently dropped
+//    from a rendered frame; going back to a valid grid renders them again.
+#include "ClusteredLightingTestUtilities.h"
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkClusteredLightSet.h"
+#include "vtkCommand.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkPlaneSource.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkSphereSource.h"
+#include "vtkTextureObject.h"
+
+#include <random>
+
+int TestClusteredLightingLimits(int, char*[])
+{
+  vtkNew<vtkRenderWindow> renWin;
+  renWin->SetSize(200, 150);
+  renWin->SetMultiSamples(0);
+  vtkNew<vtkRenderer> ren;
+  ren->AutomaticLightCreationOff();
+  renWin->AddRenderer(ren);
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetOrigin(-5, -5, 0);
+  plane->SetPoint1(5, -5, 0);
+  plane->SetPoint2(-5, 5, 0);
+  vtkNew<vtkPolyDataMapper> planeMapper;
+  planeMapper->SetInputConnection(plane->GetOutputPort());
+  vtkNew<vtkActor> planeActor;
+  planeActor->SetMapper(planeMapper);
+  ren->AddActor(planeActor);
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetRadius(1.2);
+  sphere->SetCenter(0, 0, 1.0);
+  vtkNew<vtkPolyDataMapper> sphereMapper;
+  sphereMapper->SetInputConnection(sphere->GetOutputPort());
+  vtkNew<vtkActor> sphereActor;
+  sphereActor->SetMapper(sphereMapper);
+  ren->AddActor(sphereActor);
+
+  const int n = 16384;
+  vtkNew<vtkClusteredLightSet> lights;
+  lights->SetNumberOfLights(n);
+  std::mt19937 rng(9);
+  std::uniform_real_distribution<double> U(0.0, 1.0);
+  for (int i = 0; i < n; ++i)
+  {
+    lights->SetPosition(i, -5 + 10 * U(rng), -5 + 10 * U(rng), 0.05 + 2.5 * U(rng));
+    lights->SetColor(i, U(rng), U(rng), U(rng));
+    lights->SetIntensity(i, 0.5);
+    lights->SetAttenuation(i, 1.0, 0.0, 3000.0);
+  }
+  vtkNew<vtkClusteredLightingPass> pass;
+  pass->AddLightSet(lights);
+  ren->SetPass(pass);
+  ren->GetActiveCamera()->SetPosition(0, -9, 7);
+  ren->GetActiveCamera()->SetFocalPoint(0, 0, 0);
+  ren->ResetCameraClippingRange();
+  renWin->Render();
+
+  int status = EXIT_SUCCESS;
+  const int maxTexture =
+    vtkTextureObject::GetMaximumTextureSize(vtkOpenGLRenderWindow::SafeDownCast(renWin));
+  const vtkTypeInt64 maxLights = vtkClusteredLightingPass::GetMaximumNumberOfLights(
+    pass->GetTilesX(), pass->GetTilesY(), pass->GetSlices(), maxTexture);
+  std::printf("GL_MAX_TEXTURE_SIZE %d: the default %dx%dx%d grid holds %lld lights\n", maxTexture,
+    pass->GetTilesX(), pass->GetTilesY(), pass->GetSlices(), static_cast<long long>(maxLights));
+  std::printf("%d lights: list %.1f MiB, master %.2f MiB, light records %.2f MiB\n",
+    pass->GetNumberOfClusteredLights(), pass->GetListTextureBytes() / 1048576.0,
+    pass->GetMasterTextureBytes() / 1048576.0, pass->GetLightBufferBytes() / 1048576.0);
+  if (pass->GetNumberOfClusteredLights() != n || pass->GetNumberOfAssignedLights() == 0)
+  {
+    status = EXIT_FAILURE;
+  }
+  const auto assignment = ClusteredLightingTest::CheckAssignment(pass, ren, "16384 lights");
+  if (assignment.FalseNegatives != 0 || assignment.MasterMismatches != 0)
+  {
+    status = EXIT_FAILURE;
+  }
+  const auto brute =
+    ClusteredLightingTest::CheckAgainstBruteForce(pass, renWin, ren, 1.0, "16384 lights");
+  if (brute.Violations != 0 || ClusteredLightingTest::CountNonFinitePixels(pass, renWin) != 0)
+  {
+    status = EXIT_FAILURE;
+  }
+
+  // A grid that cannot hold 16,384 lights: 256 x 256 tiles x 64 slices.
+  vtkNew<ClusteredLightingTest::MessageCollector> messages;
+  messages->Watch(pass);
+  pass->SetTilesX(256);
+  pass->SetTilesY(256);
+  pass->SetSlices(64);
+  const vtkTypeInt64 fineMax =
+    vtkClusteredLightingPass::GetMaximumNumberOfLights(256, 256, 64, maxTexture);
+  renWin->Render();
+  renWin->Render(); // reported once, not every frame
+  const std::string message = messages->Errors.empty() ? "" : messages->Errors[0];
+  std::printf("error reported %zu time(s): %s\n", messages->Errors.size(), message.c_str());
+  const std::string expected = "holds at most " + std::to_string(fineMax) + " lights";
+  if (messages->Errors.size() != 1 || message.find(expected) == std::string::npos ||
+    message.find("16384") == std::string::npos)
+  {
+    std::printf("expected one error containing \"%s\"\n", expected.c_str());
+    status = EXIT_FAILURE;
+  }
+  if (pass->GetNumberOfAssignedLights() != 0)
+  {
+    status = EXIT_FAILURE;
+  }
+  // Back to a valid grid: the lights render again and the assignment is exact.
+  pass->SetTilesX(32);
+  pass->SetTilesY(16);
+  pass->SetSlices(32);
+  renWin->Render();
+  if (pass->GetNumberOfAssignedLights() == 0 ||
+    ClusteredLightingTest::CheckAssignment(pass, ren, "after recovery").FalseNegatives != 0)
+  {
+    status = EXIT_FAILURE;
+  }
+  return status;
+}

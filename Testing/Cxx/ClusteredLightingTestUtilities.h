@@ -14,12 +14,15 @@
 #include "vtkPointData.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
+#include "vtkShader.h"
+#include "vtkShaderProgram.h"
 #include "vtkSmartPointer.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkWindowToImageFilter.h"
 
 #include <cmath>
 #include <cstdio>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -49,6 +52,25 @@ public:
   }
   std::vector<std::string> Errors;
   std::vector<std::string> Warnings;
+};
+
+/// Records the fragment shader source of every program a mapper draws with
+/// (vtkCommand::UpdateShaderEvent passes the program) and counts distinct programs.
+class ShaderRecorder : public vtkCommand
+{
+public:
+  static ShaderRecorder* New() { return new ShaderRecorder; }
+  void Execute(vtkObject*, unsigned long, void* data) override
+  {
+    vtkShaderProgram* program = static_cast<vtkShaderProgram*>(data);
+    if (program && program->GetFragmentShader())
+    {
+      this->LastFragmentSource = program->GetFragmentShader()->GetSource();
+      this->Programs.insert(program);
+    }
+  }
+  std::string LastFragmentSource;
+  std::set<vtkShaderProgram*> Programs;
 };
 
 /// RGB pixels of the window's back buffer as floats in [0, 1] (render first).
@@ -119,9 +141,10 @@ inline vtkClusteredLighting::AssignmentComparison CheckAssignment(
   vtkClusteredLighting::AssignmentComparison cmp;
   const vtkClusteredLightingFrameState* frame = pass->GetFrameState(ren);
   std::vector<std::uint32_t> list, master;
-  if (!frame || !frame->Valid || !pass->ReadBackAssignment(ren, list, master))
+  if (!frame || !frame->Valid || (frame->Layout.Batches == 0 && !frame->Lights.empty()) ||
+    !pass->ReadBackAssignment(ren, list, master))
   {
-    std::printf("%s: no assignment to check\n", what);
+    std::printf("%s: no clustered assignment to check (render in clustered mode first)\n", what);
     cmp.FalseNegatives = ~0ull;
     return cmp;
   }
@@ -173,7 +196,7 @@ struct BruteForceCheck
  * The tail is computed in double precision from the depth buffer (opaque surface). With
  * raySamples > 0 the tail is instead maximized over that many points along the pixel ray
  * up to the opaque surface (for translucent surfaces in front of it). The pass is left
- * in clustered mode.
+ * in clustered mode, rendered.
  */
 inline BruteForceCheck CheckAgainstBruteForce(vtkClusteredLightingPass* pass, vtkRenderWindow* rw,
   vtkRenderer* ren, double materialFactor, const char* what, int raySamples = 0)
@@ -189,6 +212,7 @@ inline BruteForceCheck CheckAgainstBruteForce(vtkClusteredLightingPass* pass, vt
   rw->Render();
   const std::vector<float> brute = CapturePixels(rw);
   pass->SetShadingMode(vtkClusteredLightingPass::SHADING_CLUSTERED);
+  rw->Render(); // leave the pass's state (and the frame state) in clustered mode
   out.Image = CompareImages(clustered, brute);
 
   int x0, y0, ww, wh;

@@ -9,8 +9,10 @@
 #include "vtkClusteredLightingShaderVariant.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
+#include "vtkMatrix3x3.h"
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
+#include "vtkOpenGLCamera.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLRenderer.h"
 #include "vtkProperty.h"
@@ -287,7 +289,11 @@ void vtkClusteredLightingPass::Render(const vtkRenderState* s)
   vtkClusteredLightingRendererState* state = this->Internals->GetState(ren, rw);
   this->Internals->Current = state;
 
-  // ---- 1. Gather lights -------------------------------------------------------
+  // ---- 1. Camera and lights ---------------------------------------------------
+  // As VTK's own pipeline does before rendering (vtkCameraPass does not): set up the
+  // camera for this renderer, including its stereo state (otherwise every eye renders
+  // mono under a render pass in VTK 9.1).
+  this->UpdateCamera(ren);
   // Camera lights and headlights follow the camera before they are read.
   this->UpdateLightGeometry(ren);
   vtkLightCollection* lights = ren->GetLights();
@@ -430,7 +436,11 @@ void vtkClusteredLightingPass::Render(const vtkRenderState* s)
   ClusterTextureLayout layout;
   if (enabled)
   {
-    const int maxTexture = vtkTextureObject::GetMaximumTextureSize(rw);
+    int maxTexture = vtkTextureObject::GetMaximumTextureSize(rw);
+    if (this->MaximumTextureSize > 0)
+    {
+      maxTexture = std::min(maxTexture, this->MaximumTextureSize);
+    }
     GLint maxBuffer = 0;
     glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxBuffer);
     std::string error;
@@ -477,8 +487,23 @@ void vtkClusteredLightingPass::Render(const vtkRenderState* s)
   double range[2];
   camera->GetClippingRange(range);
   ViewParameters view;
-  view.WCVC = ToGLM(camera->GetModelViewTransformMatrix());
-  view.VCDC = ToGLM(camera->GetProjectionTransformMatrix(ren->GetTiledAspectRatio(), -1, 1));
+  if (vtkOpenGLCamera* glCamera = vtkOpenGLCamera::SafeDownCast(camera))
+  {
+    // Exactly the matrices the mappers will use (VTK caches them per camera and renderer;
+    // they are stored transposed for GL).
+    vtkMatrix4x4* wcvc = nullptr;
+    vtkMatrix3x3* normals = nullptr;
+    vtkMatrix4x4* vcdc = nullptr;
+    vtkMatrix4x4* wcdc = nullptr;
+    glCamera->GetKeyMatrices(ren, wcvc, normals, vcdc, wcdc);
+    view.WCVC = glm::transpose(ToGLM(wcvc));
+    view.VCDC = glm::transpose(ToGLM(vcdc));
+  }
+  else
+  {
+    view.WCVC = ToGLM(camera->GetModelViewTransformMatrix());
+    view.VCDC = ToGLM(camera->GetProjectionTransformMatrix(ren->GetTiledAspectRatio(), -1, 1));
+  }
   view.Grid.TilesX = this->TilesX;
   view.Grid.TilesY = this->TilesY;
   view.Grid.Slices = this->Slices;
@@ -533,7 +558,7 @@ void vtkClusteredLightingPass::Render(const vtkRenderState* s)
         listPass.Slicing[k] = static_cast<float>(slicing[k]);
       }
       listPass.DepthRange[0] = static_cast<float>(view.Grid.NearVC);
-      listPass.DepthRange[1] = static_cast<float>(view.Grid.FarVC);
+      listPass.DepthRange[1] = static_cast<float>(view.Grid.GetMaxFragmentDepth());
       ok = state->GPU.AllocateTextures(rw, layout) &&
         state->GPU.BuildAssignment(rw, layout, data.NumberOfQuads, listPass);
       if (!ok)
@@ -802,6 +827,8 @@ void vtkClusteredLightingPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "HeatMapMaximum: " << this->HeatMapMaximum << "\n";
   os << indent << "MortonOrder: " << this->MortonOrder << "\n";
   os << indent << "BoundsMethod: " << this->BoundsMethod << "\n";
+  os << indent << "PerClusterCulling: " << this->PerClusterCulling << "\n";
+  os << indent << "MaximumTextureSize: " << this->MaximumTextureSize << "\n";
   os << indent << "MeasureTimings: " << this->MeasureTimings << "\n";
   os << indent << "NumberOfClusteredLights: " << this->NumberOfClusteredLights << "\n";
   os << indent << "NumberOfAssignedLights: " << this->NumberOfAssignedLights << "\n";

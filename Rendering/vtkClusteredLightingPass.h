@@ -249,6 +249,17 @@ public:
 
   ///@{
   /**
+   * Largest texture side, in texels, the pass allocates for its list and master
+   * textures; 0 means the context's GL_MAX_TEXTURE_SIZE. A smaller value bounds GPU memory
+   * (the list texture is at most MaximumTextureSize^2 * 4 bytes) and lowers the light
+   * limit accordingly (see GetMaximumNumberOfLights). Default is 0.
+   */
+  vtkSetClampMacro(MaximumTextureSize, int, 0, VTK_INT_MAX);
+  vtkGetMacro(MaximumTextureSize, int);
+  ///@}
+
+  ///@{
+  /**
    * Finish the GL work around the assignment and shading stages and record their times
    * (GetLastAssignmentTime, GetLastShadingTime). Costs a pipeline stall; for
    * benchmarks. Default is off.
@@ -350,6 +361,7 @@ protected:
   bool MortonOrder = true;
   int BoundsMethod = BOUNDS_TANGENT;
   bool PerClusterCulling = true;
+  int MaximumTextureSize = 0;
   bool MeasureTimings = false;
 
   int NumberOfClusteredLights = 0;

@@ -56,6 +56,18 @@ struct ClusterGridParams
   SlicingScheme Scheme = SlicingScheme::Exponential;
 
   int GetNumberOfClusters() const { return this->TilesX * this->TilesY * this->Slices; }
+
+  /**
+   * Deepest view depth a fragment can have. GL clips at the far plane in float: with
+   * P22 + 1 = -2 n / (f - n) the far plane moves by about 2^-24 * f / (2 n) relative, so
+   * at far/near = 1e6 fragments survive a few percent beyond FarVC. The last slice and
+   * the assignment extend to this depth (8x that error) so no such fragment misses a light.
+   */
+  double GetMaxFragmentDepth() const
+  {
+    const double floatEpsilon = 1.0 / 16777216.0;
+    return this->FarVC * (1.0 + 4.0 * floatEpsilon * (this->FarVC / this->NearVC)) + 1e-12;
+  }
 };
 
 /// Sanitize near/far so that slicing is always well defined (NearVC > 0, FarVC > NearVC).

@@ -160,8 +160,8 @@ inline bool ComputeLayout(int tilesX, int tilesY, int slices, int n, int maxText
     {
       std::ostringstream os;
       os << "a " << tilesX << "x" << tilesY << "x" << slices << " cluster grid holds at most "
-         << maxN << " lights with GL_MAX_TEXTURE_SIZE " << maxTextureSize << " (requested " << n
-         << "); use fewer tiles or slices";
+         << maxN << " lights with textures of at most " << maxTextureSize
+         << " texels a side (requested " << n << "); use fewer tiles or slices";
       *error = os.str();
     }
     return false;

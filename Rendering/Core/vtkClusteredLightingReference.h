@@ -15,7 +15,9 @@
  *
  * Cell (tx, ty, s) spans NDC x in [2 tx/X - 1, 2 (tx+1)/X - 1] (same for y), and depth
  * [max(boundary(s), near), min(boundary(s+1), far)]: only fragments between the camera
- * planes exist, slice 0 starts at the near plane and the last slice ends at the far one.
+ * planes exist, slice 0 starts at the near plane and the last slice ends at `far`. Pass
+ * ClusterGridParams::GetMaxFragmentDepth() as `far`: GL's float clipping lets fragments
+ * exist slightly beyond the far plane at large far/near ratios.
  *
  * For speed, each light is first tested only against the cells that its clipped
  * axis-aligned box can touch: the projection of a box in front of the eye lies in the

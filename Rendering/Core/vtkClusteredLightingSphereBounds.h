@@ -343,7 +343,7 @@ inline void ComputePaddedSliceSlab(
   int s, const ClusterGridParams& grid, const ClusterRangePadding& pad, double& z0, double& z1)
 {
   z0 = s == 0 ? grid.NearVC : ComputeSliceBoundary(s, grid);
-  z1 = s == grid.Slices - 1 ? grid.FarVC : ComputeSliceBoundary(s + 1, grid);
+  z1 = s == grid.Slices - 1 ? grid.GetMaxFragmentDepth() : ComputeSliceBoundary(s + 1, grid);
   z0 -= pad.RelativeDepth * std::abs(z0);
   z1 += pad.RelativeDepth * std::abs(z1);
 }
@@ -357,9 +357,10 @@ inline int ComputeSliceTileRanges(const glm::dvec3& centerVC, double radius, con
   const ClusterGridParams& grid, std::vector<SliceTileRange>& out, bool centerDepthQuad = false,
   const ClusterRangePadding& pad = ClusterRangePadding())
 {
+  const double deepest = grid.GetMaxFragmentDepth();
   const SphereScreenBounds whole = centerDepthQuad
-    ? ComputeCenterDepthQuadBounds(centerVC, radius, vcdc, grid.NearVC, grid.FarVC)
-    : ComputeSphereScreenBounds(centerVC, radius, vcdc, grid.NearVC, grid.FarVC);
+    ? ComputeCenterDepthQuadBounds(centerVC, radius, vcdc, grid.NearVC, deepest)
+    : ComputeSphereScreenBounds(centerVC, radius, vcdc, grid.NearVC, deepest);
   const ClusterRange range = ComputeClusterRange(whole, grid, pad);
   if (range.IsEmpty())
   {

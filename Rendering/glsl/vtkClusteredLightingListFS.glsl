@@ -16,7 +16,7 @@ uniform vec3 clProjectionX;  // (P00, P02, P03) of VC->clip; culling needs P01 =
 uniform vec3 clProjectionY;  // (P11, P12, P13)
 uniform vec2 clProjectionW;  // (P32, P33); P30 = P31 = 0
 uniform vec4 clSlicing;      // ComputeSliceShaderParameters
-uniform vec2 clDepthRange;   // camera near and far depth
+uniform vec2 clDepthRange;   // camera near depth, deepest fragment (GetMaxFragmentDepth)
 
 flat in uint clBitVSOutput;
 flat in vec4 clSphereVSOutput;

@@ -403,7 +403,9 @@ bool vtkClusteredLightingGPUResources::ReadBack(
   vtkOpenGLState::ScopedglActiveTexture savedUnit(rw->GetState());
   list.assign(static_cast<std::size_t>(this->ListSize[0]) * this->ListSize[1], 0u);
   master.assign(static_cast<std::size_t>(this->MasterSize[0]) * this->MasterSize[1], 0u);
-  glPixelStorei(GL_PACK_ALIGNMENT, 4);
+  // Through vtkOpenGLState: a direct glPixelStorei would leave VTK's cached pack
+  // alignment stale, and VTK's next RGB read-back would overrun its buffer.
+  rw->GetState()->vtkglPixelStorei(GL_PACK_ALIGNMENT, 4);
   this->List->Activate();
   glGetTexImage(GL_TEXTURE_2D, 0, GL_RED_INTEGER, GL_UNSIGNED_INT, list.data());
   this->List->Deactivate();

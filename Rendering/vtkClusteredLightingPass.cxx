@@ -27,6 +27,7 @@
 #include <algorithm> // for std::find
 #include <chrono>    // for timings
 #include <map>       // for std::map
+#include <set>       // for std::set
 #include <sstream>   // for std::ostringstream
 
 using namespace vtkClusteredLighting;
@@ -87,6 +88,7 @@ struct vtkClusteredLightingRendererState
   // Lights: signature of what they were prepared from, and the result.
   std::vector<vtkTypeUInt64> LightSignature;
   PreparedLights Prepared;
+  std::set<std::string> ReportedProblems;
   unsigned long LightsVersion = 0;
   bool LightDataUploaded = false;
 
@@ -413,10 +415,18 @@ void vtkClusteredLightingPass::Render(const vtkRenderState* s)
     options.Cutoff = this->Cutoff;
     options.MortonOrder = this->MortonOrder;
     state->Prepared = PrepareLights(sources, options, nameOf);
-    for (const std::string& problem : state->Prepared.Problems)
+    // Warn once per problem: a bad light stays reported while it stays bad, even when
+    // other lights change every frame.
+    std::set<std::string> problems(
+      state->Prepared.Problems.begin(), state->Prepared.Problems.end());
+    for (const std::string& problem : problems)
     {
-      vtkWarningMacro(<< problem);
+      if (!state->ReportedProblems.count(problem))
+      {
+        vtkWarningMacro(<< problem);
+      }
     }
+    state->ReportedProblems.swap(problems);
     ++state->LightsVersion;
     state->LightDataUploaded = false;
   }

@@ -58,9 +58,10 @@ def make_lights(count, half_size, radius, seed=1):
     radii = vtkFloatArray()
     radii.SetName("Radius")
     for _ in range(count):
-        points.InsertNextPoint(
-            rng.uniform(-half_size, half_size), rng.uniform(0.05, 0.9), rng.uniform(-half_size, half_size)
-        )
+        x = rng.uniform(-half_size, half_size)
+        y = rng.uniform(0.05, 0.9)
+        z = rng.uniform(-half_size, half_size)
+        points.InsertNextPoint(x, y, z)
         hue = rng.random()
         rgb = [0.5 + 0.5 * math.cos(2.0 * math.pi * (hue + k / 3.0)) for k in range(3)]
         color.InsertNextTuple3(*[40 + 215 * c for c in rgb])

@@ -47,8 +47,9 @@
  * [0, 255] to [0, 1]. A missing array (or an empty name) gives every light the
  * matching Default* value (DefaultColor, DefaultIntensity, ...). An array of another
  * kind (e.g. a vtkStringArray), with the wrong number of components or with fewer tuples
- * than points is an error (vtkErrorMacro naming the array): the set then holds no lights
- * until the input or the array names change.
+ * than points is an error (vtkErrorMacro naming the array), and so is an input that is
+ * not a vtkPolyData (reported by the executive): the set then holds no lights until the
+ * input, the array names or the defaults change.
  *
  * vtkClusteredLightingPass calls UpdateLights() before it reads the lights, which
  * updates the upstream pipeline and re-reads the arrays only when the input, the array
@@ -225,25 +226,67 @@ public:
 
   ///@{
   /**
-   * Values given to every light read from an input that lacks the matching array.
-   * They follow vtkLight's defaults, except that lights are point lights:
-   * DefaultColor is (1, 1, 1), DefaultIntensity is 1, DefaultAttenuation is (1, 0, 0)
-   * (no falloff: such lights are always on, see the class description), DefaultRadius is
-   * -1 (a negative value means no explicit radius), DefaultSpotDirection is (0, 0, -1),
-   * DefaultConeAngle is 180 (no cone) and DefaultExponent is 1.
+   * Color of the lights read from an input without a color array. The Default* values
+   * below follow vtkLight's defaults, except that lights are point lights.
+   * Default is (1, 1, 1).
    */
   vtkSetVector3Macro(DefaultColor, double);
   vtkGetVector3Macro(DefaultColor, double);
+  ///@}
+
+  ///@{
+  /**
+   * Intensity of the lights read from an input without an intensity array.
+   * Default is 1.
+   */
   vtkSetMacro(DefaultIntensity, double);
   vtkGetMacro(DefaultIntensity, double);
+  ///@}
+
+  ///@{
+  /**
+   * Attenuation (a0, a1, a2) of the lights read from an input without an attenuation
+   * array. The default never falls off: such lights are always on (see the class
+   * description); pipelines of many lights usually set a quadratic term or a radius.
+   * Default is (1, 0, 0).
+   */
   vtkSetVector3Macro(DefaultAttenuation, double);
   vtkGetVector3Macro(DefaultAttenuation, double);
+  ///@}
+
+  ///@{
+  /**
+   * Explicit radius of the lights read from an input without a radius array; a negative
+   * value means no explicit radius (the pass derives it from the cutoff).
+   * Default is -1.
+   */
   vtkSetMacro(DefaultRadius, double);
   vtkGetMacro(DefaultRadius, double);
+  ///@}
+
+  ///@{
+  /**
+   * Spot direction of the lights read from an input without a spot direction array.
+   * Default is (0, 0, -1).
+   */
   vtkSetVector3Macro(DefaultSpotDirection, double);
   vtkGetVector3Macro(DefaultSpotDirection, double);
+  ///@}
+
+  ///@{
+  /**
+   * Cone half angle, in degrees, of the lights read from an input without a cone angle
+   * array (>= 90: point light). Default is 180.
+   */
   vtkSetMacro(DefaultConeAngle, double);
   vtkGetMacro(DefaultConeAngle, double);
+  ///@}
+
+  ///@{
+  /**
+   * Spot exponent of the lights read from an input without an exponent array.
+   * Default is 1.
+   */
   vtkSetMacro(DefaultExponent, double);
   vtkGetMacro(DefaultExponent, double);
   ///@}

@@ -28,21 +28,54 @@
  * the set modified, so the pass re-uploads light data on the next render only when a
  * set actually changed.
  *
+ * Lights as data: the set is also a pipeline sink (one optional input port taking
+ * vtkPolyData, no output port). Connect a source or filter with SetInputConnection(), or
+ * a data set with SetInputData(), and every point of the input becomes a light (cells
+ * are ignored), with its parameters taken from point-data arrays:
+ *
+ * | parameter      | array name option      | default name    | components          |
+ * |----------------|------------------------|-----------------|---------------------|
+ * | color          | ColorArrayName         | "Color"         | 3 (RGB) or 4 (RGBA) |
+ * | intensity      | IntensityArrayName     | "Intensity"     | 1                   |
+ * | attenuation    | AttenuationArrayName   | "Attenuation"   | 3 (a0, a1, a2)      |
+ * | radius         | RadiusArrayName        | "Radius"        | 1                   |
+ * | spot direction | SpotDirectionArrayName | "SpotDirection" | 3                   |
+ * | cone angle     | ConeAngleArrayName     | "ConeAngle"     | 1 (degrees)         |
+ * | exponent       | ExponentArrayName      | "Exponent"      | 1                   |
+ *
+ * Any numeric array type is accepted; an unsigned char color array is scaled from
+ * [0, 255] to [0, 1]. A missing array (or an empty name) gives every light the
+ * matching Default* value (DefaultColor, DefaultIntensity, ...). An array of another
+ * kind (e.g. a vtkStringArray), with the wrong number of components or with fewer tuples
+ * than points is an error (vtkErrorMacro naming the array), and so is an input that is
+ * not a vtkPolyData (reported by the executive): the set then holds no lights until the
+ * input, the array names or the defaults change.
+ *
+ * vtkClusteredLightingPass calls UpdateLights() before it reads the lights, which
+ * updates the upstream pipeline and re-reads the arrays only when the input, the array
+ * names or the defaults changed; the set's MTime then changes, and the pass re-uploads
+ * the light data. An animated source therefore moves the lights each frame; the shaders
+ * are not rebuilt for it. While an input is connected the input defines the lights:
+ * changes made with the per-light setters are replaced at the next update. After the
+ * input is disconnected the set keeps the lights it read last.
+ *
  * @sa vtkClusteredLightingPass vtkLight
  */
 #ifndef vtkClusteredLightSet_h
 #define vtkClusteredLightSet_h
 
-#include "vtkObject.h"
+#include "vtkAlgorithm.h"
 #include "vtkRenderingClusteredModule.h" // For export macro
 
 #include <memory> // for std::unique_ptr
 
-class VTKRENDERINGCLUSTERED_EXPORT vtkClusteredLightSet : public vtkObject
+class vtkPolyData;
+
+class VTKRENDERINGCLUSTERED_EXPORT vtkClusteredLightSet : public vtkAlgorithm
 {
 public:
   static vtkClusteredLightSet* New();
-  vtkTypeMacro(vtkClusteredLightSet, vtkObject)
+  vtkTypeMacro(vtkClusteredLightSet, vtkAlgorithm)
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
@@ -113,13 +146,192 @@ public:
   vtkBooleanMacro(Enabled, bool);
   ///@}
 
+  ///@{
+  /**
+   * Feed the lights from a data set instead of a pipeline (the connection made is the
+   * same as SetInputConnection() with a trivial producer). GetInput() returns the
+   * input's data object if it is a vtkPolyData, or null.
+   */
+  void SetInputData(vtkPolyData* input);
+  vtkPolyData* GetInput();
+  ///@}
+
+  /**
+   * If an input is connected, bring it up to date and, when it (or an array name or
+   * default) changed since the last read, read the lights from it. Does nothing without
+   * an input. vtkClusteredLightingPass calls it before every render; call it yourself to
+   * query the lights of a connected set outside a render.
+   */
+  void UpdateLights();
+
+  ///@{
+  /**
+   * Name of the color array. The names of the point-data arrays the lights are read
+   * from when an input is connected (see the class description for the number of
+   * components); an empty or null name means "not given": every light gets the matching
+   * default. Default is "Color".
+   */
+  vtkSetStringMacro(ColorArrayName);
+  vtkGetStringMacro(ColorArrayName);
+  ///@}
+
+  ///@{
+  /**
+   * Name of the intensity array. Default is "Intensity".
+   */
+  vtkSetStringMacro(IntensityArrayName);
+  vtkGetStringMacro(IntensityArrayName);
+  ///@}
+
+  ///@{
+  /**
+   * Name of the attenuation array (a0, a1, a2). Default is "Attenuation".
+   */
+  vtkSetStringMacro(AttenuationArrayName);
+  vtkGetStringMacro(AttenuationArrayName);
+  ///@}
+
+  ///@{
+  /**
+   * Name of the explicit influence radius array. Default is "Radius".
+   */
+  vtkSetStringMacro(RadiusArrayName);
+  vtkGetStringMacro(RadiusArrayName);
+  ///@}
+
+  ///@{
+  /**
+   * Name of the spot direction array (need not be unit). Default is "SpotDirection".
+   */
+  vtkSetStringMacro(SpotDirectionArrayName);
+  vtkGetStringMacro(SpotDirectionArrayName);
+  ///@}
+
+  ///@{
+  /**
+   * Name of the cone half angle array, in degrees (>= 90: point light).
+   * Default is "ConeAngle".
+   */
+  vtkSetStringMacro(ConeAngleArrayName);
+  vtkGetStringMacro(ConeAngleArrayName);
+  ///@}
+
+  ///@{
+  /**
+   * Name of the spot exponent array. Default is "Exponent".
+   */
+  vtkSetStringMacro(ExponentArrayName);
+  vtkGetStringMacro(ExponentArrayName);
+  ///@}
+
+  ///@{
+  /**
+   * Color of the lights read from an input without a color array. The Default* values
+   * below follow vtkLight's defaults, except that lights are point lights.
+   * Default is (1, 1, 1).
+   */
+  vtkSetVector3Macro(DefaultColor, double);
+  vtkGetVector3Macro(DefaultColor, double);
+  ///@}
+
+  ///@{
+  /**
+   * Intensity of the lights read from an input without an intensity array.
+   * Default is 1.
+   */
+  vtkSetMacro(DefaultIntensity, double);
+  vtkGetMacro(DefaultIntensity, double);
+  ///@}
+
+  ///@{
+  /**
+   * Attenuation (a0, a1, a2) of the lights read from an input without an attenuation
+   * array. The default never falls off: such lights are always on (see the class
+   * description); pipelines of many lights usually set a quadratic term or a radius.
+   * Default is (1, 0, 0).
+   */
+  vtkSetVector3Macro(DefaultAttenuation, double);
+  vtkGetVector3Macro(DefaultAttenuation, double);
+  ///@}
+
+  ///@{
+  /**
+   * Explicit radius of the lights read from an input without a radius array; a negative
+   * value means no explicit radius (the pass derives it from the cutoff).
+   * Default is -1.
+   */
+  vtkSetMacro(DefaultRadius, double);
+  vtkGetMacro(DefaultRadius, double);
+  ///@}
+
+  ///@{
+  /**
+   * Spot direction of the lights read from an input without a spot direction array.
+   * Default is (0, 0, -1).
+   */
+  vtkSetVector3Macro(DefaultSpotDirection, double);
+  vtkGetVector3Macro(DefaultSpotDirection, double);
+  ///@}
+
+  ///@{
+  /**
+   * Cone half angle, in degrees, of the lights read from an input without a cone angle
+   * array (>= 90: point light). Default is 180.
+   */
+  vtkSetMacro(DefaultConeAngle, double);
+  vtkGetMacro(DefaultConeAngle, double);
+  ///@}
+
+  ///@{
+  /**
+   * Spot exponent of the lights read from an input without an exponent array.
+   * Default is 1.
+   */
+  vtkSetMacro(DefaultExponent, double);
+  vtkGetMacro(DefaultExponent, double);
+  ///@}
+
+  /**
+   * Number of times lights were read from the input (for tests and diagnostics).
+   */
+  vtkGetMacro(NumberOfInputReads, int);
+
 protected:
   vtkClusteredLightSet();
   ~vtkClusteredLightSet() override;
 
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+
+  /**
+   * Sends REQUEST_DATA to RequestData(); vtkAlgorithm has no data request of its own.
+   */
+  vtkTypeBool ProcessRequest(
+    vtkInformation* request, vtkInformationVector** inInfo, vtkInformationVector* outInfo) override;
+
+  /**
+   * Reads the lights from the input's points and point-data arrays.
+   */
+  virtual int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector);
+
   bool CheckIndex(vtkIdType i) const;
 
   bool Enabled = true;
+  char* ColorArrayName = nullptr;
+  char* IntensityArrayName = nullptr;
+  char* AttenuationArrayName = nullptr;
+  char* RadiusArrayName = nullptr;
+  char* SpotDirectionArrayName = nullptr;
+  char* ConeAngleArrayName = nullptr;
+  char* ExponentArrayName = nullptr;
+  double DefaultColor[3] = { 1.0, 1.0, 1.0 };
+  double DefaultIntensity = 1.0;
+  double DefaultAttenuation[3] = { 1.0, 0.0, 0.0 };
+  double DefaultRadius = -1.0;
+  double DefaultSpotDirection[3] = { 0.0, 0.0, -1.0 };
+  double DefaultConeAngle = 180.0;
+  double DefaultExponent = 1.0;
+  int NumberOfInputReads = 0;
 
 private:
   vtkClusteredLightSet(const vtkClusteredLightSet&) = delete;

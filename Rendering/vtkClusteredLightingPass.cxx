@@ -343,6 +343,7 @@ void vtkClusteredLightingPass::Render(const vtkRenderState* s)
   }
   for (const auto& set : this->Internals->LightSets)
   {
+    set->UpdateLights(); // a set fed by a pipeline reads its input here
     signature.push_back(reinterpret_cast<vtkTypeUInt64>(set.Get()));
     signature.push_back(set->GetEnabled() ? set->GetMTime() : 0);
   }

@@ -26,6 +26,7 @@
 
 #include <algorithm> // for std::find
 #include <chrono>    // for timings
+#include <cstring>   // for std::memcpy
 #include <map>       // for std::map
 #include <set>       // for std::set
 #include <sstream>   // for std::ostringstream
@@ -88,6 +89,7 @@ struct vtkClusteredLightingRendererState
   // Lights: signature of what they were prepared from, and the result.
   std::vector<vtkTypeUInt64> LightSignature;
   PreparedLights Prepared;
+  double EffectiveCutoff = 1.0 / 1024.0;
   std::set<std::string> ReportedProblems;
   unsigned long LightsVersion = 0;
   bool LightDataUploaded = false;
@@ -329,7 +331,15 @@ void vtkClusteredLightingPass::Render(const vtkRenderState* s)
 
   // Signature of everything the prepared lights depend on.
   std::vector<vtkTypeUInt64> signature;
-  signature.push_back(static_cast<vtkTypeUInt64>(this->Cutoff * 1e12));
+  auto bits = [](double v)
+  {
+    vtkTypeUInt64 u;
+    std::memcpy(&u, &v, sizeof(u));
+    return u;
+  };
+  signature.push_back(bits(this->Cutoff));
+  signature.push_back(bits(this->ErrorBudget));
+  signature.push_back(this->ErrorBudget > 0.0 ? static_cast<vtkTypeUInt64>(this->Falloff) : 0u);
   signature.push_back(this->MortonOrder ? 1 : 0);
   for (vtkLight* l : clusteredVTKLights)
   {
@@ -415,6 +425,16 @@ void vtkClusteredLightingPass::Render(const vtkRenderState* s)
     LightPreparationOptions options;
     options.Cutoff = this->Cutoff;
     options.MortonOrder = this->MortonOrder;
+    if (this->ErrorBudget > 0.0)
+    {
+      // Validate once, then pick the cutoff that meets the budget (see the header).
+      LightPreparationOptions probe = options;
+      probe.MortonOrder = false;
+      const PreparedLights valid = PrepareLights(sources, probe, nameOf);
+      options.Cutoff = ChooseCutoffForErrorBudget(valid.Lights, this->ErrorBudget,
+        ComputeErrorBudgetSamples(valid.Lights), this->Falloff == FALLOFF_WINDOWED);
+    }
+    state->EffectiveCutoff = options.Cutoff;
     state->Prepared = PrepareLights(sources, options, nameOf);
     // Warn once per problem: a bad light stays reported while it stays bad, even when
     // other lights change every frame.
@@ -432,6 +452,7 @@ void vtkClusteredLightingPass::Render(const vtkRenderState* s)
     state->LightDataUploaded = false;
   }
   const PreparedLights& prepared = state->Prepared;
+  this->EffectiveCutoff = state->EffectiveCutoff;
   const int numberOfLights = static_cast<int>(prepared.Lights.size());
   this->NumberOfClusteredLights = numberOfLights;
   this->NumberOfRejectedLights = static_cast<int>(prepared.Problems.size());
@@ -832,6 +853,8 @@ void vtkClusteredLightingPass::PrintSelf(ostream& os, vtkIndent indent)
      << "\n";
   os << indent << "SlicingScheme: " << this->SlicingScheme << "\n";
   os << indent << "Cutoff: " << this->Cutoff << "\n";
+  os << indent << "ErrorBudget: " << this->ErrorBudget << "\n";
+  os << indent << "EffectiveCutoff: " << this->EffectiveCutoff << "\n";
   os << indent << "Falloff: " << this->Falloff << "\n";
   os << indent << "ShadingMode: " << this->ShadingMode << "\n";
   os << indent << "DebugView: " << this->DebugView << "\n";

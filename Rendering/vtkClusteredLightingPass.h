@@ -158,6 +158,20 @@ public:
   vtkGetMacro(Cutoff, double);
   ///@}
 
+  ///@{
+  /**
+   * Error budget: the largest acceptable image error (in [0, 1], for a white material with
+   * Diffuse + Specular <= 1). When > 0 the pass ignores Cutoff and, whenever the lights
+   * change, picks the largest cutoff whose summed cut tails stay within the budget at
+   * sample points spread over the lights' bounding box and at the lights themselves (a
+   * conservative bound: N.L is taken as 1). GetEffectiveCutoff() reports the choice.
+   * Default is 0 (use Cutoff).
+   */
+  vtkSetClampMacro(ErrorBudget, double, 0.0, 1.0);
+  vtkGetMacro(ErrorBudget, double);
+  vtkGetMacro(EffectiveCutoff, double);
+  ///@}
+
   enum Falloffs
   {
     FALLOFF_HARD_CUT = 0, ///< VTK's attenuation, zero beyond the radius
@@ -354,6 +368,8 @@ protected:
   int Slices = 32;
   int SlicingScheme = SLICING_AUTO;
   double Cutoff = 1.0 / 1024.0;
+  double ErrorBudget = 0.0;
+  double EffectiveCutoff = 1.0 / 1024.0;
   int Falloff = FALLOFF_HARD_CUT;
   int ShadingMode = SHADING_CLUSTERED;
   int DebugView = DEBUG_NONE;

@@ -73,6 +73,7 @@ struct PreparedLight
   double CosCone;            ///< cos(coneAngle) for spots, -2 for point lights
   glm::dvec3 DirectionWC;    ///< unit spot axis (0 for point lights)
   std::uint32_t SourceIndex; ///< index into the LightSource array
+  double ExplicitRadius;     ///< the user's radius cap (+inf when none)
 };
 
 struct LightPreparationOptions
@@ -236,6 +237,7 @@ inline PreparedLights PrepareLights(const std::vector<LightSource>& sources,
       r = std::min(r, s.Radius);
     }
     p.Radius = r;
+    p.ExplicitRadius = s.HasRadius ? s.Radius : std::numeric_limits<double>::infinity();
     p.Exponent = s.Exponent;
     p.Attenuation = s.Attenuation;
     if (s.IsSpot())
@@ -317,6 +319,103 @@ inline glm::dvec3 ComputeCutoffTailBound(const glm::dvec3& pointVC,
     }
   }
   return tail;
+}
+
+/**
+ * Error budget. The image error of the cutoff at a point p is at most the sum of the cut
+ * tails there (ComputeCutoffTailBound, for a white material with Diffuse + Specular <= 1).
+ * As the cutoff decreases every radius grows, so that sum can only decrease: the largest
+ * cutoff whose bound stays within `budget` at every sample point is found by bisection on
+ * log(cutoff) in [minCutoff, maxCutoff]. Returns minCutoff if even that is not enough
+ * (lights that never fall off contribute no tail and are unaffected).
+ */
+inline double ComputeTailAtCutoff(
+  const glm::dvec3& p, const std::vector<PreparedLight>& lights, double cutoff, bool windowed)
+{
+  double tail = 0.0;
+  for (const PreparedLight& l : lights)
+  {
+    const double peak = std::max(l.Color.x, std::max(l.Color.y, l.Color.z));
+    const double r =
+      std::min(ComputeInfluenceRadius(peak, l.Attenuation, cutoff), l.ExplicitRadius);
+    const double d = glm::length(p - l.PositionWC);
+    const double c = peak * EvaluateAttenuation(d, l.Attenuation);
+    if (d >= r)
+    {
+      tail += c;
+    }
+    else if (windowed)
+    {
+      tail += c * (1.0 - EvaluateFalloffWindow(d, r));
+    }
+  }
+  return tail;
+}
+
+/// Sample points for the error budget: a 6 x 6 x 6 grid over the lights' bounding box
+/// (grown by 10%) and up to 64 light positions, where dense groups put their tails.
+inline std::vector<glm::dvec3> ComputeErrorBudgetSamples(const std::vector<PreparedLight>& lights)
+{
+  std::vector<glm::dvec3> samples;
+  if (lights.empty())
+  {
+    return samples;
+  }
+  glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
+  for (const PreparedLight& l : lights)
+  {
+    lo = glm::min(lo, l.PositionWC);
+    hi = glm::max(hi, l.PositionWC);
+  }
+  const glm::dvec3 grow = 0.05 * (hi - lo);
+  lo -= grow;
+  hi += grow;
+  for (int i = 0; i < 6; ++i)
+  {
+    for (int j = 0; j < 6; ++j)
+    {
+      for (int k = 0; k < 6; ++k)
+      {
+        samples.push_back(lo + (hi - lo) * glm::dvec3((i + 0.5) / 6, (j + 0.5) / 6, (k + 0.5) / 6));
+      }
+    }
+  }
+  const std::size_t step = std::max<std::size_t>(1, lights.size() / 64);
+  for (std::size_t i = 0; i < lights.size() && samples.size() < 216 + 64; i += step)
+  {
+    samples.push_back(lights[i].PositionWC);
+  }
+  return samples;
+}
+
+inline double ChooseCutoffForErrorBudget(const std::vector<PreparedLight>& lights, double budget,
+  const std::vector<glm::dvec3>& samples, bool windowed = false, double minCutoff = 1e-7,
+  double maxCutoff = 1.0 / 16.0)
+{
+  auto worst = [&](double cutoff)
+  {
+    double w = 0.0;
+    for (const glm::dvec3& p : samples)
+    {
+      w = std::max(w, ComputeTailAtCutoff(p, lights, cutoff, windowed));
+    }
+    return w;
+  };
+  if (worst(maxCutoff) <= budget)
+  {
+    return maxCutoff;
+  }
+  if (worst(minCutoff) > budget)
+  {
+    return minCutoff;
+  }
+  double lo = std::log(minCutoff), hi = std::log(maxCutoff); // worst(lo) <= budget < worst(hi)
+  for (int it = 0; it < 24; ++it)
+  {
+    const double mid = 0.5 * (lo + hi);
+    (worst(std::exp(mid)) <= budget ? lo : hi) = mid;
+  }
+  return std::exp(lo);
 }
 
 } // namespace vtkClusteredLighting

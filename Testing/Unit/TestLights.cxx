@@ -161,3 +161,51 @@ TEST(LightPreparation, ExplicitRadiusCapsDerivedRadius)
   l.Radius = 0.0; // explicit zero radius: valid, reaches nothing
   EXPECT_EQ(PrepareLights({ l }, LightPreparationOptions()).Lights[0].Radius, 0.0);
 }
+
+TEST(ErrorBudget, TailShrinksAsTheCutoffShrinks)
+{
+  std::vector<LightSource> lights(200);
+  for (std::size_t i = 0; i < lights.size(); ++i)
+  {
+    lights[i].PositionWC = glm::dvec3(std::sin(i * 1.7) * 4, std::cos(i * 0.9) * 4, double(i % 5));
+    lights[i].Attenuation = glm::dvec3(1, 0.1, 2.0);
+  }
+  const PreparedLights p = PrepareLights(lights, LightPreparationOptions());
+  const glm::dvec3 point(0.3, 0.2, 1.0);
+  double last = std::numeric_limits<double>::infinity();
+  for (double cutoff = 1.0 / 16.0; cutoff > 1e-6; cutoff /= 2.0)
+  {
+    const double tail = ComputeTailAtCutoff(point, p.Lights, cutoff, false);
+    EXPECT_LE(tail, last);
+    last = tail;
+  }
+}
+
+TEST(ErrorBudget, ChosenCutoffMeetsTheBudgetAndIsTight)
+{
+  std::vector<LightSource> lights(300);
+  for (std::size_t i = 0; i < lights.size(); ++i)
+  {
+    lights[i].PositionWC =
+      glm::dvec3(std::sin(i * 2.3) * 5, std::cos(i * 1.1) * 5, std::sin(i * 0.37) * 2);
+    lights[i].Color = glm::dvec3(1.0, 0.5, 0.25);
+    lights[i].Attenuation = glm::dvec3(1, 0, 8.0);
+  }
+  const PreparedLights p = PrepareLights(lights, LightPreparationOptions());
+  const std::vector<glm::dvec3> samples = ComputeErrorBudgetSamples(p.Lights);
+  EXPECT_EQ(samples.size(), 216u + 64u);
+  for (double budget : { 1.0 / 255.0, 4.0 / 255.0, 0.05 })
+  {
+    const double cutoff = ChooseCutoffForErrorBudget(p.Lights, budget, samples);
+    double worst = 0.0, worstLarger = 0.0;
+    for (const glm::dvec3& s : samples)
+    {
+      worst = std::max(worst, ComputeTailAtCutoff(s, p.Lights, cutoff, false));
+      worstLarger = std::max(worstLarger, ComputeTailAtCutoff(s, p.Lights, cutoff * 1.05, false));
+    }
+    EXPECT_LE(worst, budget) << "budget " << budget;
+    EXPECT_GT(worstLarger, budget) << "budget " << budget; // no larger cutoff would do
+  }
+  // A budget every cutoff meets gives the largest cutoff.
+  EXPECT_DOUBLE_EQ(ChooseCutoffForErrorBudget(p.Lights, 1e6, samples), 1.0 / 16.0);
+}

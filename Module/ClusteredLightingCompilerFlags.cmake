@@ -28,3 +28,24 @@ macro (clustered_lighting_enable_sanitizers)
   add_compile_options(${_clustered_lighting_sanitize_flags})
   add_link_options(-fsanitize=address,undefined,float-cast-overflow)
 endmacro ()
+
+# Sanitizer builds: link Testing/Sanitizers/ClusteredLightingPinGLDriver.cxx into a GL
+# executable (see that file: keeps Mesa's driver mapped so LeakSanitizer sees its globals).
+function (clustered_lighting_pin_gl_driver target)
+  if (NOT CLUSTERED_LIGHTING_SANITIZE)
+    return ()
+  endif ()
+  find_file(CLUSTERED_LIGHTING_GL_DRIVER swrast_dri.so
+    PATHS "/usr/lib/${CMAKE_LIBRARY_ARCHITECTURE}/dri" /usr/lib/dri /usr/lib64/dri
+    DOC "Mesa DRI driver kept loaded in sanitizer builds"
+    NO_DEFAULT_PATH)
+  if (NOT CLUSTERED_LIGHTING_GL_DRIVER)
+    message(FATAL_ERROR "CLUSTERED_LIGHTING_SANITIZE: Mesa's swrast_dri.so was not found")
+  endif ()
+  target_sources(${target} PRIVATE
+    "${PROJECT_SOURCE_DIR}/Testing/Sanitizers/ClusteredLightingPinGLDriver.cxx")
+  set_property(SOURCE "${PROJECT_SOURCE_DIR}/Testing/Sanitizers/ClusteredLightingPinGLDriver.cxx"
+    TARGET_DIRECTORY ${target}
+    APPEND PROPERTY COMPILE_DEFINITIONS "CLUSTERED_LIGHTING_GL_DRIVER=\"${CLUSTERED_LIGHTING_GL_DRIVER}\"")
+  target_link_libraries(${target} PRIVATE ${CMAKE_DL_LIBS})
+endfunction ()

@@ -8,6 +8,7 @@ pkgs=(
   libvtk9-dev python3-vtk9          # VTK 9.1 (X11/GLX build) and its Python
   libglm-dev                        # GL-free math core
   libgtest-dev googletest           # core unit tests
+  clang-tidy                        # lint of the GL-free core (scripts/run-clang-tidy.sh)
   xvfb xauth                        # every render runs under xvfb-run
   libgl1-mesa-dri mesa-utils        # llvmpipe
   glmark2-data                      # Stanford bunny (bunny.obj)

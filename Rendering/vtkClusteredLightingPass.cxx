@@ -112,14 +112,14 @@ struct vtkClusteredLightingPass::vtkInternals
 
   vtkClusteredLightingRendererState* GetState(vtkRenderer* ren, vtkOpenGLRenderWindow* rw)
   {
-    // Forget renderers that were deleted (their window may still own the GL objects).
+    // Forget renderers that were deleted (their window may still own the GL objects;
+    // the release makes that window's context current and restores the current one).
     for (auto it = this->States.begin(); it != this->States.end();)
     {
       if (!it->second->Renderer)
       {
         if (it->second->Window)
         {
-          it->second->Window->MakeCurrent();
           it->second->GPU.ReleaseGraphicsResources(it->second->Window);
         }
         it = this->States.erase(it);
@@ -783,6 +783,16 @@ const vtkClusteredLightingFrameState* vtkClusteredLightingPass::GetFrameState(
 {
   auto it = this->Internals->States.find(renderer);
   return it == this->Internals->States.end() ? nullptr : &it->second->Frame;
+}
+
+//------------------------------------------------------------------------------
+void vtkClusteredLightingPass::GetGLObjectNames(
+  std::vector<std::pair<unsigned int, unsigned int>>& names) const
+{
+  for (const auto& it : this->Internals->States)
+  {
+    it.second->GPU.GetGLObjectNames(names);
+  }
 }
 
 //------------------------------------------------------------------------------

@@ -348,6 +348,9 @@ bool vtkClusteredLightingGPUResources::BuildAssignment(vtkOpenGLRenderWindow* rw
   this->FBO->SetContext(rw);
 
   bool ok = true;
+  // Nor the vertex array binding (vtkOpenGLVertexArrayObject::Release binds 0).
+  GLint vertexArray = 0;
+  glGetIntegerv(GL_VERTEX_ARRAY_BINDING, &vertexArray);
   state->PushFramebufferBindings();
   {
     vtkOpenGLState::ScopedglViewport savedViewport(state);
@@ -394,11 +397,18 @@ bool vtkClusteredLightingGPUResources::BuildAssignment(vtkOpenGLRenderWindow* rw
           program->SetUniform4f("clSlicing", parameters.Slicing);
           program->SetUniform2f("clDepthRange", parameters.DepthRange);
           this->BindVAO();
+          // vtkOpenGLState does not track the logic op: restore exactly what was set.
+          const GLboolean logicOp = glIsEnabled(GL_COLOR_LOGIC_OP);
+          GLint logicOpMode = GL_COPY;
+          glGetIntegerv(GL_LOGIC_OP_MODE, &logicOpMode);
           glEnable(GL_COLOR_LOGIC_OP);
           glLogicOp(GL_OR);
           glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, numberOfQuads);
-          glLogicOp(GL_COPY);
-          glDisable(GL_COLOR_LOGIC_OP);
+          glLogicOp(static_cast<GLenum>(logicOpMode));
+          if (!logicOp)
+          {
+            glDisable(GL_COLOR_LOGIC_OP);
+          }
           this->VAO->Release();
           this->LightView.Texture->Deactivate();
           this->Quads.Texture->Deactivate();
@@ -431,6 +441,7 @@ bool vtkClusteredLightingGPUResources::BuildAssignment(vtkOpenGLRenderWindow* rw
     this->FBO->UnBind();
   }
   state->PopFramebufferBindings();
+  glBindVertexArray(static_cast<GLuint>(vertexArray));
   return ok;
 }
 

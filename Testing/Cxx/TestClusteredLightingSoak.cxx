@@ -25,16 +25,17 @@
 //    memory moves in steps that are not leaks: glibc's arenas keep the high-water mark of
 //    their fragmentation (the light set and the textures are reallocated 8 times per
 //    period, at up to 4 MiB), and code pages of the libraries are faulted in as rarer
-//    paths first run. Measured on llvmpipe: -1.0 to +3.4 MiB between those windows in
-//    2,000-frame runs, and in a 6,000-frame run +3.3 MiB, reached by frame 1,800
-//    and flat from there to 6,000 (it converges; a leak would keep growing). 8 MiB is
-//    2.4 times that. A leak of 7 KiB per frame (light records of 110 lights) exceeds it.
+//    paths first run. Measured on llvmpipe in 10 runs of 2,000 frames: -1.0 to +3.8 MiB
+//    between those windows; in a 6,000-frame run +3.3 MiB, reached by frame 1,800 and
+//    flat from there to 6,000 (it converges; a leak would keep growing). 8 MiB is 2.1
+//    times the largest. A leak of 7 KiB per frame (light records of 110 lights) exceeds it.
 //  * Heap in use (glibc's mallinfo2: bytes allocated and not freed, blind to
 //    fragmentation): at most 128 KiB more at the end than after the warm-up, over 1,600
-//    frames (80 bytes per frame). Measured: +4 KiB per 200 frames, all of it from
-//    resizing the window, which grows by the same amount with no pass at all (stock VTK
-//    on Xlib without an interactor); with the window size fixed the heap is flat to the
-//    KiB. So a leak of one 128-byte block per frame (200 KiB) fails.
+//    frames (80 bytes per frame). Measured: +34 to +36 KiB, i.e. 4 KiB per 200 frames, all
+//    of it from resizing the window, which grows the heap by the same amount with no pass
+//    at all (stock VTK on Xlib without an interactor); with the window size fixed the
+//    heap grows by less than 0.2 KiB per 200 frames. A leak of one 128-byte block per
+//    frame (200 KiB) fails; a deliberate one of that size gave +274 KiB.
 //  GL objects leaked once per period are caught exactly by the census. Under
 //  AddressSanitizer (scripts/run-sanitizers.sh) the two memory checks are skipped: the
 //  allocator is ASan's (mallinfo2 does not see it) and freed blocks are held in its

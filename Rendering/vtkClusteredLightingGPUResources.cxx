@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkClusteredLightingGPUResources.h"
 
+#include "vtkCommand.h"
 #include "vtkOpenGLBufferObject.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -38,6 +39,36 @@ vtkClusteredLightingGPUResources::vtkClusteredLightingGPUResources() = default;
 vtkClusteredLightingGPUResources::~vtkClusteredLightingGPUResources()
 {
   this->ReleaseGraphicsResources(nullptr);
+  this->SetContext(nullptr);
+}
+
+//------------------------------------------------------------------------------
+// The window is watched so that its GL objects are released, in its own context, when it
+// is deleted, even if its renderer no longer uses the pass then (VTK only releases the
+// passes of the renderers it still holds, and vtkOpenGLBufferObject would later delete
+// its stale name in whatever context is current).
+void vtkClusteredLightingGPUResources::SetContext(vtkOpenGLRenderWindow* rw)
+{
+  if (this->Context == rw)
+  {
+    return;
+  }
+  if (this->Context && this->WindowObserver)
+  {
+    this->Context->RemoveObserver(this->WindowObserver);
+  }
+  this->WindowObserver = 0;
+  this->Context = rw;
+  if (rw)
+  {
+    this->WindowObserver = rw->AddObserver(
+      vtkCommand::DeleteEvent, this, &vtkClusteredLightingGPUResources::OnWindowDeleted);
+  }
+}
+
+void vtkClusteredLightingGPUResources::OnWindowDeleted()
+{
+  this->ReleaseGraphicsResources(this->Context);
 }
 
 //------------------------------------------------------------------------------
@@ -65,8 +96,19 @@ void vtkClusteredLightingGPUResources::Release(TextureBuffer& tb, vtkWindow* w)
 }
 
 //------------------------------------------------------------------------------
-void vtkClusteredLightingGPUResources::ReleaseGraphicsResources(vtkWindow* w)
+void vtkClusteredLightingGPUResources::ReleaseGraphicsResources(vtkWindow* win)
 {
+  // Make the objects' own context current: vtkOpenGLBufferObject and
+  // vtkOpenGLVertexArrayObject delete their names in whatever context is current (which
+  // may be another window's, with names of its own), and a null window (destructor)
+  // would otherwise leave them alive.
+  vtkOpenGLRenderWindow* w =
+    vtkOpenGLRenderWindow::SafeDownCast(win ? win : this->Context.GetPointer());
+  const bool push = w && this->GetNumberOfGLObjects() > 0;
+  if (push)
+  {
+    w->PushContext();
+  }
   Release(this->LightData, w);
   Release(this->LightView, w);
   Release(this->Quads, w);
@@ -101,8 +143,13 @@ void vtkClusteredLightingGPUResources::ReleaseGraphicsResources(vtkWindow* w)
     this->VAO = nullptr;
   }
   this->VAOCreated = false;
+  this->VAOName = 0;
   this->ListSize[0] = this->ListSize[1] = 0;
   this->MasterSize[0] = this->MasterSize[1] = 0;
+  if (push)
+  {
+    w->PopContext();
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -122,9 +169,42 @@ int vtkClusteredLightingGPUResources::GetNumberOfGLObjects() const
 }
 
 //------------------------------------------------------------------------------
+void vtkClusteredLightingGPUResources::GetGLObjectNames(
+  std::vector<std::pair<unsigned int, unsigned int>>& names) const
+{
+  for (const TextureBuffer* tb : { &this->LightData, &this->LightView, &this->Quads })
+  {
+    if (tb->Texture && tb->Texture->GetHandle())
+    {
+      names.emplace_back(GL_TEXTURE, tb->Texture->GetHandle());
+    }
+    if (tb->Buffer && tb->Buffer->GetHandle())
+    {
+      names.emplace_back(GL_BUFFER, static_cast<unsigned int>(tb->Buffer->GetHandle()));
+    }
+  }
+  for (vtkTextureObject* tex : { this->List, this->Master })
+  {
+    if (tex && tex->GetHandle())
+    {
+      names.emplace_back(GL_TEXTURE, tex->GetHandle());
+    }
+  }
+  if (this->FBO && this->FBO->GetFBOIndex())
+  {
+    names.emplace_back(GL_FRAMEBUFFER, this->FBO->GetFBOIndex());
+  }
+  if (this->VAO && this->VAOCreated)
+  {
+    names.emplace_back(GL_VERTEX_ARRAY, this->VAOName);
+  }
+}
+
+//------------------------------------------------------------------------------
 bool vtkClusteredLightingGPUResources::Upload(
   vtkOpenGLRenderWindow* rw, TextureBuffer& tb, const std::vector<float>& data)
 {
+  this->SetContext(rw);
   const std::size_t texels = data.size() / 4;
   if (texels == 0)
   {
@@ -200,6 +280,7 @@ vtkTextureObject* vtkClusteredLightingGPUResources::NewIntegerTexture(
 bool vtkClusteredLightingGPUResources::AllocateTextures(
   vtkOpenGLRenderWindow* rw, const ClusterTextureLayout& layout)
 {
+  this->SetContext(rw);
   if (!this->List || this->ListSize[0] != layout.ListWidth ||
     this->ListSize[1] != layout.ListHeight)
   {
@@ -225,6 +306,16 @@ bool vtkClusteredLightingGPUResources::AllocateTextures(
     this->MasterSize[1] = this->Master ? layout.MasterHeight : 0;
   }
   return this->List && this->Master;
+}
+
+//------------------------------------------------------------------------------
+void vtkClusteredLightingGPUResources::BindVAO()
+{
+  this->VAO->Bind();
+  this->VAOCreated = true;
+  GLint name = 0;
+  glGetIntegerv(GL_VERTEX_ARRAY_BINDING, &name);
+  this->VAOName = static_cast<unsigned int>(name);
 }
 
 //------------------------------------------------------------------------------
@@ -257,6 +348,9 @@ bool vtkClusteredLightingGPUResources::BuildAssignment(vtkOpenGLRenderWindow* rw
   this->FBO->SetContext(rw);
 
   bool ok = true;
+  // Nor the vertex array binding (vtkOpenGLVertexArrayObject::Release binds 0).
+  GLint vertexArray = 0;
+  glGetIntegerv(GL_VERTEX_ARRAY_BINDING, &vertexArray);
   state->PushFramebufferBindings();
   {
     vtkOpenGLState::ScopedglViewport savedViewport(state);
@@ -302,13 +396,19 @@ bool vtkClusteredLightingGPUResources::BuildAssignment(vtkOpenGLRenderWindow* rw
           program->SetUniform2f("clProjectionW", parameters.ProjectionW);
           program->SetUniform4f("clSlicing", parameters.Slicing);
           program->SetUniform2f("clDepthRange", parameters.DepthRange);
-          this->VAO->Bind();
-          this->VAOCreated = true;
+          this->BindVAO();
+          // vtkOpenGLState does not track the logic op: restore exactly what was set.
+          const GLboolean logicOp = glIsEnabled(GL_COLOR_LOGIC_OP);
+          GLint logicOpMode = GL_COPY;
+          glGetIntegerv(GL_LOGIC_OP_MODE, &logicOpMode);
           glEnable(GL_COLOR_LOGIC_OP);
           glLogicOp(GL_OR);
           glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, numberOfQuads);
-          glLogicOp(GL_COPY);
-          glDisable(GL_COLOR_LOGIC_OP);
+          glLogicOp(static_cast<GLenum>(logicOpMode));
+          if (!logicOp)
+          {
+            glDisable(GL_COLOR_LOGIC_OP);
+          }
           this->VAO->Release();
           this->LightView.Texture->Deactivate();
           this->Quads.Texture->Deactivate();
@@ -331,8 +431,7 @@ bool vtkClusteredLightingGPUResources::BuildAssignment(vtkOpenGLRenderWindow* rw
         vtkClusteredLightingSetUniform4i(program, "clGrid", grid);
         program->SetUniformi("clBatches", layout.Batches);
         program->SetUniformi("clMasterTexels", std::max(layout.MasterTexelsPerCluster, 1));
-        this->VAO->Bind();
-        this->VAOCreated = true;
+        this->BindVAO();
         glDrawArrays(GL_TRIANGLES, 0, 3);
         this->VAO->Release();
         this->List->Deactivate();
@@ -342,6 +441,7 @@ bool vtkClusteredLightingGPUResources::BuildAssignment(vtkOpenGLRenderWindow* rw
     this->FBO->UnBind();
   }
   state->PopFramebufferBindings();
+  glBindVertexArray(static_cast<GLuint>(vertexArray));
   return ok;
 }
 

@@ -23,8 +23,11 @@
 #define vtkClusteredLightingGPUResources_h
 
 #include "vtkClusteredLightingLayout.h" // for ClusterTextureLayout
+#include "vtkOpenGLRenderWindow.h"      // for vtkWeakPointer<vtkOpenGLRenderWindow>
+#include "vtkWeakPointer.h"             // for vtkWeakPointer
 
 #include <cstdint> // for std::uint32_t
+#include <utility> // for std::pair
 #include <vector>  // for std::vector
 
 class vtkOpenGLBufferObject;
@@ -86,11 +89,18 @@ public:
   /// Number of GL objects (textures, buffers, FBO, VAO) currently alive.
   int GetNumberOfGLObjects() const;
 
+  /// For tests: appends (kind, GL name) of every object currently alive, kind being
+  /// GL_TEXTURE, GL_BUFFER, GL_FRAMEBUFFER or GL_VERTEX_ARRAY.
+  void GetGLObjectNames(std::vector<std::pair<unsigned int, unsigned int>>& names) const;
+
   /// Bytes held by the light records, the list and the master texture.
   std::uint64_t GetLightBufferBytes() const;
   std::uint64_t GetListBytes() const;
   std::uint64_t GetMasterBytes() const;
 
+  /// Release every GL object, with the context of w (or, for a null w, of the window the
+  /// objects were made in, while it lives) made current for the duration: buffers and
+  /// VAOs are deleted in whatever context is current, which may belong to another window.
   void ReleaseGraphicsResources(vtkWindow* w);
 
 private:
@@ -107,6 +117,9 @@ private:
   static void Release(TextureBuffer& tb, vtkWindow* w);
   static vtkTextureObject* NewIntegerTexture(vtkOpenGLRenderWindow* rw, int w, int h);
   bool BindTarget(vtkTextureObject* tex);
+  void BindVAO();
+  void SetContext(vtkOpenGLRenderWindow* rw);
+  void OnWindowDeleted();
 
   TextureBuffer LightData;
   TextureBuffer LightView;
@@ -116,6 +129,9 @@ private:
   vtkOpenGLFramebufferObject* FBO = nullptr;
   vtkOpenGLVertexArrayObject* VAO = nullptr;
   bool VAOCreated = false;
+  unsigned int VAOName = 0;                      ///< for GetGLObjectNames
+  vtkWeakPointer<vtkOpenGLRenderWindow> Context; ///< window the GL objects belong to
+  unsigned long WindowObserver = 0;              ///< DeleteEvent observer on Context
   int ListSize[2] = { 0, 0 };
   int MasterSize[2] = { 0, 0 };
 };

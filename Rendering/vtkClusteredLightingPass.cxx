@@ -109,6 +109,17 @@ struct vtkClusteredLightingRendererState
 
 struct vtkClusteredLightingPass::vtkInternals
 {
+  // The steps of Render(), in order (a nested class sees the pass's options).
+  struct Frame;
+  void SetUpCamera(vtkClusteredLightingPass* self, Frame& f);
+  void PartitionRendererLights(vtkClusteredLightingPass* self, Frame& f);
+  void PrepareLightsIfChanged(vtkClusteredLightingPass* self, Frame& f);
+  void CheckLimits(vtkClusteredLightingPass* self, Frame& f);
+  void ComputeView(vtkClusteredLightingPass* self, Frame& f);
+  void UpdateAssignment(vtkClusteredLightingPass* self, Frame& f);
+  void UpdateShaderVariant(vtkClusteredLightingPass* self, Frame& f);
+  void RenderDelegate(vtkClusteredLightingPass* self, const vtkRenderState* s, Frame& f);
+
   std::vector<vtkSmartPointer<vtkClusteredLightSet>> LightSets;
   std::map<vtkRenderer*, std::unique_ptr<vtkClusteredLightingRendererState>> States;
   vtkClusteredLightingRendererState* Current = nullptr;
@@ -118,14 +129,14 @@ struct vtkClusteredLightingPass::vtkInternals
 
   vtkClusteredLightingRendererState* GetState(vtkRenderer* ren, vtkOpenGLRenderWindow* rw)
   {
-    // Forget renderers that were deleted (their window may still own the GL objects).
+    // Forget renderers that were deleted (their window may still own the GL objects;
+    // the release makes that window's context current and restores the current one).
     for (auto it = this->States.begin(); it != this->States.end();)
     {
       if (!it->second->Renderer)
       {
         if (it->second->Window)
         {
-          it->second->Window->MakeCurrent();
           it->second->GPU.ReleaseGraphicsResources(it->second->Window);
         }
         it = this->States.erase(it);
@@ -273,14 +284,34 @@ void vtkClusteredLightingPass::ReleaseGraphicsResources(vtkWindow* w)
 }
 
 //------------------------------------------------------------------------------
+// What one Render() works with, step to step.
+struct vtkClusteredLightingPass::vtkInternals::Frame
+{
+  vtkOpenGLRenderer* Renderer = nullptr;
+  vtkOpenGLRenderWindow* Window = nullptr;
+  vtkClusteredLightingRendererState* State = nullptr;
+  std::vector<vtkSmartPointer<vtkLight>> AllLights;   ///< the renderer's, in order
+  std::vector<vtkSmartPointer<vtkLight>> StockLights; ///< left to VTK's lighting code
+  std::vector<vtkLight*> ClusteredVTKLights;
+  ClusterTextureLayout Layout;
+  ViewParameters View;
+  bool Clustered = true;
+  bool Linear = false;
+  bool Enabled = false;
+  int ViewportOrigin[2] = { 0, 0 };
+};
+
+//------------------------------------------------------------------------------
 void vtkClusteredLightingPass::Render(const vtkRenderState* s)
 {
   this->NumberOfRenderedProps = 0;
   this->LastAssignmentUpdated = false;
-  vtkOpenGLRenderer* ren = vtkOpenGLRenderer::SafeDownCast(s->GetRenderer());
-  vtkOpenGLRenderWindow* rw =
-    ren ? vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow()) : nullptr;
-  if (!ren || !rw)
+  vtkInternals::Frame frame;
+  frame.Renderer = vtkOpenGLRenderer::SafeDownCast(s->GetRenderer());
+  frame.Window = frame.Renderer
+    ? vtkOpenGLRenderWindow::SafeDownCast(frame.Renderer->GetRenderWindow())
+    : nullptr;
+  if (!frame.Renderer || !frame.Window)
   {
     vtkErrorMacro("vtkClusteredLightingPass needs an OpenGL renderer and render window.");
     return;
@@ -290,45 +321,70 @@ void vtkClusteredLightingPass::Render(const vtkRenderState* s)
     vtkWarningMacro("No delegate pass: nothing is rendered.");
     return;
   }
-  vtkClusteredLightingRendererState* state = this->Internals->GetState(ren, rw);
-  this->Internals->Current = state;
+  frame.State = this->Internals->GetState(frame.Renderer, frame.Window);
+  frame.Clustered = this->ShadingMode == SHADING_CLUSTERED;
+  this->Internals->Current = frame.State;
 
-  // ---- 1. Camera and lights ---------------------------------------------------
-  // As VTK's own pipeline does before rendering (vtkCameraPass does not): set up the
-  // camera for this renderer, including its stereo state (otherwise every eye renders
-  // mono under a render pass in VTK 9.1).
-  this->UpdateCamera(ren);
-  // Camera lights and headlights follow the camera before they are read.
-  this->UpdateLightGeometry(ren);
-  vtkLightCollection* lights = ren->GetLights();
-  std::vector<vtkSmartPointer<vtkLight>> allLights, stockLights;
-  std::vector<vtkLight*> clusteredVTKLights;
-  bool anyOn = false;
+  this->Internals->SetUpCamera(this, frame);
+  this->Internals->PartitionRendererLights(this, frame);
+  this->Internals->PrepareLightsIfChanged(this, frame);
+  this->Internals->CheckLimits(this, frame);
+  this->Internals->ComputeView(this, frame);
+  this->Internals->UpdateAssignment(this, frame);
+  this->Internals->UpdateShaderVariant(this, frame);
+  this->Internals->RenderDelegate(this, s, frame);
+  this->Internals->Current = nullptr;
+}
+
+//------------------------------------------------------------------------------
+void vtkClusteredLightingPass::vtkInternals::SetUpCamera(vtkClusteredLightingPass* self, Frame& f)
+{
+  // VTK's pass-less pipeline sets the camera's stereo flag in vtkOpenGLCamera::Render;
+  // vtkCameraPass does not, so under a render pass every eye would render the same (mono)
+  // view. When the flag disagrees with the window, set the camera up as VTK's own
+  // pipeline does (viewport, scissor, clear and stereo flag).
+  if (f.Renderer->GetActiveCamera()->GetStereo() != f.Window->GetStereoRender())
   {
-    vtkCollectionSimpleIterator it;
-    vtkLight* light;
-    for (lights->InitTraversal(it); (light = lights->GetNextLight(it));)
+    self->UpdateCamera(f.Renderer);
+  }
+  // Camera lights and headlights follow the camera before they are read.
+  self->UpdateLightGeometry(f.Renderer);
+}
+
+//------------------------------------------------------------------------------
+void vtkClusteredLightingPass::vtkInternals::PartitionRendererLights(
+  vtkClusteredLightingPass* self, Frame& f)
+{
+  vtkLightCollection* lights = f.Renderer->GetLights();
+  vtkCollectionSimpleIterator it;
+  vtkLight* light;
+  bool anyOn = false;
+  for (lights->InitTraversal(it); (light = lights->GetNextLight(it));)
+  {
+    anyOn = anyOn || light->GetSwitch();
+  }
+  if (!anyOn && f.Renderer->GetAutomaticLightCreation())
+  {
+    f.Renderer->CreateLight(); // what VTK would do in UpdateLights
+  }
+  for (lights->InitTraversal(it); (light = lights->GetNextLight(it));)
+  {
+    f.AllLights.emplace_back(light);
+    if (self->ClusterRendererLights && light->GetSwitch() && light->GetPositional())
     {
-      anyOn = anyOn || light->GetSwitch();
+      f.ClusteredVTKLights.push_back(light);
     }
-    if (!anyOn && ren->GetAutomaticLightCreation())
+    else
     {
-      ren->CreateLight(); // what VTK would do in UpdateLights
-    }
-    for (lights->InitTraversal(it); (light = lights->GetNextLight(it));)
-    {
-      allLights.emplace_back(light);
-      if (this->ClusterRendererLights && light->GetSwitch() && light->GetPositional())
-      {
-        clusteredVTKLights.push_back(light);
-      }
-      else
-      {
-        stockLights.emplace_back(light);
-      }
+      f.StockLights.emplace_back(light);
     }
   }
+}
 
+//------------------------------------------------------------------------------
+void vtkClusteredLightingPass::vtkInternals::PrepareLightsIfChanged(
+  vtkClusteredLightingPass* self, Frame& f)
+{
   // Signature of everything the prepared lights depend on.
   std::vector<vtkTypeUInt64> signature;
   auto bits = [](double v)
@@ -337,11 +393,11 @@ void vtkClusteredLightingPass::Render(const vtkRenderState* s)
     std::memcpy(&u, &v, sizeof(u));
     return u;
   };
-  signature.push_back(bits(this->Cutoff));
-  signature.push_back(bits(this->ErrorBudget));
-  signature.push_back(this->ErrorBudget > 0.0 ? static_cast<vtkTypeUInt64>(this->Falloff) : 0u);
-  signature.push_back(this->MortonOrder ? 1 : 0);
-  for (vtkLight* l : clusteredVTKLights)
+  signature.push_back(bits(self->Cutoff));
+  signature.push_back(bits(self->ErrorBudget));
+  signature.push_back(self->ErrorBudget > 0.0 ? static_cast<vtkTypeUInt64>(self->Falloff) : 0u);
+  signature.push_back(self->MortonOrder ? 1 : 0);
+  for (vtkLight* l : f.ClusteredVTKLights)
   {
     vtkMTimeType t = l->GetMTime();
     if (l->GetTransformMatrix())
@@ -351,18 +407,17 @@ void vtkClusteredLightingPass::Render(const vtkRenderState* s)
     signature.push_back(reinterpret_cast<vtkTypeUInt64>(l));
     signature.push_back(t);
   }
-  for (const auto& set : this->Internals->LightSets)
+  for (const auto& set : this->LightSets)
   {
     set->UpdateLights(); // a set fed by a pipeline reads its input here
     signature.push_back(reinterpret_cast<vtkTypeUInt64>(set.Get()));
     signature.push_back(set->GetEnabled() ? set->GetMTime() : 0);
   }
-  if (signature != state->LightSignature)
+  if (signature != f.State->LightSignature)
   {
-    state->LightSignature = signature;
+    f.State->LightSignature = signature;
     std::vector<LightSource> sources;
-    std::vector<std::string> names; // filled lazily: only for messages
-    for (vtkLight* l : clusteredVTKLights)
+    for (vtkLight* l : f.ClusteredVTKLights)
     {
       LightSource src;
       const double* p = l->GetTransformedPosition();
@@ -380,7 +435,7 @@ void vtkClusteredLightingPass::Render(const vtkRenderState* s)
     }
     const std::size_t firstSetLight = sources.size();
     std::vector<std::pair<vtkClusteredLightSet*, vtkIdType>> setOf;
-    for (const auto& set : this->Internals->LightSets)
+    for (const auto& set : this->LightSets)
     {
       if (!set->GetEnabled())
       {
@@ -413,7 +468,7 @@ void vtkClusteredLightingPass::Render(const vtkRenderState* s)
       std::ostringstream os;
       if (i < firstSetLight)
       {
-        os << "vtkLight " << clusteredVTKLights[i] << " (renderer light " << i << ")";
+        os << "vtkLight " << f.ClusteredVTKLights[i] << " (renderer light " << i << ")";
       }
       else
       {
@@ -423,55 +478,56 @@ void vtkClusteredLightingPass::Render(const vtkRenderState* s)
       return os.str();
     };
     LightPreparationOptions options;
-    options.Cutoff = this->Cutoff;
-    options.MortonOrder = this->MortonOrder;
-    if (this->ErrorBudget > 0.0)
+    options.Cutoff = self->Cutoff;
+    options.MortonOrder = self->MortonOrder;
+    if (self->ErrorBudget > 0.0)
     {
       // Validate once, then pick the cutoff that meets the budget (see the header).
       LightPreparationOptions probe = options;
       probe.MortonOrder = false;
       const PreparedLights valid = PrepareLights(sources, probe, nameOf);
-      options.Cutoff = ChooseCutoffForErrorBudget(valid.Lights, this->ErrorBudget,
-        ComputeErrorBudgetSamples(valid.Lights), this->Falloff == FALLOFF_WINDOWED);
+      options.Cutoff = ChooseCutoffForErrorBudget(valid.Lights, self->ErrorBudget,
+        ComputeErrorBudgetSamples(valid.Lights),
+        self->Falloff == vtkClusteredLightingPass::FALLOFF_WINDOWED);
     }
-    state->EffectiveCutoff = options.Cutoff;
-    state->Prepared = PrepareLights(sources, options, nameOf);
+    f.State->EffectiveCutoff = options.Cutoff;
+    f.State->Prepared = PrepareLights(sources, options, nameOf);
     // Warn once per problem: a bad light stays reported while it stays bad, even when
     // other lights change every frame.
     std::set<std::string> problems(
-      state->Prepared.Problems.begin(), state->Prepared.Problems.end());
+      f.State->Prepared.Problems.begin(), f.State->Prepared.Problems.end());
     for (const std::string& problem : problems)
     {
-      if (!state->ReportedProblems.count(problem))
+      if (!f.State->ReportedProblems.count(problem))
       {
-        vtkWarningMacro(<< problem);
+        vtkWarningWithObjectMacro(self, << problem);
       }
     }
-    state->ReportedProblems.swap(problems);
-    ++state->LightsVersion;
-    state->LightDataUploaded = false;
+    f.State->ReportedProblems.swap(problems);
+    ++f.State->LightsVersion;
+    f.State->LightDataUploaded = false;
   }
-  const PreparedLights& prepared = state->Prepared;
-  this->EffectiveCutoff = state->EffectiveCutoff;
+  const PreparedLights& prepared = f.State->Prepared;
+  self->EffectiveCutoff = f.State->EffectiveCutoff;
   const int numberOfLights = static_cast<int>(prepared.Lights.size());
-  this->NumberOfClusteredLights = numberOfLights;
-  this->NumberOfRejectedLights = static_cast<int>(prepared.Problems.size());
-  this->NumberOfAlwaysOnLights = static_cast<int>(prepared.NumberOfAlwaysOn);
-  this->NumberOfLightsBelowCutoff = static_cast<int>(prepared.NumberOfBelowCutoff);
-  this->NumberOfSpotLights = static_cast<int>(prepared.NumberOfSpots);
+  self->NumberOfClusteredLights = numberOfLights;
+  self->NumberOfRejectedLights = static_cast<int>(prepared.Problems.size());
+  self->NumberOfAlwaysOnLights = static_cast<int>(prepared.NumberOfAlwaysOn);
+  self->NumberOfLightsBelowCutoff = static_cast<int>(prepared.NumberOfBelowCutoff);
+  self->NumberOfSpotLights = static_cast<int>(prepared.NumberOfSpots);
+}
 
-  // ---- 2. Limits --------------------------------------------------------------
-  const bool clustered = this->ShadingMode == SHADING_CLUSTERED;
-  bool enabled = numberOfLights > 0;
-  int width = 0, height = 0, originX = 0, originY = 0;
-  ren->GetTiledSizeAndOrigin(&width, &height, &originX, &originY);
-  ClusterTextureLayout layout;
-  if (enabled)
+//------------------------------------------------------------------------------
+void vtkClusteredLightingPass::vtkInternals::CheckLimits(vtkClusteredLightingPass* self, Frame& f)
+{
+  const int numberOfLights = static_cast<int>(f.State->Prepared.Lights.size());
+  f.Enabled = numberOfLights > 0;
+  if (f.Enabled)
   {
-    int maxTexture = vtkTextureObject::GetMaximumTextureSize(rw);
-    if (this->MaximumTextureSize > 0)
+    int maxTexture = vtkTextureObject::GetMaximumTextureSize(f.Window);
+    if (self->MaximumTextureSize > 0)
     {
-      maxTexture = std::min(maxTexture, this->MaximumTextureSize);
+      maxTexture = std::min(maxTexture, self->MaximumTextureSize);
     }
     GLint maxBuffer = 0;
     glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxBuffer);
@@ -485,40 +541,45 @@ void vtkClusteredLightingPass::Render(const vtkRenderState* s)
       error = os.str();
       ok = false;
     }
-    else if (clustered)
+    else if (f.Clustered)
     {
       ok = ComputeLayout(
-        this->TilesX, this->TilesY, this->Slices, numberOfLights, maxTexture, layout, &error);
+        self->TilesX, self->TilesY, self->Slices, numberOfLights, maxTexture, f.Layout, &error);
     }
     if (!ok)
     {
-      if (error != state->LayoutError)
+      if (error != f.State->LayoutError)
       {
-        vtkErrorMacro("Clustered lights are not rendered: " << error << ".");
+        vtkErrorWithObjectMacro(self, "Clustered lights are not rendered: " << error << ".");
       }
-      state->LayoutError = error;
-      enabled = false;
+      f.State->LayoutError = error;
+      f.Enabled = false;
     }
     else
     {
-      state->LayoutError.clear();
+      f.State->LayoutError.clear();
     }
   }
 
-  // ---- 3. Upload light records (only when the lights changed) -----------------
-  if (enabled && !state->LightDataUploaded)
+  // Light records are uploaded only when the lights changed.
+  if (f.Enabled && !f.State->LightDataUploaded)
   {
-    state->GPU.UploadLightData(rw, PackLightData(prepared.Lights));
-    state->LightDataUploaded = true;
-    ++this->NumberOfLightUploads;
+    f.State->GPU.UploadLightData(f.Window, PackLightData(f.State->Prepared.Lights));
+    f.State->LightDataUploaded = true;
+    ++self->NumberOfLightUploads;
   }
+}
 
-  // ---- 4. View: records in VC and assignment (only when something changed) ----
-  vtkCamera* camera = ren->GetActiveCamera();
+//------------------------------------------------------------------------------
+void vtkClusteredLightingPass::vtkInternals::ComputeView(vtkClusteredLightingPass* self, Frame& f)
+{
+  vtkCamera* camera = f.Renderer->GetActiveCamera();
+  int width = 0, height = 0;
+  f.Renderer->GetTiledSizeAndOrigin(&width, &height, &f.ViewportOrigin[0], &f.ViewportOrigin[1]);
   const bool parallel = camera->GetParallelProjection() != 0;
   double range[2];
   camera->GetClippingRange(range);
-  ViewParameters view;
+  ViewParameters& view = f.View;
   if (vtkOpenGLCamera* glCamera = vtkOpenGLCamera::SafeDownCast(camera))
   {
     // Exactly the matrices the mappers will use (VTK caches them per camera and renderer;
@@ -527,41 +588,55 @@ void vtkClusteredLightingPass::Render(const vtkRenderState* s)
     vtkMatrix3x3* normals = nullptr;
     vtkMatrix4x4* vcdc = nullptr;
     vtkMatrix4x4* wcdc = nullptr;
-    glCamera->GetKeyMatrices(ren, wcvc, normals, vcdc, wcdc);
+    glCamera->GetKeyMatrices(f.Renderer, wcvc, normals, vcdc, wcdc);
     view.WCVC = glm::transpose(ToGLM(wcvc));
     view.VCDC = glm::transpose(ToGLM(vcdc));
   }
   else
   {
     view.WCVC = ToGLM(camera->GetModelViewTransformMatrix());
-    view.VCDC = ToGLM(camera->GetProjectionTransformMatrix(ren->GetTiledAspectRatio(), -1, 1));
+    view.VCDC =
+      ToGLM(camera->GetProjectionTransformMatrix(f.Renderer->GetTiledAspectRatio(), -1, 1));
   }
-  view.Grid.TilesX = this->TilesX;
-  view.Grid.TilesY = this->TilesY;
-  view.Grid.Slices = this->Slices;
+  view.Grid.TilesX = self->TilesX;
+  view.Grid.TilesY = self->TilesY;
+  view.Grid.Slices = self->Slices;
   view.Grid.ViewportWidth = std::max(width, 1);
   view.Grid.ViewportHeight = std::max(height, 1);
   view.Grid.NearVC = range[0];
   view.Grid.FarVC = range[1];
   SanitizeDepthRange(view.Grid.NearVC, view.Grid.FarVC);
-  const bool linear =
-    this->SlicingScheme == SLICING_LINEAR || (this->SlicingScheme == SLICING_AUTO && parallel);
-  view.Grid.Scheme = linear ? SlicingScheme::Linear : SlicingScheme::Exponential;
-  view.Bounds = this->BoundsMethod == BOUNDS_CENTER_DEPTH_QUAD ? BoundsMethod::CenterDepthQuad
-                                                               : BoundsMethod::Tangent;
+  f.Linear = self->SlicingScheme == vtkClusteredLightingPass::SLICING_LINEAR ||
+    (self->SlicingScheme == vtkClusteredLightingPass::SLICING_AUTO && parallel);
+  view.Grid.Scheme = f.Linear ? SlicingScheme::Linear : SlicingScheme::Exponential;
+  view.Bounds = self->BoundsMethod == vtkClusteredLightingPass::BOUNDS_CENTER_DEPTH_QUAD
+    ? BoundsMethod::CenterDepthQuad
+    : BoundsMethod::Tangent;
+}
+
+//------------------------------------------------------------------------------
+// The list and master passes run only when lights, camera, viewport or grid changed.
+void vtkClusteredLightingPass::vtkInternals::UpdateAssignment(
+  vtkClusteredLightingPass* self, Frame& f)
+{
+  const ViewParameters& view = f.View;
+  vtkClusteredLightingRendererState* state = f.State;
+  vtkOpenGLRenderWindow* rw = f.Window;
+  const ClusterTextureLayout& layout = f.Layout;
+  const PreparedLights& prepared = state->Prepared;
   std::vector<double> viewSignature(&view.WCVC[0][0], &view.WCVC[0][0] + 16);
   viewSignature.insert(viewSignature.end(), &view.VCDC[0][0], &view.VCDC[0][0] + 16);
   const double more[] = { double(view.Grid.TilesX), double(view.Grid.TilesY),
     double(view.Grid.Slices), double(view.Grid.ViewportWidth), double(view.Grid.ViewportHeight),
-    view.Grid.NearVC, view.Grid.FarVC, double(linear), double(this->BoundsMethod),
-    double(state->LightsVersion), double(clustered), double(enabled),
-    double(this->PerClusterCulling) };
+    view.Grid.NearVC, view.Grid.FarVC, double(f.Linear), double(self->BoundsMethod),
+    double(state->LightsVersion), double(f.Clustered), double(f.Enabled),
+    double(self->PerClusterCulling) };
   viewSignature.insert(viewSignature.end(), std::begin(more), std::end(more));
 
-  if (enabled && (viewSignature != state->ViewSignature || !state->AssignmentValid))
+  if (f.Enabled && (viewSignature != state->ViewSignature || !state->AssignmentValid))
   {
     const auto t0 = std::chrono::steady_clock::now();
-    if (this->MeasureTimings)
+    if (self->MeasureTimings)
     {
       glFinish();
     }
@@ -569,13 +644,13 @@ void vtkClusteredLightingPass::Render(const vtkRenderState* s)
     ViewData data = ComputeViewData(prepared.Lights, view);
     state->GPU.UploadLightView(rw, data.LightView);
     bool ok = true;
-    if (clustered)
+    if (f.Clustered)
     {
       state->GPU.UploadQuads(rw, data.Quads);
       vtkClusteredLightingListPassParameters listPass;
       const glm::dmat4& P = view.VCDC;
       // Per-cluster culling unprojects tile edges; it needs VTK's usual projection form.
-      listPass.CullClusters = this->PerClusterCulling && P[1][0] == 0.0 && P[0][1] == 0.0 &&
+      listPass.CullClusters = self->PerClusterCulling && P[1][0] == 0.0 && P[0][1] == 0.0 &&
         P[0][3] == 0.0 && P[1][3] == 0.0;
       const float px[3] = { float(P[0][0]), float(P[2][0]), float(P[3][0]) };
       const float py[3] = { float(P[1][1]), float(P[2][1]), float(P[3][1]) };
@@ -595,16 +670,17 @@ void vtkClusteredLightingPass::Render(const vtkRenderState* s)
         state->GPU.BuildAssignment(rw, layout, data.NumberOfQuads, listPass);
       if (!ok)
       {
-        vtkErrorMacro("Could not allocate or fill the cluster textures ("
-          << layout.ListWidth << "x" << layout.ListHeight << " R32UI).");
+        vtkErrorWithObjectMacro(self,
+          "Could not allocate or fill the cluster textures (" << layout.ListWidth << "x"
+                                                              << layout.ListHeight << " R32UI).");
       }
     }
-    if (this->MeasureTimings)
+    if (self->MeasureTimings)
     {
       glFinish();
     }
     const auto t2 = std::chrono::steady_clock::now();
-    this->LastAssignmentTime = this->MeasureTimings ? Milliseconds(t1, t2) : Milliseconds(t0, t2);
+    self->LastAssignmentTime = self->MeasureTimings ? Milliseconds(t1, t2) : Milliseconds(t0, t2);
     state->NumberOfQuads = data.NumberOfQuads;
     state->NumberOfAssignedLights = data.NumberOfAssignedLights;
     state->AssignmentValid = ok;
@@ -615,78 +691,88 @@ void vtkClusteredLightingPass::Render(const vtkRenderState* s)
     state->Frame.Grid = view.Grid;
     state->Frame.WCVC = view.WCVC;
     state->Frame.VCDC = view.VCDC;
-    state->Frame.ViewportOrigin[0] = originX;
-    state->Frame.ViewportOrigin[1] = originY;
+    state->Frame.ViewportOrigin[0] = f.ViewportOrigin[0];
+    state->Frame.ViewportOrigin[1] = f.ViewportOrigin[1];
     state->Frame.Layout = layout;
     state->Frame.LightsVC = std::move(data.LightsVC);
     state->Frame.Lights = prepared.Lights;
     state->Frame.NumberOfQuads = data.NumberOfQuads;
-    this->LastAssignmentUpdated = true;
-    ++this->NumberOfAssignmentUpdates;
+    self->LastAssignmentUpdated = true;
+    ++self->NumberOfAssignmentUpdates;
   }
-  enabled = enabled && state->AssignmentValid;
-  this->NumberOfAssignedLights = enabled ? state->NumberOfAssignedLights : 0;
-  this->ListTextureBytes = state->GPU.GetListBytes();
-  this->MasterTextureBytes = state->GPU.GetMasterBytes();
-  this->LightBufferBytes = state->GPU.GetLightBufferBytes();
+  f.Enabled = f.Enabled && state->AssignmentValid;
+  self->NumberOfAssignedLights = f.Enabled ? state->NumberOfAssignedLights : 0;
+  self->ListTextureBytes = state->GPU.GetListBytes();
+  self->MasterTextureBytes = state->GPU.GetMasterBytes();
+  self->LightBufferBytes = state->GPU.GetLightBufferBytes();
+}
 
-  // ---- 5. Shader variant (global part) -----------------------------------------
+//------------------------------------------------------------------------------
+void vtkClusteredLightingPass::vtkInternals::UpdateShaderVariant(
+  vtkClusteredLightingPass* self, Frame& f)
+{
+  // The global part of the variant; the actor's part is decided in the shader hooks.
   vtkClusteredLightingShaderVariant variant;
-  variant.Enabled = enabled;
-  variant.Clustered = clustered;
-  variant.Spot = prepared.NumberOfSpots > 0;
-  variant.Window = this->Falloff == FALLOFF_WINDOWED;
-  variant.LinearSlices = linear;
-  variant.MasterTexels = std::max(layout.MasterTexelsPerCluster, 1);
-  variant.DebugView = this->DebugView;
-  if (!variant.SameGlobalPart(this->Internals->Variant))
+  variant.Enabled = f.Enabled;
+  variant.Clustered = f.Clustered;
+  variant.Spot = f.State->Prepared.NumberOfSpots > 0;
+  variant.Window = self->Falloff == vtkClusteredLightingPass::FALLOFF_WINDOWED;
+  variant.LinearSlices = f.Linear;
+  variant.MasterTexels = std::max(f.Layout.MasterTexelsPerCluster, 1);
+  variant.DebugView = self->DebugView;
+  if (!variant.SameGlobalPart(this->Variant))
   {
-    this->Internals->Variant = variant;
-    this->Internals->ShaderStageTime.Modified();
+    this->Variant = variant;
+    this->ShaderStageTime.Modified();
   }
+}
 
-  // ---- 6. Shade: delegate render with the clustered lights hidden from VTK ------
-  if (enabled)
+//------------------------------------------------------------------------------
+// Renders the delegate with the clustered lights hidden from VTK's lighting code.
+void vtkClusteredLightingPass::vtkInternals::RenderDelegate(
+  vtkClusteredLightingPass* self, const vtkRenderState* s, Frame& f)
+{
+  vtkLightCollection* lights = f.Renderer->GetLights();
+  if (f.Enabled)
   {
     lights->RemoveAllItems();
     bool stockOn = false;
-    for (const auto& l : stockLights)
+    for (const auto& l : f.StockLights)
     {
       lights->AddItem(l);
       stockOn = stockOn || l->GetSwitch();
     }
     if (!stockOn)
     {
-      lights->AddItem(this->Internals->PlaceholderLight);
+      lights->AddItem(this->PlaceholderLight);
     }
-    state->GPU.ActivateShadingTextures(clustered);
+    f.State->GPU.ActivateShadingTextures(f.Clustered);
   }
   const auto s0 = std::chrono::steady_clock::now();
-  if (this->MeasureTimings)
+  if (self->MeasureTimings)
   {
     glFinish();
   }
   const auto s1 = std::chrono::steady_clock::now();
-  this->PreRender(s);
-  this->DelegatePass->Render(s);
-  this->NumberOfRenderedProps += this->DelegatePass->GetNumberOfRenderedProps();
-  this->PostRender(s);
-  if (this->MeasureTimings)
+  self->PreRender(s);
+  self->DelegatePass->Render(s);
+  self->NumberOfRenderedProps += self->DelegatePass->GetNumberOfRenderedProps();
+  self->PostRender(s);
+  if (self->MeasureTimings)
   {
     glFinish();
   }
   const auto s2 = std::chrono::steady_clock::now();
-  this->LastShadingTime = this->MeasureTimings ? Milliseconds(s1, s2) : Milliseconds(s0, s2);
-  if (enabled)
+  self->LastShadingTime = self->MeasureTimings ? Milliseconds(s1, s2) : Milliseconds(s0, s2);
+  if (f.Enabled)
   {
-    state->GPU.DeactivateShadingTextures();
+    f.State->GPU.DeactivateShadingTextures();
     lights->RemoveAllItems();
-    for (const auto& l : allLights)
+    for (const auto& l : f.AllLights)
     {
       lights->AddItem(l);
     }
   }
-  this->Internals->Current = nullptr;
 }
 
 //------------------------------------------------------------------------------
@@ -840,6 +926,16 @@ const vtkClusteredLightingFrameState* vtkClusteredLightingPass::GetFrameState(
 {
   auto it = this->Internals->States.find(renderer);
   return it == this->Internals->States.end() ? nullptr : &it->second->Frame;
+}
+
+//------------------------------------------------------------------------------
+void vtkClusteredLightingPass::GetGLObjectNames(
+  std::vector<std::pair<unsigned int, unsigned int>>& names) const
+{
+  for (const auto& it : this->Internals->States)
+  {
+    it.second->GPU.GetGLObjectNames(names);
+  }
 }
 
 //------------------------------------------------------------------------------

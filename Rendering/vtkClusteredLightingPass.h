@@ -65,6 +65,7 @@
 
 #include <cstdint> // for std::uint32_t
 #include <memory>  // for std::unique_ptr
+#include <utility> // for std::pair
 #include <vector>  // for std::vector
 
 class vtkClusteredLightSet;
@@ -354,6 +355,12 @@ public:
    * lights in view coordinates). See vtkClusteredLightingFrameState.h. Null if none.
    */
   const vtkClusteredLightingFrameState* GetFrameState(vtkRenderer* renderer) const;
+
+  /**
+   * For tests: (kind, GL name) of every GL object the pass holds, for all renderers; kind
+   * is GL_TEXTURE, GL_BUFFER, GL_FRAMEBUFFER or GL_VERTEX_ARRAY.
+   */
+  void GetGLObjectNames(std::vector<std::pair<unsigned int, unsigned int>>& names) const;
 #endif
 
 protected:

@@ -9,6 +9,7 @@ pkgs=(
   libpython3-dev                    # Python wrapping (headers; also pulled in by libvtk9-dev)
   libglm-dev                        # GL-free math core
   libgtest-dev googletest           # core unit tests
+  clang-tidy                        # lint of the GL-free core (scripts/run-clang-tidy.sh)
   xvfb xauth                        # every render runs under xvfb-run
   libgl1-mesa-dri mesa-utils        # llvmpipe
   glmark2-data                      # Stanford bunny (bunny.obj)

@@ -32,6 +32,7 @@
 
 #include <algorithm> // for std::clamp
 #include <cmath>     // for std::log
+#include <limits>    // for std::numeric_limits
 
 namespace vtkClusteredLighting
 {
@@ -71,16 +72,22 @@ struct ClusterGridParams
 };
 
 /// Sanitize near/far so that slicing is always well defined (NearVC > 0, FarVC > NearVC).
+/// The shaders get near, far and 1/near as 32-bit floats, so the range is also clamped to
+/// [2/FLT_MAX, FLT_MAX]: 1/near and far stay finite there (a wider range cannot be
+/// rendered in float anyway), and far = 2 near cannot overflow.
 inline void SanitizeDepthRange(double& nearVC, double& farVC)
 {
+  const double floatMax = static_cast<double>(std::numeric_limits<float>::max());
   if (!(nearVC > 0.0) || !std::isfinite(nearVC))
   {
     nearVC = 1e-6;
   }
+  nearVC = std::clamp(nearVC, 2.0 / floatMax, 0.5 * floatMax);
   if (!(farVC > nearVC) || !std::isfinite(farVC))
   {
     farVC = nearVC * 2.0;
   }
+  farVC = std::min(farVC, floatMax);
 }
 
 /// Continuous slice coordinate (before flooring and clamping). Monotonic in depth.
@@ -159,10 +166,14 @@ inline int ComputeClusterId(int tx, int ty, int s, const ClusterGridParams& grid
  * Uniform values for the GLSL mirror clComputeSliceIndex(depth):
  *   exponential: s = floor(log(depth * P[0]) * P[1])   (depth <= NearVC -> 0)
  *   linear:      s = floor((depth - P[2]) * P[1])
- * P[3] is 0 for exponential and 1 for linear.
+ * P[3] is 0 for exponential and 1 for linear. The values are uploaded as 32-bit floats:
+ * they are clamped to the finite float range, so that a degenerate range (far/near
+ * rounding to 1, or a linear range thinner than float precision) gives a huge but finite
+ * factor instead of Inf (Inf times 0 is NaN in the shader).
  */
 inline void ComputeSliceShaderParameters(const ClusterGridParams& grid, double p[4])
 {
+  const double floatMax = static_cast<double>(std::numeric_limits<float>::max());
   if (grid.Scheme == SlicingScheme::Linear)
   {
     p[0] = 1.0 / grid.NearVC;
@@ -176,6 +187,10 @@ inline void ComputeSliceShaderParameters(const ClusterGridParams& grid, double p
     p[1] = grid.Slices / std::log(grid.FarVC / grid.NearVC);
     p[2] = grid.NearVC;
     p[3] = 0.0;
+  }
+  for (int k = 0; k < 3; ++k)
+  {
+    p[k] = std::isnan(p[k]) ? 0.0 : std::clamp(p[k], -floatMax, floatMax);
   }
 }
 

@@ -40,9 +40,10 @@
 
 #include "vtkClusteredLightingGrid.h"
 
-#include <cstdint>
-#include <sstream> // for std::ostringstream
-#include <string>  // for std::string
+#include <algorithm> // for std::min
+#include <cstdint>   // for std::int64_t
+#include <sstream>   // for std::ostringstream
+#include <string>    // for std::string
 
 namespace vtkClusteredLighting
 {
@@ -122,11 +123,10 @@ inline std::int64_t ComputeMaximumNumberOfLights(
   }
   const std::int64_t rows = maxTextureSize / tilesY;
   const std::int64_t cols = maxTextureSize / (static_cast<std::int64_t>(tilesX) * slices);
-  const std::int64_t byList = rows * cols * LightsPerBatch;
-  // master: Y * M <= max  ->  M <= max / Y
-  const std::int64_t byMaster =
-    static_cast<std::int64_t>(maxTextureSize / tilesY) * BatchesPerMaster * LightsPerBatch;
-  return std::min(byList, byMaster);
+  // list: rows * cols batches; master: Y * M <= max  ->  M <= rows, i.e. 32 * rows batches.
+  // min(rows * cols, 32 * rows) = rows * min(cols, 32): no 64-bit overflow (rows * cols
+  // * 32 overflowed for a 1x1x1 grid and maxTextureSize near INT_MAX).
+  return rows * std::min<std::int64_t>(cols, BatchesPerMaster) * LightsPerBatch;
 }
 
 /**
@@ -149,7 +149,9 @@ inline bool ComputeLayout(int tilesX, int tilesY, int slices, int n, int maxText
     }
     return false;
   }
-  layout.Batches = (n + LightsPerBatch - 1) / LightsPerBatch;
+  // In 64 bits: n + 31 overflows an int for n near INT_MAX.
+  layout.Batches =
+    static_cast<int>((static_cast<std::int64_t>(n) + LightsPerBatch - 1) / LightsPerBatch);
   layout.MasterTexelsPerCluster = (layout.Batches + BatchesPerMaster - 1) / BatchesPerMaster;
   const std::int64_t rowWidth = static_cast<std::int64_t>(tilesX) * slices;
   const std::int64_t maxRows = maxTextureSize / tilesY;

@@ -26,15 +26,17 @@
  * material coefficients scale it (Diffuse + Specular <= 1 keeps the bound).
  *
  * Invalid input (non-finite or negative values, attenuation that is negative, non-finite
- * or all zero, a spot without a direction) is reported per light with a message naming
- * it; such a light is skipped and no other light is affected.
+ * or all zero, a spot without a direction, values the GPU's 32-bit floats cannot hold) is
+ * reported per light with a message naming it; such a light is skipped and no other
+ * light is affected.
  */
 #ifndef vtkClusteredLightingLights_h
 #define vtkClusteredLightingLights_h
 
 #include "vtkClusteredLightingMorton.h"
 
-#include <cmath> // for std::isfinite
+#include <algorithm> // for std::max
+#include <cmath>     // for std::isfinite
 #include <cstdint>
 #include <functional> // for std::function
 #include <glm/glm.hpp>
@@ -125,7 +127,11 @@ inline double ComputeInfluenceRadius(double peak, const glm::dvec3& att, double 
   {
     return std::numeric_limits<double>::infinity();
   }
-  return 2.0 * excess / (att.y + std::sqrt(att.y * att.y + 4.0 * att.z * excess));
+  // 2 e / (a1 + sqrt(a1^2 + 4 a2 e)) written so that no intermediate overflows: a1^2,
+  // 4 a2 e and 2 e overflow for huge but finite input, which gave Inf/Inf = NaN (or a
+  // radius of 0). A result beyond the double range is +inf: the light is always on.
+  const double root = std::hypot(att.y, 2.0 * std::sqrt(att.z) * std::sqrt(excess));
+  return excess / (0.5 * att.y + 0.5 * root);
 }
 
 namespace Detail
@@ -133,6 +139,13 @@ namespace Detail
 inline bool IsFinite(const glm::dvec3& v)
 {
   return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+/// Whether every component survives the conversion to the GPU's 32-bit floats (|v| <=
+/// FLT_MAX; larger values become Inf there, and Inf times 0 is NaN in the shader).
+inline bool FitsInFloat(const glm::dvec3& v)
+{
+  const double m = static_cast<double>(std::numeric_limits<float>::max());
+  return std::abs(v.x) <= m && std::abs(v.y) <= m && std::abs(v.z) <= m;
 }
 inline std::string ToString(const glm::dvec3& v)
 {
@@ -179,13 +192,23 @@ inline std::string ValidateLightSource(const LightSource& l, const std::string& 
   {
     os << who << ": radius " << l.Radius << " is negative or NaN";
   }
+  else if (!Detail::FitsInFloat(l.Color * l.Intensity) || !Detail::FitsInFloat(l.Attenuation) ||
+    std::max(l.Attenuation.x, std::max(l.Attenuation.y, l.Attenuation.z)) <
+      static_cast<double>(std::numeric_limits<float>::min()))
+  {
+    os << who << ": color x intensity " << Detail::ToString(l.Color * l.Intensity)
+       << " or attenuation " << Detail::ToString(l.Attenuation)
+       << " is outside the range of the GPU's 32-bit floats (magnitudes above 3.4e38 become "
+          "Inf, an attenuation whose coefficients are all below 1.2e-38 becomes 0)";
+  }
   else if (l.HasRadius && std::isinf(l.Radius))
   {
     os << who << ": radius is infinite (unset the radius to derive it from the attenuation)";
   }
   else if (l.IsSpot())
   {
-    if (!std::isfinite(l.ConeAngle) || !std::isfinite(l.Exponent) || l.Exponent < 0.0)
+    if (!std::isfinite(l.ConeAngle) || !std::isfinite(l.Exponent) || l.Exponent < 0.0 ||
+      l.Exponent > static_cast<double>(std::numeric_limits<float>::max()))
     {
       os << who << ": spot cone angle " << l.ConeAngle << " or exponent " << l.Exponent
          << " is invalid";
@@ -238,13 +261,16 @@ inline PreparedLights PrepareLights(const std::vector<LightSource>& sources,
     }
     p.Radius = r;
     p.ExplicitRadius = s.HasRadius ? s.Radius : std::numeric_limits<double>::infinity();
-    p.Exponent = s.Exponent;
+    p.Exponent = s.IsSpot() ? s.Exponent : 1.0; // unused by point lights: never upload NaN
     p.Attenuation = s.Attenuation;
     if (s.IsSpot())
     {
       const double halfAngle = std::max(s.ConeAngle, 0.0) * (3.14159265358979323846 / 180.0);
       p.CosCone = std::cos(halfAngle);
-      p.DirectionWC = glm::normalize(s.DirectionWC);
+      // Scaled first: the squared length of a finite (1e300, 0, 0) overflows to Inf and
+      // glm::normalize would return 0; after scaling the largest component is +-1.
+      const glm::dvec3 a = glm::abs(s.DirectionWC);
+      p.DirectionWC = glm::normalize(s.DirectionWC / std::max(a.x, std::max(a.y, a.z)));
       ++out.NumberOfSpots;
     }
     else

@@ -296,7 +296,9 @@ struct AssignmentComparison
 
   double GetFalsePositiveRate() const
   {
-    return this->GPUPairs ? static_cast<double>(this->FalsePositives) / this->GPUPairs : 0.0;
+    return this->GPUPairs
+      ? static_cast<double>(this->FalsePositives) / static_cast<double>(this->GPUPairs)
+      : 0.0;
   }
 };
 

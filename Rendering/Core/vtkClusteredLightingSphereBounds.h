@@ -209,9 +209,11 @@ inline SphereScreenBounds ComputeSphereScreenBounds(
     b.DepthMax = farVC;
     return b;
   }
-  if (!(radius >= 0.0) || d + radius < nearVC || d - radius > farVC)
+  if (!(radius >= 0.0) || std::isnan(d) || d + radius < nearVC || d - radius > farVC)
   {
-    return b; // invalid, entirely in front of the near plane or beyond the far plane
+    // Invalid (a NaN depth comes from a degenerate view matrix; the shader skips such a
+    // light too), entirely in front of the near plane or beyond the far plane.
+    return b;
   }
   b.DepthMin = std::max(d - radius, nearVC);
   b.DepthMax = std::min(d + radius, farVC);
@@ -262,14 +264,21 @@ inline SphereScreenBounds ComputeCenterDepthQuadBounds(
 {
   SphereScreenBounds b;
   const double d = -centerVC.z;
-  if (!(radius >= 0.0) || d + radius < nearVC || d - radius > farVC)
+  if (std::isinf(radius)) // as ComputeSphereScreenBounds (d -+ radius would be NaN for d = Inf)
+  {
+    b.Visible = radius > 0.0;
+    b.DepthMin = nearVC;
+    b.DepthMax = farVC;
+    return b;
+  }
+  if (!(radius >= 0.0) || std::isnan(d) || d + radius < nearVC || d - radius > farVC)
   {
     return b;
   }
   b.Visible = true;
   b.DepthMin = std::max(d - radius, nearVC);
   b.DepthMax = std::min(d + radius, farVC);
-  if (std::isinf(radius) || d <= nearVC)
+  if (d <= nearVC)
   {
     return b;
   }
@@ -280,6 +289,10 @@ inline SphereScreenBounds ComputeCenterDepthQuadBounds(
     hi[axis] += radius;
     const glm::dvec4 clo = vcdc * lo, chi = vcdc * hi;
     const double a = clo[axis] / clo.w, c = chi[axis] / chi.w;
+    if (!std::isfinite(a) || !std::isfinite(c))
+    {
+      continue; // degenerate projection: keep the whole axis (NDCMin/NDCMax are -1/1)
+    }
     const double mn = std::min(a, c), mx = std::max(a, c);
     if (mx < -1.0 || mn > 1.0)
     {

@@ -1,0 +1,185 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Helpers for the reliability tests: GL object censuses (asked of GL itself, independent
+// of the pass's own bookkeeping), GL errors, a small lit scene, and resident memory.
+#ifndef ClusteredLightingGLTestUtilities_h
+#define ClusteredLightingGLTestUtilities_h
+
+#include "vtkClusteredLightingPass.h"
+
+#include "vtkActor.h"
+#include "vtkPlaneSource.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkSphereSource.h"
+#include "vtk_glew.h"
+
+#include <cstdio>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <string>
+#include <unistd.h> // for sysconf
+#include <utility>
+#include <vector>
+
+namespace ClusteredLightingTest
+{
+
+/// (kind, name) pairs; kind is GL_TEXTURE, GL_BUFFER, GL_FRAMEBUFFER or GL_VERTEX_ARRAY.
+using GLNames = std::set<std::pair<unsigned int, unsigned int>>;
+
+inline const char* GLKindName(unsigned int kind)
+{
+  switch (kind)
+  {
+    case GL_TEXTURE:
+      return "texture";
+    case GL_BUFFER:
+      return "buffer";
+    case GL_FRAMEBUFFER:
+      return "framebuffer";
+    case GL_VERTEX_ARRAY:
+      return "vertex array";
+    default:
+      return "?";
+  }
+}
+
+/// Whether `name` is a live object of `kind` in the current context (asks GL).
+inline bool IsLiveGLName(unsigned int kind, unsigned int name)
+{
+  switch (kind)
+  {
+    case GL_TEXTURE:
+      return glIsTexture(name) == GL_TRUE;
+    case GL_BUFFER:
+      return glIsBuffer(name) == GL_TRUE;
+    case GL_FRAMEBUFFER:
+      return glIsFramebuffer(name) == GL_TRUE;
+    case GL_VERTEX_ARRAY:
+      return glIsVertexArray(name) == GL_TRUE;
+    default:
+      return false;
+  }
+}
+
+constexpr unsigned int CensusMaxName = 1u << 16;
+
+/// Every live texture, buffer, framebuffer and vertex-array name in [1, CensusMaxName] of
+/// the window's context, found by asking GL about each name.
+inline GLNames TakeGLNameCensus(vtkRenderWindow* rw)
+{
+  rw->MakeCurrent();
+  GLNames live;
+  for (unsigned int kind : { GL_TEXTURE, GL_BUFFER, GL_FRAMEBUFFER, GL_VERTEX_ARRAY })
+  {
+    for (unsigned int name = 1; name <= CensusMaxName; ++name)
+    {
+      if (IsLiveGLName(kind, name))
+      {
+        live.emplace(kind, name);
+      }
+    }
+  }
+  return live;
+}
+
+/// The pass's own list of its GL objects (all renderers).
+inline GLNames PassGLNames(vtkClusteredLightingPass* pass)
+{
+  std::vector<std::pair<unsigned int, unsigned int>> v;
+  pass->GetGLObjectNames(v);
+  return GLNames(v.begin(), v.end());
+}
+
+inline GLNames Minus(const GLNames& a, const GLNames& b)
+{
+  GLNames out;
+  for (const auto& n : a)
+  {
+    if (!b.count(n))
+    {
+      out.insert(n);
+    }
+  }
+  return out;
+}
+
+inline GLNames Union(GLNames a, const GLNames& b)
+{
+  a.insert(b.begin(), b.end());
+  return a;
+}
+
+inline std::string Describe(const GLNames& names)
+{
+  std::ostringstream os;
+  os << names.size() << " {";
+  for (const auto& n : names)
+  {
+    os << " " << GLKindName(n.first) << " " << n.second;
+  }
+  os << " }";
+  return os.str();
+}
+
+/// Every pending GL error of the window's context (0 when there is none).
+inline int CountGLErrors(vtkRenderWindow* rw, std::string* first = nullptr)
+{
+  rw->MakeCurrent();
+  int n = 0;
+  for (GLenum e = glGetError(); e != GL_NO_ERROR && n < 64; e = glGetError())
+  {
+    if (n == 0 && first)
+    {
+      std::ostringstream os;
+      os << "0x" << std::hex << e;
+      *first = os.str();
+    }
+    ++n;
+  }
+  return n;
+}
+
+/// A floor and a shiny sphere (Diffuse 1 + Specular 0.4 at most, for CheckAgainstBruteForce).
+inline void AddTestScene(vtkRenderer* ren, int resolution = 24)
+{
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetOrigin(-3, -1, -3);
+  plane->SetPoint1(3, -1, -3);
+  plane->SetPoint2(-3, -1, 3);
+  plane->SetResolution(8, 8);
+  vtkNew<vtkPolyDataMapper> planeMapper;
+  planeMapper->SetInputConnection(plane->GetOutputPort());
+  vtkNew<vtkActor> floor;
+  floor->SetMapper(planeMapper);
+  floor->GetProperty()->SetColor(0.8, 0.8, 0.8);
+  ren->AddActor(floor);
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetThetaResolution(resolution);
+  sphere->SetPhiResolution(resolution);
+  vtkNew<vtkPolyDataMapper> sphereMapper;
+  sphereMapper->SetInputConnection(sphere->GetOutputPort());
+  vtkNew<vtkActor> ball;
+  ball->SetMapper(sphereMapper);
+  ball->SetScale(1.5);
+  ball->GetProperty()->SetColor(0.9, 0.7, 0.5);
+  ball->GetProperty()->SetSpecular(0.4);
+  ball->GetProperty()->SetSpecularPower(20);
+  ren->AddActor(ball);
+}
+
+/// Resident set size of this process in bytes (/proc/self/statm, second field).
+inline long long ResidentBytes()
+{
+  std::ifstream statm("/proc/self/statm");
+  long long size = 0, resident = 0;
+  statm >> size >> resident;
+  return resident * static_cast<long long>(sysconf(_SC_PAGESIZE));
+}
+
+} // namespace ClusteredLightingTest
+
+#endif

@@ -1,0 +1,10 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Translation unit for clang-tidy (scripts/run-clang-tidy.sh): every header of the GL-free
+// core, so that the checks of .clang-tidy see all of its (inline) code. Not compiled.
+#include "vtkClusteredLightingAssignment.h"
+#include "vtkClusteredLightingGrid.h"
+#include "vtkClusteredLightingLayout.h"
+#include "vtkClusteredLightingLights.h"
+#include "vtkClusteredLightingMorton.h"
+#include "vtkClusteredLightingReference.h"
+#include "vtkClusteredLightingSphereBounds.h"

@@ -421,9 +421,9 @@ void vtkClusteredLightingPass::vtkInternals::PrepareLightsIfChanged(
     {
       LightSource src;
       const double* p = l->GetTransformedPosition();
-      const double* f = l->GetTransformedFocalPoint();
+      const double* focal = l->GetTransformedFocalPoint();
       src.PositionWC = glm::dvec3(p[0], p[1], p[2]);
-      src.DirectionWC = glm::dvec3(f[0] - p[0], f[1] - p[1], f[2] - p[2]);
+      src.DirectionWC = glm::dvec3(focal[0] - p[0], focal[1] - p[1], focal[2] - p[2]);
       const double* c = l->GetDiffuseColor();
       src.Color = glm::dvec3(c[0], c[1], c[2]);
       src.Intensity = l->GetIntensity();

@@ -915,12 +915,14 @@ int main(int argc, char* argv[])
             {
               a->GetProperty()->SetSpecular(0.0);
             }
+            ctx.MakeReference(); // the exact reference of this scene
           });
         actors->InitTraversal();
         for (double s : specular)
         {
           actors->GetNextActor()->GetProperty()->SetSpecular(s);
         }
+        ctx.MakeReference();
         for (vtkIdType i = 0; i < 4096; i += 10)
         {
           ctx.Lights->SetSpot(i, 0.0, -1.0, 0.0, 60.0, 1.0);

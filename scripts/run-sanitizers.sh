@@ -4,6 +4,9 @@
 # it: core and fuzz tests, every GL test, the soak test, the example and the leak canary.
 # Any ASan, LSan or UBSan report fails the test that caused it (UBSan is built with
 # -fno-sanitize-recover=all). VTK, Mesa and GoogleTest are not instrumented.
+# Python wrapping is off here: an instrumented module cannot be loaded into the system's
+# uninstrumented python3 ("ASan runtime does not come first"); the Python tests run in the
+# normal suite only.
 # Usage: scripts/run-sanitizers.sh [build-dir] [ctest args...]
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
@@ -11,7 +14,8 @@ build_dir=${1:-"$root/build-asan"}
 shift || true
 "$root/scripts/install-deps.sh"
 "$root/scripts/build.sh" "$build_dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-  -DCLUSTERED_LIGHTING_SANITIZE=ON -DCLUSTERED_LIGHTING_WARNINGS_AS_ERRORS=ON
+  -DCLUSTERED_LIGHTING_SANITIZE=ON -DCLUSTERED_LIGHTING_WARNINGS_AS_ERRORS=ON \
+  -DCLUSTERED_LIGHTING_WRAP_PYTHON=OFF
 
 # detect_leaks: LeakSanitizer at exit (suppressions: third-party code only, see the file).
 # detect_stack_use_after_return, check_initialization_order, strict_init_order: extra

@@ -87,11 +87,14 @@ int Expect(bool condition, const char* what)
 int TestClusteredLightingVariants(int, char*[])
 {
   int failures = 0;
+  // One window for both parts: VTK 9.1 under Xvfb can lose the X connection when a window
+  // is destroyed and another one created in the same process, so each part uses its own
+  // renderer in this window instead.
+  vtkNew<vtkRenderWindow> renWin;
+  renWin->SetSize(320, 200);
+  renWin->SetMultiSamples(0);
   // ---------------------------------------------------------------- Phong variants
   {
-    vtkNew<vtkRenderWindow> renWin;
-    renWin->SetSize(320, 200);
-    renWin->SetMultiSamples(0);
     vtkNew<vtkRenderer> ren;
     ren->AutomaticLightCreationOff();
     renWin->AddRenderer(ren);
@@ -181,13 +184,11 @@ int TestClusteredLightingVariants(int, char*[])
     pass->SetDebugView(vtkClusteredLightingPass::DEBUG_NONE);
     renWin->Render();
     failures += Expect(!Has(shiny.Shader->LastFragmentSource, "clHeatColor"), "and gone again");
+    renWin->RemoveRenderer(ren); // releases the pass's and the mappers' GL resources
   }
 
   // ---------------------------------------------------------------- PBR variant
   {
-    vtkNew<vtkRenderWindow> renWin;
-    renWin->SetSize(320, 200);
-    renWin->SetMultiSamples(0);
     vtkNew<vtkRenderer> ren;
     ren->AutomaticLightCreationOff();
     renWin->AddRenderer(ren);

@@ -616,11 +616,16 @@ void WriteMachine(vtkRenderWindow* rw, const std::string& command, const std::st
   out << "VTK: " << vtkVersion::GetVTKVersion() << "\n";
   if (vtkOpenGLRenderWindow* gl = vtkOpenGLRenderWindow::SafeDownCast(rw))
   {
+    // The driver's own strings ("OpenGL vendor/renderer/version string: ...").
     std::istringstream caps(gl->ReportCapabilities());
     std::string line;
-    for (int i = 0; i < 3 && std::getline(caps, line); ++i)
+    while (std::getline(caps, line))
     {
-      out << line << "\n";
+      if (line.rfind("OpenGL vendor", 0) == 0 || line.rfind("OpenGL renderer", 0) == 0 ||
+        line.rfind("OpenGL version", 0) == 0)
+      {
+        out << line << "\n";
+      }
     }
     out << "GL_MAX_TEXTURE_SIZE: " << vtkTextureObject::GetMaximumTextureSize(gl) << "\n";
   }

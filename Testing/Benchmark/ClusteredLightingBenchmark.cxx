@@ -492,11 +492,13 @@ void WritePlots(const std::vector<Row>& rows, const std::string& dir)
       "bunny, 4,096 uniform lights: image error vs frame time (knobs swept one at a time)");
     chart->GetAxis(vtkAxis::BOTTOM)->SetTitle("frame time (ms, median)");
     chart->GetAxis(vtkAxis::LEFT)->SetTitle("RMSE vs exact reference (8-bit steps)");
+    chart->GetAxis(vtkAxis::BOTTOM)->SetLogScale(true); // error budgets cost 10-100x
     std::vector<std::pair<double, double>> points;
     for (const Row& r : rows)
     {
       if (r.Scene == "bunny" && r.Layout == "uniform" && r.Method == "clustered" &&
-        r.Lights == 4096 && r.Sweep != "camera" && !std::isnan(r.RMSE))
+        r.Lights == 4096 && r.Sweep != "camera" && r.Sweep != "specular" && r.Sweep != "spots" &&
+        !std::isnan(r.RMSE)) // the last two change the scene, not the trade-off
       {
         points.emplace_back(r.MsMedian, r.RMSE * 255.0);
       }
@@ -842,11 +844,12 @@ int main(int argc, char* argv[])
       row.Note = "largest the default grid holds; no brute-force reference at this count";
     }
 
-    // Stock VTK 9.1 with the same lights as vtkLights.
-    if (main)
+    // Stock VTK 9.1 with the same lights as vtkLights (on the house too, where triangles
+    // are large: the clustered/stock ratio depends on the mesh, see docs/benchmark).
     {
-      const std::vector<int> stockCounts =
-        opt.Quick ? std::vector<int>{ 8 } : std::vector<int>{ 1, 8, 64, 256 };
+      const std::vector<int> stockCounts = opt.Quick ? std::vector<int>{ 8 }
+        : main                                       ? std::vector<int>{ 1, 8, 64, 256 }
+                                                     : std::vector<int>{ 1, 8 };
       for (int n : stockCounts)
       {
         ctx.ResetPassDefaults();

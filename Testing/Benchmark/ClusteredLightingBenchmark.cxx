@@ -931,6 +931,11 @@ int main(int argc, char* argv[])
           actors->GetNextActor()->GetProperty()->SetSpecular(s);
         }
         ctx.MakeReference();
+        // The spot-cone code alone: one light becomes a spot light, so every shader gets
+        // the cone code while the other 4,095 lights stay point lights.
+        ctx.Lights->SetSpot(0, 0.0, -1.0, 0.0, 60.0, 1.0);
+        ctx.MakeReference();
+        sweep("spots", "1 spot light", [] {});
         for (vtkIdType i = 0; i < 4096; i += 10)
         {
           ctx.Lights->SetSpot(i, 0.0, -1.0, 0.0, 60.0, 1.0);

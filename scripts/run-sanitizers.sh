@@ -26,4 +26,4 @@ export LSAN_OPTIONS="suppressions=$root/Testing/Sanitizers/lsan.supp:print_suppr
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 
 cd "$build_dir"
-"$root/scripts/with-display.sh" ctest --output-on-failure --timeout 900 "$@"
+"$root/scripts/run-ctest.sh" "$@"

@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# Runs ctest in the current build directory under an X display (scripts/with-display.sh)
+# with the given arguments. If a test fails, the output of each failing test is printed
+# once more at the very end (its last 100 lines, from Testing/Temporary/LastTest.log), so
+# that the tail of a CI log shows why, not only which.
+# Usage (from a build directory): scripts/run-ctest.sh [ctest args...]
+set -uo pipefail
+root="$(cd "$(dirname "$0")/.." && pwd)"
+"$root/scripts/with-display.sh" ctest --output-on-failure --timeout 900 "$@"
+rc=$?
+if [ "$rc" -ne 0 ] && [ -f Testing/Temporary/LastTest.log ]; then
+  echo
+  echo "=== ctest failed (exit code $rc): output of the failing tests ==="
+  # Each failing test's block of LastTest.log runs from its "Testing: <name>" line to its
+  # "time elapsed" line (output, result, and the reason when ctest gives one).
+  cut -d: -f2- Testing/Temporary/LastTestsFailed.log 2>/dev/null | while IFS= read -r name; do
+    echo "--- $name"
+    awk -v name="$name" '
+      index($0, " Testing: " name) && substr($0, length($0) - length(name) + 1) == name { on = 1 }
+      on { print }
+      on && index($0, "time elapsed:") { exit }
+    ' Testing/Temporary/LastTest.log | tail -n 100
+  done
+  echo "=== end of the failing tests' output ==="
+fi
+exit "$rc"

@@ -2,7 +2,8 @@
 # Runs ctest in the current build directory under an X display (scripts/with-display.sh)
 # with the given arguments. If a test fails, the output of each failing test is printed
 # once more at the very end (its last 100 lines, from Testing/Temporary/LastTest.log), so
-# that the tail of a CI log shows why, not only which.
+# that the tail of a CI log shows why, not only which, and the failing tests are run once
+# more (the result stays a failure even if they pass then).
 # Usage (from a build directory): scripts/run-ctest.sh [ctest args...]
 set -uo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
@@ -22,5 +23,9 @@ if [ "$rc" -ne 0 ] && [ -f Testing/Temporary/LastTest.log ]; then
     ' Testing/Temporary/LastTest.log | tail -n 100
   done
   echo "=== end of the failing tests' output ==="
+  # Once more, to tell a failure that repeats from one that does not; the exit code stays
+  # that of the first run either way.
+  echo "=== running the failing tests once more ==="
+  "$root/scripts/with-display.sh" ctest --rerun-failed --output-on-failure --timeout 900 || true
 fi
 exit "$rc"

@@ -16,6 +16,7 @@
 #include "vtk_glew.h"
 
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -123,6 +124,55 @@ inline std::string Describe(const GLNames& names)
   }
   os << " }";
   return os.str();
+}
+
+/// Exit status of the test process: EXIT_FAILURE once any Check() failed.
+inline int& CheckStatus()
+{
+  static int status = EXIT_SUCCESS;
+  return status;
+}
+
+/// Prints "ok: what" or "FAILED: what" and records a failure in CheckStatus().
+inline void Check(bool ok, const std::string& what)
+{
+  std::printf("%s: %s\n", ok ? "ok" : "FAILED", what.c_str());
+  if (!ok)
+  {
+    CheckStatus() = EXIT_FAILURE;
+  }
+}
+
+/**
+ * Checks that two censuses hold the same GL objects: textures, buffers and framebuffers
+ * name for name, vertex arrays by count. VTK's mappers replace their VAO (new name)
+ * whenever their shader program changes (vtkOpenGLVertexArrayObject::ShaderProgramChanged),
+ * which the pass's shader code causes; a VAO of the pass that survived would still add one.
+ */
+inline void CheckSameGLObjects(const GLNames& got, const GLNames& want, const std::string& what)
+{
+  GLNames extra, missing;
+  std::size_t vaosGot = 0, vaosWant = 0;
+  for (const auto& n : got)
+  {
+    vaosGot += n.first == GL_VERTEX_ARRAY ? 1 : 0;
+    if (n.first != GL_VERTEX_ARRAY && !want.count(n))
+    {
+      extra.insert(n);
+    }
+  }
+  for (const auto& n : want)
+  {
+    vaosWant += n.first == GL_VERTEX_ARRAY ? 1 : 0;
+    if (n.first != GL_VERTEX_ARRAY && !got.count(n))
+    {
+      missing.insert(n);
+    }
+  }
+  Check(extra.empty() && missing.empty() && vaosGot == vaosWant,
+    what + " (live GL objects: " + std::to_string(got.size()) + "; extra " + Describe(extra) +
+      ", missing " + Describe(missing) + ", vertex arrays " + std::to_string(vaosGot) + " of " +
+      std::to_string(vaosWant) + ")");
 }
 
 /// Every pending GL error of the window's context (0 when there is none).

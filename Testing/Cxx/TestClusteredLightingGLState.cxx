@@ -37,19 +37,11 @@
 #include <set>
 #include <string>
 
+using ClusteredLightingTest::Check;
+using ClusteredLightingTest::CheckSameGLObjects;
+
 namespace
 {
-int Status = EXIT_SUCCESS;
-
-void Expect(bool ok, const std::string& what)
-{
-  std::printf("%s: %s\n", ok ? "ok" : "FAILED", what.c_str());
-  if (!ok)
-  {
-    Status = EXIT_FAILURE;
-  }
-}
-
 /// GL state as GL reports it, by name, plus what vtkOpenGLState caches (to compare).
 struct GLStateSnapshot
 {
@@ -217,7 +209,7 @@ vtkStandardNewMacro(ProbePass);
 void ExpectCacheMatchesGL(const GLStateSnapshot& s, const std::string& where)
 {
   const std::string diff = Differences(s.Cache, s.GL);
-  Expect(diff.empty() && s.ProgramMatchesCache,
+  Check(diff.empty() && s.ProgramMatchesCache,
     where + ": vtkOpenGLState and the shader cache agree with GL" + diff +
       (s.ProgramMatchesCache ? "" : " (current program)"));
 }
@@ -326,21 +318,21 @@ int TestClusteredLightingGLState(int, char*[])
     const bool shading = f.Lights;
     const std::string assignment = Differences(
       outer->Before.GL, inner->Before.GL, { "GL_ACTIVE_TEXTURE", "GL_CURRENT_PROGRAM" });
-    Expect(assignment.empty(),
+    Check(assignment.empty(),
       name + ": the assignment and texture binding change no other state" + assignment);
     const int reserved = inner->Before.AllocatedUnits - outer->Before.AllocatedUnits;
     const int expectedUnits =
       !shading ? 0 : (f.Shading == vtkClusteredLightingPass::SHADING_CLUSTERED ? 4 : 2);
-    Expect(reserved == expectedUnits,
+    Check(reserved == expectedUnits,
       name + ": " + std::to_string(reserved) + " texture units reserved for shading (expected " +
         std::to_string(expectedUnits) + ")");
     // End of the delegate -> after the pass: units given back, nothing else changed.
     const std::string after = Differences(inner->After.GL, outer->After.GL);
-    Expect(after.empty(), name + ": nothing changes after the delegate" + after);
-    Expect(outer->After.AllocatedUnits == outer->Before.AllocatedUnits,
+    Check(after.empty(), name + ": nothing changes after the delegate" + after);
+    Check(outer->After.AllocatedUnits == outer->Before.AllocatedUnits,
       name + ": every texture unit is given back (" + std::to_string(outer->Before.AllocatedUnits) +
         " -> " + std::to_string(outer->After.AllocatedUnits) + ")");
-    Expect(outer->After.GL["GL_COLOR_LOGIC_OP"] == (f.ApplicationState ? 1 : 0) &&
+    Check(outer->After.GL["GL_COLOR_LOGIC_OP"] == (f.ApplicationState ? 1 : 0) &&
         outer->After.GL["GL_LOGIC_OP_MODE"] == GL_COPY,
       name +
         (f.ApplicationState ? ": the application's logic op (on, GL_COPY) is kept"
@@ -349,7 +341,7 @@ int TestClusteredLightingGLState(int, char*[])
     {
       const long long vao = outer->ApplicationVAO;
       // (The delegate's mappers then bind their own, as stock VTK does.)
-      Expect(vao != 0 && outer->Before.GL["GL_VERTEX_ARRAY_BINDING"] == vao &&
+      Check(vao != 0 && outer->Before.GL["GL_VERTEX_ARRAY_BINDING"] == vao &&
           inner->Before.GL["GL_VERTEX_ARRAY_BINDING"] == vao,
         name + ": the application's vertex array is bound again after the assignment");
     }
@@ -358,9 +350,9 @@ int TestClusteredLightingGLState(int, char*[])
     ExpectCacheMatchesGL(outer->After, name + ", after the pass");
     std::string first;
     const int errors = CountGLErrors(renWin, &first);
-    Expect(errors == 0, name + ": no GL error " + first);
+    Check(errors == 0, name + ": no GL error " + first);
   }
-  Expect(outer->Frames == 7, "the probe saw every frame");
+  Check(outer->Frames == 7, "the probe saw every frame");
   renWin->MakeCurrent();
   glDeleteVertexArrays(1, &outer->ApplicationVAO);
 
@@ -372,7 +364,7 @@ int TestClusteredLightingGLState(int, char*[])
   light->SwitchOn();
   ren->GetActiveCamera()->Azimuth(7.0);
   renWin->Render();
-  Expect(pass->GetLastAssignmentUpdated(), "the overlay frame reassigns lights");
+  Check(pass->GetLastAssignmentUpdated(), "the overlay frame reassigns lights");
   const std::vector<float> withPass = CapturePixels(renWin);
   ren->SetPass(nullptr);
   ren->RemoveAllViewProps();
@@ -403,11 +395,11 @@ int TestClusteredLightingGLState(int, char*[])
       }
     }
   }
-  Expect(boxPixels > 1000, "the overlay box covers " + std::to_string(boxPixels) + " pixels");
-  Expect(differing == 0,
+  Check(boxPixels > 1000, "the overlay box covers " + std::to_string(boxPixels) + " pixels");
+  Check(differing == 0,
     "the overlay drawn after the pass is identical to the overlay alone (" +
       std::to_string(differing) + " pixels differ)");
-  Expect(
+  Check(
     messages->Errors.empty() && messages->Warnings.empty(), "no warning or error from the pass");
-  return Status;
+  return CheckStatus();
 }

@@ -21,50 +21,11 @@
 
 #include <cstdio>
 
+using ClusteredLightingTest::Check;
+using ClusteredLightingTest::CheckSameGLObjects;
+
 namespace
 {
-int Status = EXIT_SUCCESS;
-
-void Expect(bool ok, const std::string& what)
-{
-  std::printf("%s: %s\n", ok ? "ok" : "FAILED", what.c_str());
-  if (!ok)
-  {
-    Status = EXIT_FAILURE;
-  }
-}
-
-// Textures, buffers and framebuffers must match name for name. Vertex arrays are compared
-// by count: VTK's mappers replace their VAO (new name) whenever their shader program
-// changes (vtkOpenGLVertexArrayObject::ShaderProgramChanged), which the pass's shader code
-// causes; a VAO of the pass that survived would still add one.
-void ExpectSameNames(const ClusteredLightingTest::GLNames& got,
-  const ClusteredLightingTest::GLNames& want, const std::string& what)
-{
-  using namespace ClusteredLightingTest;
-  GLNames extra, missing;
-  std::size_t vaosGot = 0, vaosWant = 0;
-  for (const auto& n : got)
-  {
-    vaosGot += n.first == GL_VERTEX_ARRAY ? 1 : 0;
-    if (n.first != GL_VERTEX_ARRAY && !want.count(n))
-    {
-      extra.insert(n);
-    }
-  }
-  for (const auto& n : want)
-  {
-    vaosWant += n.first == GL_VERTEX_ARRAY ? 1 : 0;
-    if (n.first != GL_VERTEX_ARRAY && !got.count(n))
-    {
-      missing.insert(n);
-    }
-  }
-  Expect(extra.empty() && missing.empty() && vaosGot == vaosWant,
-    what + " (live GL objects: " + std::to_string(got.size()) + "; extra " + Describe(extra) +
-      ", missing " + Describe(missing) + ", vertex arrays " + std::to_string(vaosGot) + " of " +
-      std::to_string(vaosWant) + ")");
-}
 }
 
 int TestClusteredLightingResources(int, char*[])
@@ -112,9 +73,9 @@ int TestClusteredLightingResources(int, char*[])
   ren->SetPass(pass);
   renWin->Render();
   const GLNames own = PassGLNames(pass);
-  Expect(pass->GetNumberOfClusteredLights() == 303, "303 clustered lights");
+  Check(pass->GetNumberOfClusteredLights() == 303, "303 clustered lights");
   // LightData, LightView, Quads (texture + buffer each), list, master, FBO, VAO.
-  Expect(pass->GetNumberOfGLObjects() == 10 && own.size() == 10,
+  Check(pass->GetNumberOfGLObjects() == 10 && own.size() == 10,
     "the pass holds 10 GL objects: count " + std::to_string(pass->GetNumberOfGLObjects()) +
       ", names " + Describe(own));
   bool allLive = true;
@@ -122,34 +83,34 @@ int TestClusteredLightingResources(int, char*[])
   {
     allLive = allLive && n.second <= CensusMaxName && IsLiveGLName(n.first, n.second);
   }
-  Expect(allLive, "every name the pass reports is a live GL object");
-  ExpectSameNames(TakeGLNameCensus(renWin), Union(before, own),
+  Check(allLive, "every name the pass reports is a live GL object");
+  CheckSameGLObjects(TakeGLNameCensus(renWin), Union(before, own),
     "after the first render, GL holds exactly the objects from before plus the pass's");
   const std::vector<float> first = CapturePixels(renWin);
 
   // 2. Release: nothing of the pass survives, according to GL itself.
   pass->ReleaseGraphicsResources(renWin);
-  Expect(pass->GetNumberOfGLObjects() == 0, "GetNumberOfGLObjects() is 0 after the release");
+  Check(pass->GetNumberOfGLObjects() == 0, "GetNumberOfGLObjects() is 0 after the release");
   renWin->MakeCurrent();
   bool anyLive = false;
   for (const auto& n : own)
   {
     anyLive = anyLive || IsLiveGLName(n.first, n.second);
   }
-  Expect(!anyLive, "no name the pass reported is a GL object after the release");
-  ExpectSameNames(
+  Check(!anyLive, "no name the pass reported is a GL object after the release");
+  CheckSameGLObjects(
     TakeGLNameCensus(renWin), before, "after the release, GL holds what it did before the pass");
 
   // 3. Works again: same image, exact assignment, brute-force bound.
   renWin->Render();
-  Expect(pass->GetNumberOfGLObjects() == 10, "10 GL objects again after rendering");
+  Check(pass->GetNumberOfGLObjects() == 10, "10 GL objects again after rendering");
   const ImageComparison again = CompareImages(first, CapturePixels(renWin));
   PrintComparison("after release vs before", again);
-  Expect(again.MaxAbsError == 0.0, "the image after the release is identical");
+  Check(again.MaxAbsError == 0.0, "the image after the release is identical");
   const auto assignment = CheckAssignment(pass, ren, "after release");
-  Expect(assignment.FalseNegatives == 0 && assignment.MasterMismatches == 0,
+  Check(assignment.FalseNegatives == 0 && assignment.MasterMismatches == 0,
     "no false negative after the release");
-  Expect(CheckAgainstBruteForce(pass, renWin, ren, 1.4, "after release").Violations == 0,
+  Check(CheckAgainstBruteForce(pass, renWin, ren, 1.4, "after release").Violations == 0,
     "clustered within the derived tolerance of brute force after the release");
 
   // 4. Release / reallocate cycles: grid and light-count changes reallocate the list and
@@ -167,11 +128,11 @@ int TestClusteredLightingResources(int, char*[])
     lights->SetNumberOfLights(cycle % 2 ? 40 : 700);
     renWin->Render();
     const auto cmp = CheckAssignment(pass, ren, "cycle");
-    Expect(cmp.FalseNegatives == 0 && cmp.MasterMismatches == 0,
+    Check(cmp.FalseNegatives == 0 && cmp.MasterMismatches == 0,
       "cycle " + std::to_string(cycle) + ": no false negative");
     pass->ReleaseGraphicsResources(renWin);
-    Expect(pass->GetNumberOfGLObjects() == 0, "cycle " + std::to_string(cycle) + ": count 0");
-    ExpectSameNames(TakeGLNameCensus(renWin), before,
+    Check(pass->GetNumberOfGLObjects() == 0, "cycle " + std::to_string(cycle) + ": count 0");
+    CheckSameGLObjects(TakeGLNameCensus(renWin), before,
       "cycle " + std::to_string(cycle) + ": GL holds what it did before the pass");
   }
   pass->SetTilesX(32);
@@ -180,16 +141,16 @@ int TestClusteredLightingResources(int, char*[])
   ClusteredLightingScenes::MakeLights(
     lights, 300, ClusteredLightingScenes::Layout::Uniform, lo, hi, params, 11);
   renWin->Render();
-  Expect(CompareImages(first, CapturePixels(renWin)).MaxAbsError == 0.0,
+  Check(CompareImages(first, CapturePixels(renWin)).MaxAbsError == 0.0,
     "the original settings give the original image again");
 
   // 5. Removing the renderer from the window releases the pass's objects with it.
   renWin->RemoveRenderer(ren);
-  Expect(pass->GetNumberOfGLObjects() == 0, "removing the renderer releases the pass's objects");
+  Check(pass->GetNumberOfGLObjects() == 0, "removing the renderer releases the pass's objects");
   renWin->AddRenderer(ren);
   renWin->Render();
-  Expect(pass->GetNumberOfGLObjects() == 10, "the pass works again once the renderer is back");
-  Expect(CompareImages(first, CapturePixels(renWin)).MaxAbsError == 0.0,
+  Check(pass->GetNumberOfGLObjects() == 10, "the pass works again once the renderer is back");
+  Check(CompareImages(first, CapturePixels(renWin)).MaxAbsError == 0.0,
     "same image once the renderer is back");
 
   // 6. Deleting the pass while the window lives frees its objects too.
@@ -197,15 +158,15 @@ int TestClusteredLightingResources(int, char*[])
   renWin->Render(); // stock rendering: the scene's own objects stay
   const GLNames withPass = TakeGLNameCensus(renWin);
   const GLNames passNames = PassGLNames(pass);
-  Expect(passNames.size() == 10, "the pass still holds its objects before it is deleted");
+  Check(passNames.size() == 10, "the pass still holds its objects before it is deleted");
   pass = nullptr;
-  ExpectSameNames(TakeGLNameCensus(renWin), Minus(withPass, passNames),
+  CheckSameGLObjects(TakeGLNameCensus(renWin), Minus(withPass, passNames),
     "deleting the pass frees exactly its GL objects");
 
   std::string firstError;
   const int errors = CountGLErrors(renWin, &firstError);
-  Expect(errors == 0, "no GL error (" + std::to_string(errors) + ", first " + firstError + ")");
-  Expect(
+  Check(errors == 0, "no GL error (" + std::to_string(errors) + ", first " + firstError + ")");
+  Check(
     messages->Errors.empty() && messages->Warnings.empty(), "no warning or error from the pass");
-  return Status;
+  return CheckStatus();
 }

@@ -20,48 +20,11 @@
 
 #include <cstdio>
 
+using ClusteredLightingTest::Check;
+using ClusteredLightingTest::CheckSameGLObjects;
+
 namespace
 {
-int Status = EXIT_SUCCESS;
-
-void Expect(bool ok, const std::string& what)
-{
-  std::printf("%s: %s\n", ok ? "ok" : "FAILED", what.c_str());
-  if (!ok)
-  {
-    Status = EXIT_FAILURE;
-  }
-}
-
-/// Textures, buffers and framebuffers name for name; vertex arrays by count (VTK's mappers
-/// rename their VAOs when their shader program changes).
-void ExpectSameObjects(const ClusteredLightingTest::GLNames& got,
-  const ClusteredLightingTest::GLNames& want, const std::string& what)
-{
-  using namespace ClusteredLightingTest;
-  GLNames extra, missing;
-  std::size_t vaosGot = 0, vaosWant = 0;
-  for (const auto& n : got)
-  {
-    vaosGot += n.first == GL_VERTEX_ARRAY ? 1 : 0;
-    if (n.first != GL_VERTEX_ARRAY && !want.count(n))
-    {
-      extra.insert(n);
-    }
-  }
-  for (const auto& n : want)
-  {
-    vaosWant += n.first == GL_VERTEX_ARRAY ? 1 : 0;
-    if (n.first != GL_VERTEX_ARRAY && !got.count(n))
-    {
-      missing.insert(n);
-    }
-  }
-  Expect(extra.empty() && missing.empty() && vaosGot == vaosWant,
-    what + " (extra " + Describe(extra) + ", missing " + Describe(missing) + ", vertex arrays " +
-      std::to_string(vaosGot) + " of " + std::to_string(vaosWant) + ")");
-}
-
 vtkSmartPointer<vtkRenderer> MakeRenderer(const double eye[3], double light)
 {
   vtkSmartPointer<vtkRenderer> ren = vtkSmartPointer<vtkRenderer>::New();
@@ -99,8 +62,8 @@ void CheckRenderer(
 {
   win->Render();
   const auto cmp = ClusteredLightingTest::CheckAssignment(pass, ren, name.c_str());
-  Expect(cmp.FalseNegatives == 0 && cmp.MasterMismatches == 0, name + ": no false negative");
-  Expect(
+  Check(cmp.FalseNegatives == 0 && cmp.MasterMismatches == 0, name + ": no false negative");
+  Check(
     ClusteredLightingTest::CheckAgainstBruteForce(pass, win, ren, 1.4, name.c_str()).Violations ==
       0,
     name + ": within the derived tolerance of brute force");
@@ -154,8 +117,8 @@ int TestClusteredLightingSharedPass(int, char*[])
     winA->Render();
     winB->Render();
   }
-  Expect(shared->GetNumberOfClusteredLights() == 202, "202 clustered lights per renderer");
-  Expect(shared->GetNumberOfGLObjects() == 20, "10 GL objects per renderer");
+  Check(shared->GetNumberOfClusteredLights() == 202, "202 clustered lights per renderer");
+  Check(shared->GetNumberOfGLObjects() == 20, "10 GL objects per renderer");
   const std::vector<float> imageA = CapturePixels(winA), imageB = CapturePixels(winB);
   CheckRenderer(shared, winA, renA, "window A, shared pass");
   CheckRenderer(shared, winB, renB, "window B, shared pass");
@@ -163,7 +126,7 @@ int TestClusteredLightingSharedPass(int, char*[])
   const ImageComparison ownB = CompareImages(imageB, RenderWithOwnPass(winB, renB, lights, shared));
   PrintComparison("window A: shared pass vs own pass", ownA);
   PrintComparison("window B: shared pass vs own pass", ownB);
-  Expect(ownA.MaxAbsError == 0.0 && ownB.MaxAbsError == 0.0,
+  Check(ownA.MaxAbsError == 0.0 && ownB.MaxAbsError == 0.0,
     "each window's image is identical to the one of a pass of its own");
 
   // 2. Two renderers of one window (side by side) sharing the pass.
@@ -188,14 +151,14 @@ int TestClusteredLightingSharedPass(int, char*[])
     winC->Render();
     const ImageComparison own = CompareImages(both, CapturePixels(winC));
     PrintComparison("window C (two renderers): shared pass vs own passes", own);
-    Expect(own.MaxAbsError == 0.0, "two renderers sharing a pass render as with their own");
-    Expect(shared->GetNumberOfGLObjects() == 40, "10 GL objects for each of 4 renderers");
+    Check(own.MaxAbsError == 0.0, "two renderers sharing a pass render as with their own");
+    Check(shared->GetNumberOfGLObjects() == 40, "10 GL objects for each of 4 renderers");
   }
-  Expect(shared->GetNumberOfGLObjects() == 20, "window C's objects went with it");
+  Check(shared->GetNumberOfGLObjects() == 20, "window C's objects went with it");
 
   // 3. Releasing window B's objects while window A's context is current.
   shared->ReleaseGraphicsResources(nullptr);
-  Expect(shared->GetNumberOfGLObjects() == 0, "release for all windows: 0 GL objects");
+  Check(shared->GetNumberOfGLObjects() == 0, "release for all windows: 0 GL objects");
   // VTK's mappers keep a reference to the passes that last rendered them, so the own
   // passes above live (with their GL objects) until the mappers render again.
   winA->Render();
@@ -206,27 +169,27 @@ int TestClusteredLightingSharedPass(int, char*[])
   const GLNames censusA = TakeGLNameCensus(winA);
   winB->Render();
   const GLNames censusB = TakeGLNameCensus(winB);
-  Expect(shared->GetNumberOfGLObjects() == 20, "20 GL objects after rendering both windows");
+  Check(shared->GetNumberOfGLObjects() == 20, "20 GL objects after rendering both windows");
   winA->MakeCurrent();
   shared->ReleaseGraphicsResources(winB);
-  Expect(shared->GetNumberOfGLObjects() == 10, "release for window B: window A's 10 remain");
-  ExpectSameObjects(
+  Check(shared->GetNumberOfGLObjects() == 10, "release for window B: window A's 10 remain");
+  CheckSameGLObjects(
     TakeGLNameCensus(winA), censusA, "window A's GL objects are untouched by window B's release");
-  ExpectSameObjects(
+  CheckSameGLObjects(
     TakeGLNameCensus(winB), baseB, "window B holds no GL object of the pass after its release");
   winA->Render();
   winB->Render();
-  Expect(CompareImages(imageA, CapturePixels(winA)).MaxAbsError == 0.0 &&
+  Check(CompareImages(imageA, CapturePixels(winA)).MaxAbsError == 0.0 &&
       CompareImages(imageB, CapturePixels(winB)).MaxAbsError == 0.0,
     "both windows render the same images after window B's release");
   // Re-created objects get new names: compare counts.
-  Expect(TakeGLNameCensus(winB).size() == censusB.size(),
+  Check(TakeGLNameCensus(winB).size() == censusB.size(),
     "window B holds as many GL objects as before its release");
 
   // 4. Renderer B deleted while window B lives; window A renders a new view.
   winB->RemoveRenderer(renB);
   renB = nullptr;
-  Expect(shared->GetNumberOfGLObjects() == 10, "removing renderer B released its objects");
+  Check(shared->GetNumberOfGLObjects() == 10, "removing renderer B released its objects");
   renA->GetActiveCamera()->Azimuth(25.0);
   renA->ResetCameraClippingRange();
   winA->Render();
@@ -234,18 +197,18 @@ int TestClusteredLightingSharedPass(int, char*[])
   const ImageComparison turnedOwn =
     CompareImages(turned, RenderWithOwnPass(winA, renA, lights, shared));
   PrintComparison("window A after renderer B was deleted: shared vs own pass", turnedOwn);
-  Expect(turnedOwn.MaxAbsError == 0.0, "window A renders correctly after renderer B was deleted");
+  Check(turnedOwn.MaxAbsError == 0.0, "window A renders correctly after renderer B was deleted");
   winA->Render();
 
   // 5. Destroying window A releases the pass's objects for it.
   std::string first;
   const int errorsA = CountGLErrors(winA, &first);
-  Expect(errorsA == 0, "no GL error in window A (" + std::to_string(errorsA) + " " + first + ")");
+  Check(errorsA == 0, "no GL error in window A (" + std::to_string(errorsA) + " " + first + ")");
   const int errorsB = CountGLErrors(winB, &first);
-  Expect(errorsB == 0, "no GL error in window B (" + std::to_string(errorsB) + " " + first + ")");
+  Check(errorsB == 0, "no GL error in window B (" + std::to_string(errorsB) + " " + first + ")");
   winA = nullptr;
-  Expect(shared->GetNumberOfGLObjects() == 0, "destroying window A released its objects");
-  Expect(
+  Check(shared->GetNumberOfGLObjects() == 0, "destroying window A released its objects");
+  Check(
     messages->Errors.empty() && messages->Warnings.empty(), "no warning or error from the pass");
-  return Status;
+  return CheckStatus();
 }

@@ -8,11 +8,14 @@
 #include "vtkClusteredLightingPass.h"
 #include "vtkClusteredLightingReference.h"
 
+#include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkCommand.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
+#include "vtkPlaneSource.h"
 #include "vtkPointData.h"
+#include "vtkPolyDataMapper.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkShader.h"
@@ -74,6 +77,23 @@ public:
   std::string LastFragmentSource;
   std::set<vtkShaderProgram*> Programs;
 };
+
+/// Adds a square floor in the z = 0 plane, from -halfSize to halfSize in x and y, with
+/// resolution x resolution quads; returns its actor (held by the renderer).
+inline vtkActor* AddFloor(vtkRenderer* ren, double halfSize, int resolution = 1)
+{
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetOrigin(-halfSize, -halfSize, 0);
+  plane->SetPoint1(halfSize, -halfSize, 0);
+  plane->SetPoint2(-halfSize, halfSize, 0);
+  plane->SetResolution(resolution, resolution);
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(plane->GetOutputPort());
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  ren->AddActor(actor);
+  return actor;
+}
 
 /// RGB pixels of the window's back buffer as floats in [0, 1] (render first).
 inline std::vector<float> CapturePixels(vtkRenderWindow* rw)

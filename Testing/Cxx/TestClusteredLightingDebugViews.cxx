@@ -14,7 +14,6 @@
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkClusteredLightSet.h"
-#include "vtkPlaneSource.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkRegressionTestImage.h"
 #include "vtkSphereSource.h"
@@ -31,15 +30,7 @@ int TestClusteredLightingDebugViews(int argc, char* argv[])
   vtkNew<vtkRenderer> ren;
   ren->AutomaticLightCreationOff();
   renWin->AddRenderer(ren);
-  vtkNew<vtkPlaneSource> plane;
-  plane->SetOrigin(-4, -4, 0);
-  plane->SetPoint1(4, -4, 0);
-  plane->SetPoint2(-4, 4, 0);
-  vtkNew<vtkPolyDataMapper> planeMapper;
-  planeMapper->SetInputConnection(plane->GetOutputPort());
-  vtkNew<vtkActor> planeActor;
-  planeActor->SetMapper(planeMapper);
-  ren->AddActor(planeActor);
+  ClusteredLightingTest::AddFloor(ren, 4);
   vtkNew<vtkSphereSource> sphere;
   sphere->SetCenter(0.5, 0.5, 0.8);
   sphere->SetRadius(0.8);

@@ -13,7 +13,6 @@
 #include "vtkClusteredLightSet.h"
 #include "vtkCommand.h"
 #include "vtkOpenGLRenderWindow.h"
-#include "vtkPlaneSource.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkSphereSource.h"
 #include "vtkTextureObject.h"
@@ -28,15 +27,7 @@ int TestClusteredLightingLimits(int, char*[])
   vtkNew<vtkRenderer> ren;
   ren->AutomaticLightCreationOff();
   renWin->AddRenderer(ren);
-  vtkNew<vtkPlaneSource> plane;
-  plane->SetOrigin(-5, -5, 0);
-  plane->SetPoint1(5, -5, 0);
-  plane->SetPoint2(-5, 5, 0);
-  vtkNew<vtkPolyDataMapper> planeMapper;
-  planeMapper->SetInputConnection(plane->GetOutputPort());
-  vtkNew<vtkActor> planeActor;
-  planeActor->SetMapper(planeMapper);
-  ren->AddActor(planeActor);
+  ClusteredLightingTest::AddFloor(ren, 5);
   vtkNew<vtkSphereSource> sphere;
   sphere->SetRadius(1.2);
   sphere->SetCenter(0, 0, 1.0);

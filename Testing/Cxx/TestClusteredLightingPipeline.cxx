@@ -22,7 +22,6 @@
 #include "vtkImageData.h"
 #include "vtkLight.h"
 #include "vtkMath.h"
-#include "vtkPlaneSource.h"
 #include "vtkPointSource.h"
 #include "vtkPoints.h"
 #include "vtkPolyDataMapper.h"
@@ -187,15 +186,7 @@ int TestClusteredLightingPipeline(int, char*[])
   renWin->SetMultiSamples(0);
   vtkNew<vtkRenderer> ren;
   renWin->AddRenderer(ren);
-  vtkNew<vtkPlaneSource> plane;
-  plane->SetOrigin(-3, -3, 0);
-  plane->SetPoint1(3, -3, 0);
-  plane->SetPoint2(-3, 3, 0);
-  vtkNew<vtkPolyDataMapper> planeMapper;
-  planeMapper->SetInputConnection(plane->GetOutputPort());
-  vtkNew<vtkActor> planeActor;
-  planeActor->SetMapper(planeMapper);
-  ren->AddActor(planeActor);
+  ClusteredLightingTest::AddFloor(ren, 3);
   vtkNew<vtkSphereSource> sphere;
   sphere->SetRadius(0.8);
   sphere->SetCenter(0, 0, 0.6);

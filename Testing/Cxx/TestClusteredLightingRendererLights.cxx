@@ -17,7 +17,6 @@
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkOpenGLRenderer.h"
-#include "vtkPlaneSource.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
 #include "vtkSphereSource.h"
@@ -32,16 +31,7 @@ int TestClusteredLightingRendererLights(int, char*[])
   vtkNew<vtkOpenGLRenderer> ren;
   renWin->AddRenderer(ren);
 
-  vtkNew<vtkPlaneSource> plane;
-  plane->SetOrigin(-3, -3, 0);
-  plane->SetPoint1(3, -3, 0);
-  plane->SetPoint2(-3, 3, 0);
-  plane->SetResolution(8, 8);
-  vtkNew<vtkPolyDataMapper> planeMapper;
-  planeMapper->SetInputConnection(plane->GetOutputPort());
-  vtkNew<vtkActor> planeActor;
-  planeActor->SetMapper(planeMapper);
-  ren->AddActor(planeActor);
+  ClusteredLightingTest::AddFloor(ren, 3, 8);
   vtkNew<vtkSphereSource> sphere;
   sphere->SetRadius(1.0);
   sphere->SetCenter(0, 0, 0.5);

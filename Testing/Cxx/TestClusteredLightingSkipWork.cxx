@@ -12,7 +12,6 @@
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkClusteredLightSet.h"
-#include "vtkPlaneSource.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
 #include "vtkSphereSource.h"
@@ -36,15 +35,7 @@ int TestClusteredLightingSkipWork(int, char*[])
   vtkNew<vtkRenderer> ren;
   ren->AutomaticLightCreationOff();
   renWin->AddRenderer(ren);
-  vtkNew<vtkPlaneSource> plane;
-  plane->SetOrigin(-4, -4, 0);
-  plane->SetPoint1(4, -4, 0);
-  plane->SetPoint2(-4, 4, 0);
-  vtkNew<vtkPolyDataMapper> planeMapper;
-  planeMapper->SetInputConnection(plane->GetOutputPort());
-  vtkNew<vtkActor> planeActor;
-  planeActor->SetMapper(planeMapper);
-  ren->AddActor(planeActor);
+  vtkMapper* planeMapper = ClusteredLightingTest::AddFloor(ren, 4)->GetMapper();
   vtkNew<vtkSphereSource> sphere;
   sphere->SetCenter(0, 0, 1);
   vtkNew<vtkPolyDataMapper> sphereMapper;

@@ -21,6 +21,7 @@
 //
 // --quick finishes in under 2 minutes (small window, fewer configurations); --check
 // validates the written CSV (well-formed, finite, error budgets met) and sets the exit code.
+#include "ClusteredLightingImages.h"
 #include "ClusteredLightingScenes.h"
 
 #include "vtkAxis.h"
@@ -32,7 +33,6 @@
 #include "vtkContextScene.h"
 #include "vtkContextView.h"
 #include "vtkDoubleArray.h"
-#include "vtkImageData.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkNew.h"
@@ -47,7 +47,6 @@
 #include "vtkStringArray.h"
 #include "vtkTable.h"
 #include "vtkTextureObject.h"
-#include "vtkUnsignedCharArray.h"
 #include "vtkVersion.h"
 #include "vtkWindowToImageFilter.h"
 #include "vtk_glew.h"
@@ -185,35 +184,6 @@ std::string Num(double v, int precision = 4)
 }
 
 //------------------------------------------------------------------------------ images
-std::vector<float> Capture(vtkRenderWindow* rw)
-{
-  vtkNew<vtkWindowToImageFilter> w2i;
-  w2i->SetInput(rw);
-  w2i->SetInputBufferTypeToRGB();
-  w2i->ReadFrontBufferOff();
-  w2i->ShouldRerenderOff();
-  w2i->Update();
-  vtkUnsignedCharArray* a =
-    vtkUnsignedCharArray::SafeDownCast(w2i->GetOutput()->GetPointData()->GetScalars());
-  std::vector<float> out(static_cast<std::size_t>(a->GetNumberOfValues()));
-  for (vtkIdType i = 0; i < a->GetNumberOfValues(); ++i)
-  {
-    out[static_cast<std::size_t>(i)] = a->GetValue(i) / 255.0f;
-  }
-  return out;
-}
-
-void WritePNG(vtkRenderWindow* rw, const std::string& path)
-{
-  vtkNew<vtkWindowToImageFilter> w2i;
-  w2i->SetInput(rw);
-  w2i->ReadFrontBufferOff();
-  vtkNew<vtkPNGWriter> writer;
-  writer->SetInputConnection(w2i->GetOutputPort());
-  writer->SetFileName(path.c_str());
-  writer->Write();
-}
-
 void CompareWithReference(const std::vector<float>& img, const std::vector<float>& ref, Row& row)
 {
   if (img.size() != ref.size() || ref.empty())
@@ -279,10 +249,10 @@ struct Context
   {
     this->Pass->SetDebugView(vtkClusteredLightingPass::DEBUG_EVALUATED_COUNT);
     this->Window->Render();
-    const std::vector<float> ev = Capture(this->Window);
+    const std::vector<float> ev = ClusteredLightingImages::CaptureRGB(this->Window);
     this->Pass->SetDebugView(vtkClusteredLightingPass::DEBUG_REACHED_COUNT);
     this->Window->Render();
-    const std::vector<float> re = Capture(this->Window);
+    const std::vector<float> re = ClusteredLightingImages::CaptureRGB(this->Window);
     this->Pass->SetDebugView(vtkClusteredLightingPass::DEBUG_NONE);
     double se = 0.0, sr = 0.0;
     std::size_t n = 0;
@@ -354,7 +324,7 @@ struct Context
     }
     SetView(this->Current, this->Renderer);
     this->Window->Render();
-    CompareWithReference(Capture(this->Window), this->Reference, row);
+    CompareWithReference(ClusteredLightingImages::CaptureRGB(this->Window), this->Reference, row);
     if (clustered && counts)
     {
       this->MeasureCounts(row);
@@ -376,7 +346,7 @@ struct Context
     SetView(this->Current, this->Renderer);
     this->Pass->SetShadingMode(vtkClusteredLightingPass::SHADING_BRUTE_FORCE);
     this->Window->Render();
-    this->Reference = Capture(this->Window);
+    this->Reference = ClusteredLightingImages::CaptureRGB(this->Window);
     this->Pass->SetShadingMode(vtkClusteredLightingPass::SHADING_CLUSTERED);
     int* size = this->Window->GetSize();
     std::vector<float> depth(static_cast<std::size_t>(size[0]) * size[1]);
@@ -773,7 +743,7 @@ int main(int argc, char* argv[])
     ctx.MakeLights(512, "uniform");
     SetView(s, ctx.Renderer);
     ctx.Window->Render();
-    WritePNG(ctx.Window, opt.SnapshotFile);
+    ClusteredLightingImages::WritePNG(ctx.Window, opt.SnapshotFile);
     return EXIT_SUCCESS;
   }
 

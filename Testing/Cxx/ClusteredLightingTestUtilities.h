@@ -4,6 +4,7 @@
 #ifndef ClusteredLightingTestUtilities_h
 #define ClusteredLightingTestUtilities_h
 
+#include "ClusteredLightingImages.h"
 #include "vtkClusteredLightingFrameState.h"
 #include "vtkClusteredLightingPass.h"
 #include "vtkClusteredLightingReference.h"
@@ -11,7 +12,6 @@
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkCommand.h"
-#include "vtkImageData.h"
 #include "vtkNew.h"
 #include "vtkPlaneSource.h"
 #include "vtkPointData.h"
@@ -21,8 +21,6 @@
 #include "vtkShader.h"
 #include "vtkShaderProgram.h"
 #include "vtkSmartPointer.h"
-#include "vtkUnsignedCharArray.h"
-#include "vtkWindowToImageFilter.h"
 
 #include <cmath>
 #include <cstdio>
@@ -98,20 +96,7 @@ inline vtkActor* AddFloor(vtkRenderer* ren, double halfSize, int resolution = 1)
 /// RGB pixels of the window's back buffer as floats in [0, 1] (render first).
 inline std::vector<float> CapturePixels(vtkRenderWindow* rw)
 {
-  vtkNew<vtkWindowToImageFilter> w2i;
-  w2i->SetInput(rw);
-  w2i->SetInputBufferTypeToRGB();
-  w2i->ReadFrontBufferOff();
-  w2i->ShouldRerenderOff();
-  w2i->Update();
-  vtkUnsignedCharArray* a =
-    vtkUnsignedCharArray::SafeDownCast(w2i->GetOutput()->GetPointData()->GetScalars());
-  std::vector<float> out(static_cast<std::size_t>(a->GetNumberOfValues()));
-  for (vtkIdType i = 0; i < a->GetNumberOfValues(); ++i)
-  {
-    out[static_cast<std::size_t>(i)] = a->GetValue(i) / 255.0f;
-  }
-  return out;
+  return ClusteredLightingImages::CaptureRGB(rw);
 }
 
 struct ImageComparison

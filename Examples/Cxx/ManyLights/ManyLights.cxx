@@ -14,6 +14,7 @@
 //
 //   ManyLights [--lights N] [--size W H] [--frames F] [--brute-frames B]
 //              [--subdivide L] [--output image.png] [--heatmap heat.png] [-I]
+#include "ClusteredLightingImages.h"
 #include "ClusteredLightingScenes.h"
 
 #include "vtkCamera.h"
@@ -22,11 +23,9 @@
 #include "vtkInteractorStyleTrackballCamera.h"
 #include "vtkLight.h"
 #include "vtkNew.h"
-#include "vtkPNGWriter.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderWindowInteractor.h"
 #include "vtkRenderer.h"
-#include "vtkWindowToImageFilter.h"
 
 #include <cstdio>
 #include <cstdlib>
@@ -36,16 +35,6 @@
 
 namespace
 {
-void WritePNG(vtkRenderWindow* rw, const std::string& path)
-{
-  vtkNew<vtkWindowToImageFilter> w2i;
-  w2i->SetInput(rw);
-  w2i->ReadFrontBufferOff();
-  vtkNew<vtkPNGWriter> writer;
-  writer->SetInputConnection(w2i->GetOutputPort());
-  writer->SetFileName(path.c_str());
-  writer->Write();
-}
 }
 
 int main(int argc, char* argv[])
@@ -160,7 +149,7 @@ int main(int argc, char* argv[])
   // reassigns the lights, so the time includes the list and master passes.
   renWin->Render();
   renWin->Render();
-  WritePNG(renWin, output);
+  ClusteredLightingImages::WritePNG(renWin, output);
   std::vector<double> clusteredMs, assignMs;
   pass->MeasureTimingsOn();
   for (int f = 0; f < frames; ++f)
@@ -177,7 +166,7 @@ int main(int argc, char* argv[])
   {
     pass->SetDebugView(vtkClusteredLightingPass::DEBUG_HEAT_MAP);
     renWin->Render();
-    WritePNG(renWin, heatmap);
+    ClusteredLightingImages::WritePNG(renWin, heatmap);
     pass->SetDebugView(vtkClusteredLightingPass::DEBUG_NONE);
   }
 

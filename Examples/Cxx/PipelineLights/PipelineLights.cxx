@@ -16,6 +16,7 @@
 //
 //   PipelineLights [--lights N] [--size W H] [--frames F] [--output image.png]
 //                  [--heatmap heat.png] [-I]
+#include "ClusteredLightingImages.h"
 #include "ClusteredLightingScenes.h"
 
 #include "vtkArrayCalculator.h"
@@ -27,14 +28,12 @@
 #include "vtkInteractorStyleTrackballCamera.h"
 #include "vtkLight.h"
 #include "vtkNew.h"
-#include "vtkPNGWriter.h"
 #include "vtkPointSource.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderWindowInteractor.h"
 #include "vtkRenderer.h"
 #include "vtkTransform.h"
 #include "vtkTransformPolyDataFilter.h"
-#include "vtkWindowToImageFilter.h"
 
 #include <cstdio>
 #include <cstdlib>
@@ -43,17 +42,6 @@
 
 namespace
 {
-void WritePNG(vtkRenderWindow* rw, const std::string& path)
-{
-  vtkNew<vtkWindowToImageFilter> w2i;
-  w2i->SetInput(rw);
-  w2i->ReadFrontBufferOff();
-  vtkNew<vtkPNGWriter> writer;
-  writer->SetInputConnection(w2i->GetOutputPort());
-  writer->SetFileName(path.c_str());
-  writer->Write();
-}
-
 // The swarm at a given angle: flattened to a band 0.05-0.95 above the floor (y = -1),
 // turned about the vertical axis.
 void PlaceSwarm(vtkTransform* transform, double degrees)
@@ -225,12 +213,12 @@ int main(int argc, char* argv[])
       ok = false;
     }
   }
-  WritePNG(renWin, output);
+  ClusteredLightingImages::WritePNG(renWin, output);
   if (!heatmap.empty())
   {
     pass->SetDebugView(vtkClusteredLightingPass::DEBUG_HEAT_MAP);
     renWin->Render();
-    WritePNG(renWin, heatmap);
+    ClusteredLightingImages::WritePNG(renWin, heatmap);
     pass->SetDebugView(vtkClusteredLightingPass::DEBUG_NONE);
   }
 

@@ -1,16 +1,23 @@
 #!/usr/bin/env bash
 # Runs ctest in the current build directory under an X display (scripts/with-display.sh)
 # with the given arguments. If a test fails, the output of each failing test is printed
-# once more at the very end (its last 100 lines, from Testing/Temporary/LastTest.log), so
-# that the tail of a CI log shows why, not only which, and the failing tests are run once
-# more (the result stays a failure even if they pass then).
+# once more (its last 100 lines, from Testing/Temporary/LastTest.log) just before ctest's
+# summary ("NN% tests passed, ..."), which is held back until then: a CI log read from its
+# summary backwards shows why, not only which. Then the failing tests are run once more
+# (the result stays a failure even if they pass then).
 # Usage (from a build directory): scripts/run-ctest.sh [ctest args...]
 set -uo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
-"$root/scripts/with-display.sh" ctest --output-on-failure --timeout 900 "$@"
-rc=$?
+summary="$(mktemp "${TMPDIR:-/tmp}/ctest-summary.XXXXXX")"
+trap 'rm -f "$summary"' EXIT
+# Streams ctest's output as it comes, but keeps its summary for the end.
+"$root/scripts/with-display.sh" ctest --output-on-failure --timeout 900 "$@" 2>&1 |
+  awk -v held="$summary" '
+    /^[0-9]+% tests passed, [0-9]+ tests? failed out of [0-9]+/ { hold = 1 }
+    hold { print > held; next }
+    { print; fflush() }'
+rc=${PIPESTATUS[0]}
 if [ "$rc" -ne 0 ] && [ -f Testing/Temporary/LastTest.log ]; then
-  echo
   echo "=== ctest failed (exit code $rc): output of the failing tests ==="
   # Each failing test's block of LastTest.log runs from its "Testing: <name>" line to its
   # "time elapsed" line (output, result, and the reason when ctest gives one).
@@ -23,6 +30,10 @@ if [ "$rc" -ne 0 ] && [ -f Testing/Temporary/LastTest.log ]; then
     ' Testing/Temporary/LastTest.log | tail -n 100
   done
   echo "=== end of the failing tests' output ==="
+  echo
+fi
+cat "$summary"
+if [ "$rc" -ne 0 ] && [ -f Testing/Temporary/LastTest.log ]; then
   # Once more, to tell a failure that repeats from one that does not; the exit code stays
   # that of the first run either way.
   echo "=== running the failing tests once more ==="

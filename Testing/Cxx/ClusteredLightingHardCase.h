@@ -129,6 +129,17 @@ inline void AddRoom(vtkRenderer* ren, double size = 10.0, const double center[3]
   }
 }
 
+/// The hard-case window: 160 x 120, no multisampling, `ren` without VTK's automatic
+/// headlight, showing AddRoom's room.
+inline void SetUpRoomWindow(vtkRenderWindow* renWin, vtkRenderer* ren)
+{
+  renWin->SetSize(160, 120);
+  renWin->SetMultiSamples(0);
+  ren->AutomaticLightCreationOff();
+  renWin->AddRenderer(ren);
+  AddRoom(ren);
+}
+
 /**
  * Light i of `lights` at p whose influence radius at the pass's cutoff is exactly `radius`:
  * attenuation (1, 0, k) with k = (intensity / cutoff - 1) / radius^2, so the light is at the

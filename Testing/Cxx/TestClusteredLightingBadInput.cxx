@@ -19,12 +19,8 @@ int TestClusteredLightingBadInput(int, char*[])
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const double inf = std::numeric_limits<double>::infinity();
   vtkNew<vtkRenderWindow> renWin;
-  renWin->SetSize(160, 120);
-  renWin->SetMultiSamples(0);
   vtkNew<vtkRenderer> ren;
-  ren->AutomaticLightCreationOff();
-  renWin->AddRenderer(ren);
-  AddRoom(ren);
+  SetUpRoomWindow(renWin, ren);
   vtkCamera* cam = ren->GetActiveCamera();
   cam->SetPosition(0.3, 0.2, 3.0);
   cam->SetFocalPoint(0, 0, -2);

@@ -14,12 +14,8 @@ int TestClusteredLightingHardCasesCounts(int, char*[])
 {
   int failures = 0;
   vtkNew<vtkRenderWindow> renWin;
-  renWin->SetSize(160, 120);
-  renWin->SetMultiSamples(0);
   vtkNew<vtkRenderer> ren;
-  ren->AutomaticLightCreationOff();
-  renWin->AddRenderer(ren);
-  AddRoom(ren);
+  SetUpRoomWindow(renWin, ren);
   // Lights in the part of the room the camera sees (around the central sphere), so that
   // every count case lights something.
   const double visible[3] = { 0.0, 0.0, -2.75 };

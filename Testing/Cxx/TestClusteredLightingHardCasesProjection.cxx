@@ -29,12 +29,8 @@ int TestClusteredLightingHardCasesProjection(int, char*[])
 {
   int failures = 0;
   vtkNew<vtkRenderWindow> renWin;
-  renWin->SetSize(160, 120);
-  renWin->SetMultiSamples(0);
   vtkNew<vtkRenderer> ren;
-  ren->AutomaticLightCreationOff();
-  renWin->AddRenderer(ren);
-  AddRoom(ren);
+  SetUpRoomWindow(renWin, ren);
   vtkNew<vtkClusteredLightSet> lights;
   MakeRoomLights(lights, 300, 2.0, 17);
   vtkNew<vtkClusteredLightingPass> pass;

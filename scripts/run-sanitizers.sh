@@ -24,12 +24,13 @@ shift || true
 # intercept_tls_get_addr=0: GCC 12's __tls_get_addr interceptor misreads a dynamic TLS
 # block that malloc placed 16 bytes into a page (it takes it for a pre-2.25 glibc block
 # with a header) and LeakSanitizer's tracer dies on the bogus range at exit ("Tracer
-# caught signal 11"; google/sanitizers#1322). Mesa's and LLVM's thread_local data are
-# such blocks, and where malloc puts them depends on the heap's history (here it ends
-# TestClusteredLightingBadInput, run directly with LP_NUM_THREADS=1, 20 times in 20; the
-# likely cause of that test's two CI failures). Sanitizers.LeakCheckDynamicTls provokes
-# it every time. Without the interceptor the leak check no longer takes dynamic TLS blocks as roots
-# of their own; fewer roots can only add leak reports, never hide one.
+# caught signal 11"; google/sanitizers#1322). Libraries loaded with dlopen, Mesa's GL
+# libraries among them, keep their thread_local data in such blocks, and where malloc
+# puts them depends on the heap's history (here it ends TestClusteredLightingBadInput, run
+# directly with LP_NUM_THREADS=1, 20 times in 20; the likely cause of that test's two CI
+# failures). Sanitizers.LeakCheckDynamicTls provokes it on every run. Without the
+# interceptor the leak check no longer takes dynamic TLS blocks as roots of their own;
+# fewer roots can only add leak reports, never hide one.
 export ASAN_OPTIONS="detect_leaks=1:detect_stack_use_after_return=1:check_initialization_order=1:strict_init_order=1:halt_on_error=1:intercept_tls_get_addr=0"
 export LSAN_OPTIONS="suppressions=$root/Testing/Sanitizers/lsan.supp:print_suppressions=1"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"

@@ -80,8 +80,9 @@ int TestClusteredLightingHardCasesPlacement(int, char*[])
 {
   int failures = 0;
   const double nearVC = 0.5, farVC = 9.0;
-  // One window for every case: VTK 9.1's X11 windows, destroyed and re-created in quick
-  // succession under Xvfb, occasionally fail to reopen the display.
+  // One window for every case: destroying a window and creating another reopens the X
+  // display, which fails on a server that resets when its last client leaves (see
+  // Display.ReopenAfterLastClient).
   Fixture f;
   {
     f.Lights->SetNumberOfLights(1);

@@ -87,9 +87,10 @@ int Expect(bool condition, const char* what)
 int TestClusteredLightingVariants(int, char*[])
 {
   int failures = 0;
-  // One window for both parts: VTK 9.1 under Xvfb can lose the X connection when a window
-  // is destroyed and another one created in the same process, so each part uses its own
-  // renderer in this window instead.
+  // One window for both parts, each with its own renderer: destroying a window and
+  // creating another reopens the X display, which fails on a server that resets when its
+  // last client leaves (scripts/with-display.sh starts Xvfb with -noreset; see
+  // Display.ReopenAfterLastClient). One window keeps this test independent of that.
   vtkNew<vtkRenderWindow> renWin;
   renWin->SetSize(320, 200);
   renWin->SetMultiSamples(0);

@@ -7,19 +7,19 @@
 // reads the block's address and size from the two words before it. Today's glibc has no
 // such header: those words belong to the allocator, the range is bogus, and
 // LeakSanitizer's tracer dies scanning it ("Tracer caught signal 11", "LeakSanitizer has
-// encountered a fatal error"; google/sanitizers#1322). That failed
+// encountered a fatal error"; google/sanitizers#1322). That most likely failed
 // TestClusteredLightingBadInput in CI, where malloc happened to put one of Mesa's blocks
 // at such an address. Here ASan's allocator puts the 40-byte block of
-// ClusteredLightingDynamicTlsModule at page offset 16 every time, so the crash is certain
-// unless scripts/run-sanitizers.sh turns the interceptor off (intercept_tls_get_addr=0).
+// ClusteredLightingDynamicTlsModule at page offset 16 in every thread (64 of 64, in every
+// run), so the crash is certain unless scripts/run-sanitizers.sh turns the interceptor
+// off (intercept_tls_get_addr=0).
 //
 // Usage: ClusteredLightingDynamicTlsCheck <module>
-// Exit code 0: the blocks were at page offset 16 and the leak check ran to its end.
+// Exit code 0: blocks were at page offset 16 and the leak check ran to its end.
 // Exit code 1: the module could not be loaded, or no block was at page offset 16 (the
 // check would prove nothing; the block's size needs revisiting for this allocator).
 #include <dlfcn.h> // for dlopen
 
-#include <atomic>
 #include <condition_variable>
 #include <cstdint>
 #include <cstdio>
@@ -65,7 +65,7 @@ int main(int argc, char* argv[])
     std::printf("cannot load %s: %s\n", argv[1], dlerror());
     return 1;
   }
-  const int numberOfThreads = 4;
+  const int numberOfThreads = 64;
   for (int i = 0; i < numberOfThreads; ++i)
   {
     std::thread(Run, touch).detach();

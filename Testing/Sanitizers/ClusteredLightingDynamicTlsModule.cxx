@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Sanitizer builds only: a loadable module with one small thread_local block, for
-// ClusteredLightingDynamicTlsCheck. Mesa's driver and LLVM are such modules: their
-// thread_local data lives in dynamic TLS blocks that glibc mallocs per thread, on first
-// use, through __tls_get_addr.
+// ClusteredLightingDynamicTlsCheck. Like Mesa's GL libraries, which are loaded with
+// dlopen too, its thread_local data lives in dynamic TLS blocks that glibc mallocs per
+// thread, on first use, through __tls_get_addr.
 extern "C"
 {
   __attribute__((visibility("default"))) char* ClusteredLightingTouchDynamicTls();

@@ -17,7 +17,9 @@ trap 'rm -f "$summary"' EXIT
     hold { print > held; next }
     { print; fflush() }'
 rc=${PIPESTATUS[0]}
-if [ "$rc" -ne 0 ] && [ -f Testing/Temporary/LastTest.log ]; then
+failed=false
+[ "$rc" -ne 0 ] && [ -f Testing/Temporary/LastTest.log ] && failed=true
+if $failed; then
   echo "=== ctest failed (exit code $rc): output of the failing tests ==="
   # Each failing test's block of LastTest.log runs from its "Testing: <name>" line to its
   # "time elapsed" line (output, result, and the reason when ctest gives one).
@@ -33,7 +35,7 @@ if [ "$rc" -ne 0 ] && [ -f Testing/Temporary/LastTest.log ]; then
   echo
 fi
 cat "$summary"
-if [ "$rc" -ne 0 ] && [ -f Testing/Temporary/LastTest.log ]; then
+if $failed; then
   # Once more, to tell a failure that repeats from one that does not; the exit code stays
   # that of the first run either way.
   echo "=== running the failing tests once more ==="

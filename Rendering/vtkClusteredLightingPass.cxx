@@ -265,21 +265,36 @@ int vtkClusteredLightingPass::GetNumberOfGLObjects() const
 //------------------------------------------------------------------------------
 void vtkClusteredLightingPass::ReleaseGraphicsResources(vtkWindow* w)
 {
-  this->Superclass::ReleaseGraphicsResources(w);
+  // A null window means every window the pass rendered into. VTK's own passes need a
+  // window (VTK 9.2 asserts w != nullptr in vtkRenderPass::ReleaseGraphicsResources), so
+  // they are released once per known window.
+  std::set<vtkWindow*> windows;
   for (auto& it : this->Internals->States)
   {
     vtkClusteredLightingRendererState* state = it.second.get();
     if (!w || state->Window == w)
     {
+      if (state->Window)
+      {
+        windows.insert(state->Window.GetPointer());
+      }
       state->GPU.ReleaseGraphicsResources(w ? w : state->Window.GetPointer());
       state->LightDataUploaded = false;
       state->AssignmentValid = false;
       state->ViewSignature.clear();
     }
   }
-  if (this->DelegatePass)
+  if (w)
   {
-    this->DelegatePass->ReleaseGraphicsResources(w);
+    windows.insert(w);
+  }
+  for (vtkWindow* window : windows)
+  {
+    this->Superclass::ReleaseGraphicsResources(window);
+    if (this->DelegatePass)
+    {
+      this->DelegatePass->ReleaseGraphicsResources(window);
+    }
   }
 }
 

@@ -1,18 +1,15 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkClusteredLightingPass.h"
 
+#include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkClusteredLightSet.h"
-#include "vtkClusteredLightingAssignment.h"
-#include "vtkClusteredLightingFrameState.h"
-#include "vtkClusteredLightingGPUResources.h"
+#include "vtkClusteredLightingAssigner.h"
+#include "vtkClusteredLightingLightCollector.h"
 #include "vtkClusteredLightingShaderVariant.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
-#include "vtkMatrix3x3.h"
-#include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
-#include "vtkOpenGLCamera.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLRenderer.h"
 #include "vtkProperty.h"
@@ -20,16 +17,13 @@
 #include "vtkRenderStepsPass.h"
 #include "vtkShaderProgram.h"
 #include "vtkSmartPointer.h"
-#include "vtkTextureObject.h"
 #include "vtkWeakPointer.h"
-#include "vtk_glew.h" // for glFinish, GL limits
+#include "vtk_glew.h" // for glFinish
 
 #include <algorithm> // for std::find
 #include <chrono>    // for timings
-#include <cstring>   // for std::memcpy
 #include <map>       // for std::map
 #include <set>       // for std::set
-#include <sstream>   // for std::ostringstream
 
 using namespace vtkClusteredLighting;
 
@@ -58,112 +52,65 @@ protected:
 };
 vtkStandardNewMacro(vtkClusteredLightingTranslucentStep)
 
-  glm::dmat4 ToGLM(vtkMatrix4x4* m)
-{
-  glm::dmat4 g;
-  for (int r = 0; r < 4; ++r)
-  {
-    for (int c = 0; c < 4; ++c)
-    {
-      g[c][r] = m->GetElement(r, c);
-    }
-  }
-  return g;
-}
-
-double Milliseconds(
-  std::chrono::steady_clock::time_point a, std::chrono::steady_clock::time_point b)
+  double Milliseconds(
+    std::chrono::steady_clock::time_point a, std::chrono::steady_clock::time_point b)
 {
   return std::chrono::duration<double, std::milli>(b - a).count();
+}
+
+vtkClusteredLightingShaderVariant::Debug ToVariantDebug(int view)
+{
+  using Debug = vtkClusteredLightingShaderVariant::Debug;
+  switch (view)
+  {
+    case vtkClusteredLightingPass::DEBUG_CLUSTER_INDEX:
+      return Debug::ClusterIndex;
+    case vtkClusteredLightingPass::DEBUG_HEAT_MAP:
+      return Debug::HeatMap;
+    case vtkClusteredLightingPass::DEBUG_EVALUATED_COUNT:
+      return Debug::EvaluatedCount;
+    case vtkClusteredLightingPass::DEBUG_REACHED_COUNT:
+      return Debug::ReachedCount;
+    case vtkClusteredLightingPass::DEBUG_NON_FINITE:
+      return Debug::NonFinite;
+    default:
+      return Debug::None;
+  }
 }
 }
 
 //------------------------------------------------------------------------------
-// Everything the pass keeps per renderer.
-struct vtkClusteredLightingRendererState
-{
-  vtkWeakPointer<vtkRenderer> Renderer;
-  vtkWeakPointer<vtkOpenGLRenderWindow> Window;
-  vtkClusteredLightingGPUResources GPU;
-
-  // Lights: signature of what they were prepared from, and the result.
-  std::vector<vtkTypeUInt64> LightSignature;
-  PreparedLights Prepared;
-  double EffectiveCutoff = 1.0 / 1024.0;
-  std::set<std::string> ReportedProblems;
-  unsigned long LightsVersion = 0;
-  bool LightDataUploaded = false;
-
-  // View: signature of the last assignment.
-  std::vector<double> ViewSignature;
-  bool AssignmentValid = false;
-  int NumberOfQuads = 0;
-  int NumberOfAssignedLights = 0;
-  bool LayoutOK = false;
-  std::string LayoutError;
-
-  vtkClusteredLightingFrameState Frame;
-  glm::dmat4 VCDC = glm::dmat4(1.0);
-  double SliceParameters[4] = { 0, 0, 0, 0 };
-};
-
+// One assigner per renderer (it owns that renderer's GL objects), and what the shader
+// hooks need while the delegate renders.
 struct vtkClusteredLightingPass::vtkInternals
 {
-  // The steps of Render(), in order (a nested class sees the pass's options).
-  struct Frame;
-  void SetUpCamera(vtkClusteredLightingPass* self, Frame& f);
-  void PartitionRendererLights(vtkClusteredLightingPass* self, Frame& f);
-  void PrepareLightsIfChanged(vtkClusteredLightingPass* self, Frame& f);
-  void CheckLimits(vtkClusteredLightingPass* self, Frame& f);
-  void ComputeView(vtkClusteredLightingPass* self, Frame& f);
-  void UpdateAssignment(vtkClusteredLightingPass* self, Frame& f);
-  void UpdateShaderVariant(vtkClusteredLightingPass* self, Frame& f);
-  void RenderDelegate(vtkClusteredLightingPass* self, const vtkRenderState* s, Frame& f);
-
+  struct RendererEntry
+  {
+    vtkWeakPointer<vtkRenderer> Renderer;
+    std::unique_ptr<vtkClusteredLightingAssigner> Assigner;
+  };
+  std::map<vtkRenderer*, RendererEntry> Renderers;
   std::vector<vtkSmartPointer<vtkClusteredLightSet>> LightSets;
-  std::map<vtkRenderer*, std::unique_ptr<vtkClusteredLightingRendererState>> States;
-  vtkClusteredLightingRendererState* Current = nullptr;
-  vtkClusteredLightingShaderVariant Variant; ///< global part for the current render
+  vtkClusteredLightingAssigner* Current = nullptr; ///< during Render()
+  vtkClusteredLightingShaderVariant Variant;       ///< global part for the current render
   vtkTimeStamp ShaderStageTime;
   vtkNew<vtkLight> PlaceholderLight;
 
-  vtkClusteredLightingRendererState* GetState(vtkRenderer* ren, vtkOpenGLRenderWindow* rw)
+  vtkClusteredLightingAssigner* GetAssigner(vtkRenderer* ren)
   {
-    // Forget renderers that were deleted (their window may still own the GL objects;
-    // the release makes that window's context current and restores the current one).
-    for (auto it = this->States.begin(); it != this->States.end();)
+    // Forget renderers that were deleted: their assigner releases its GL objects in its
+    // window's context (and restores the current one).
+    for (auto it = this->Renderers.begin(); it != this->Renderers.end();)
     {
-      if (!it->second->Renderer)
-      {
-        if (it->second->Window)
-        {
-          it->second->GPU.ReleaseGraphicsResources(it->second->Window);
-        }
-        it = this->States.erase(it);
-      }
-      else
-      {
-        ++it;
-      }
+      it = it->second.Renderer ? std::next(it) : this->Renderers.erase(it);
     }
-    auto& state = this->States[ren];
-    if (!state)
+    RendererEntry& entry = this->Renderers[ren];
+    if (!entry.Assigner)
     {
-      state.reset(new vtkClusteredLightingRendererState);
-      state->Renderer = ren;
+      entry.Renderer = ren;
+      entry.Assigner.reset(new vtkClusteredLightingAssigner);
     }
-    if (state->Window != rw)
-    {
-      if (state->Window)
-      {
-        state->GPU.ReleaseGraphicsResources(state->Window);
-      }
-      state->Window = rw;
-      state->LightDataUploaded = false;
-      state->AssignmentValid = false;
-      state->ViewSignature.clear();
-    }
-    return state.get();
+    return entry.Assigner.get();
   }
 };
 
@@ -255,9 +202,9 @@ vtkTypeInt64 vtkClusteredLightingPass::GetMaximumNumberOfLights(
 int vtkClusteredLightingPass::GetNumberOfGLObjects() const
 {
   int n = 0;
-  for (const auto& it : this->Internals->States)
+  for (const auto& it : this->Internals->Renderers)
   {
-    n += it.second->GPU.GetNumberOfGLObjects();
+    n += it.second.Assigner->GetNumberOfGLObjects();
   }
   return n;
 }
@@ -269,19 +216,17 @@ void vtkClusteredLightingPass::ReleaseGraphicsResources(vtkWindow* w)
   // window (VTK 9.2 asserts w != nullptr in vtkRenderPass::ReleaseGraphicsResources), so
   // they are released once per known window.
   std::set<vtkWindow*> windows;
-  for (auto& it : this->Internals->States)
+  for (auto& it : this->Internals->Renderers)
   {
-    vtkClusteredLightingRendererState* state = it.second.get();
-    if (!w || state->Window == w)
+    vtkClusteredLightingAssigner* assigner = it.second.Assigner.get();
+    vtkWindow* own = assigner->GetWindow();
+    if (!w || own == w)
     {
-      if (state->Window)
+      if (own)
       {
-        windows.insert(state->Window.GetPointer());
+        windows.insert(own);
       }
-      state->GPU.ReleaseGraphicsResources(w ? w : state->Window.GetPointer());
-      state->LightDataUploaded = false;
-      state->AssignmentValid = false;
-      state->ViewSignature.clear();
+      assigner->ReleaseGraphicsResources(w ? w : own);
     }
   }
   if (w)
@@ -299,34 +244,15 @@ void vtkClusteredLightingPass::ReleaseGraphicsResources(vtkWindow* w)
 }
 
 //------------------------------------------------------------------------------
-// What one Render() works with, step to step.
-struct vtkClusteredLightingPass::vtkInternals::Frame
-{
-  vtkOpenGLRenderer* Renderer = nullptr;
-  vtkOpenGLRenderWindow* Window = nullptr;
-  vtkClusteredLightingRendererState* State = nullptr;
-  std::vector<vtkSmartPointer<vtkLight>> AllLights;   ///< the renderer's, in order
-  std::vector<vtkSmartPointer<vtkLight>> StockLights; ///< left to VTK's lighting code
-  std::vector<vtkLight*> ClusteredVTKLights;
-  ClusterTextureLayout Layout;
-  ViewParameters View;
-  bool Clustered = true;
-  bool Linear = false;
-  bool Enabled = false;
-  int ViewportOrigin[2] = { 0, 0 };
-};
-
-//------------------------------------------------------------------------------
+// The stages, in order: light gathering, assignment, shading.
 void vtkClusteredLightingPass::Render(const vtkRenderState* s)
 {
   this->NumberOfRenderedProps = 0;
   this->LastAssignmentUpdated = false;
-  vtkInternals::Frame frame;
-  frame.Renderer = vtkOpenGLRenderer::SafeDownCast(s->GetRenderer());
-  frame.Window = frame.Renderer
-    ? vtkOpenGLRenderWindow::SafeDownCast(frame.Renderer->GetRenderWindow())
-    : nullptr;
-  if (!frame.Renderer || !frame.Window)
+  vtkOpenGLRenderer* ren = vtkOpenGLRenderer::SafeDownCast(s->GetRenderer());
+  vtkOpenGLRenderWindow* rw =
+    ren ? vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow()) : nullptr;
+  if (!ren || !rw)
   {
     vtkErrorMacro("vtkClusteredLightingPass needs an OpenGL renderer and render window.");
     return;
@@ -336,456 +262,168 @@ void vtkClusteredLightingPass::Render(const vtkRenderState* s)
     vtkWarningMacro("No delegate pass: nothing is rendered.");
     return;
   }
-  frame.State = this->Internals->GetState(frame.Renderer, frame.Window);
-  frame.Clustered = this->ShadingMode == SHADING_CLUSTERED;
-  this->Internals->Current = frame.State;
+  this->SetUpCamera(ren);
 
-  this->Internals->SetUpCamera(this, frame);
-  this->Internals->PartitionRendererLights(this, frame);
-  this->Internals->PrepareLightsIfChanged(this, frame);
-  this->Internals->CheckLimits(this, frame);
-  this->Internals->ComputeView(this, frame);
-  this->Internals->UpdateAssignment(this, frame);
-  this->Internals->UpdateShaderVariant(this, frame);
-  this->Internals->RenderDelegate(this, s, frame);
+  // 1. Light gathering.
+  vtkClusteredLightingLightCollection lights;
+  vtkClusteredLightingLightCollector::CollectRendererLights(
+    ren, this->ClusterRendererLights, lights);
+  vtkClusteredLightingLightCollector::CollectLightSets(this->Internals->LightSets, lights);
+
+  // 2. Assignment.
+  vtkClusteredLightingAssigner* assigner = this->Internals->GetAssigner(ren);
+  const vtkClusteredLightingAssignment& result =
+    assigner->Update(rw, this->MakeAssignerInputs(ren, lights));
+  this->ReportAssignment(result);
+
+  // 3. Shading.
+  this->UpdateShaderVariant(result);
+  this->Internals->Current = assigner;
+  this->RenderDelegate(s, lights, assigner);
   this->Internals->Current = nullptr;
 }
 
 //------------------------------------------------------------------------------
-void vtkClusteredLightingPass::vtkInternals::SetUpCamera(vtkClusteredLightingPass* self, Frame& f)
+void vtkClusteredLightingPass::SetUpCamera(vtkRenderer* ren)
 {
   // VTK's pass-less pipeline sets the camera's stereo flag in vtkOpenGLCamera::Render;
   // vtkCameraPass does not, so under a render pass every eye would render the same (mono)
   // view. When the flag disagrees with the window, set the camera up as VTK's own
   // pipeline does (viewport, scissor, clear and stereo flag).
-  if (f.Renderer->GetActiveCamera()->GetStereo() != f.Window->GetStereoRender())
+  if (ren->GetActiveCamera()->GetStereo() != ren->GetRenderWindow()->GetStereoRender())
   {
-    self->UpdateCamera(f.Renderer);
+    this->UpdateCamera(ren);
   }
   // Camera lights and headlights follow the camera before they are read.
-  self->UpdateLightGeometry(f.Renderer);
+  this->UpdateLightGeometry(ren);
 }
 
 //------------------------------------------------------------------------------
-void vtkClusteredLightingPass::vtkInternals::PartitionRendererLights(
-  vtkClusteredLightingPass* self, Frame& f)
+vtkClusteredLightingAssignerInputs vtkClusteredLightingPass::MakeAssignerInputs(
+  vtkRenderer* ren, vtkClusteredLightingLightCollection& lights) const
 {
-  vtkLightCollection* lights = f.Renderer->GetLights();
-  vtkCollectionSimpleIterator it;
-  vtkLight* light;
-  bool anyOn = false;
-  for (lights->InitTraversal(it); (light = lights->GetNextLight(it));)
-  {
-    anyOn = anyOn || light->GetSwitch();
-  }
-  if (!anyOn && f.Renderer->GetAutomaticLightCreation())
-  {
-    f.Renderer->CreateLight(); // what VTK would do in UpdateLights
-  }
-  for (lights->InitTraversal(it); (light = lights->GetNextLight(it));)
-  {
-    f.AllLights.emplace_back(light);
-    if (self->ClusterRendererLights && light->GetSwitch() && light->GetPositional())
-    {
-      f.ClusteredVTKLights.push_back(light);
-    }
-    else
-    {
-      f.StockLights.emplace_back(light);
-    }
-  }
+  vtkClusteredLightingAssignerInputs in;
+  in.Lights = &lights;
+  in.Preparation.Cutoff = this->Cutoff;
+  in.Preparation.MortonOrder = this->MortonOrder;
+  in.ErrorBudget = this->ErrorBudget;
+  in.Windowed = this->Falloff == FALLOFF_WINDOWED;
+  vtkClusteredLightingGridOptions grid;
+  grid.TilesX = this->TilesX;
+  grid.TilesY = this->TilesY;
+  grid.Slices = this->Slices;
+  grid.Scheme = this->SlicingScheme == SLICING_LINEAR
+    ? vtkClusteredLightingGridOptions::Slicing::Linear
+    : this->SlicingScheme == SLICING_EXPONENTIAL
+    ? vtkClusteredLightingGridOptions::Slicing::Exponential
+    : vtkClusteredLightingGridOptions::Slicing::Auto;
+  grid.Bounds = this->BoundsMethod == BOUNDS_CENTER_DEPTH_QUAD ? BoundsMethod::CenterDepthQuad
+                                                               : BoundsMethod::Tangent;
+  in.View = vtkClusteredLightingAssigner::ComputeView(ren, grid);
+  in.Clustered = this->ShadingMode == SHADING_CLUSTERED;
+  in.PerClusterCulling = this->PerClusterCulling;
+  in.MaximumTextureSize = this->MaximumTextureSize;
+  in.MeasureTimings = this->MeasureTimings;
+  return in;
 }
 
 //------------------------------------------------------------------------------
-void vtkClusteredLightingPass::vtkInternals::PrepareLightsIfChanged(
-  vtkClusteredLightingPass* self, Frame& f)
+// Messages and statistics of an assignment.
+void vtkClusteredLightingPass::ReportAssignment(const vtkClusteredLightingAssignment& r)
 {
-  // Signature of everything the prepared lights depend on.
-  std::vector<vtkTypeUInt64> signature;
-  auto bits = [](double v)
+  for (const std::string& problem : r.NewProblems)
   {
-    vtkTypeUInt64 u;
-    std::memcpy(&u, &v, sizeof(u));
-    return u;
-  };
-  signature.push_back(bits(self->Cutoff));
-  signature.push_back(bits(self->ErrorBudget));
-  signature.push_back(self->ErrorBudget > 0.0 ? static_cast<vtkTypeUInt64>(self->Falloff) : 0u);
-  signature.push_back(self->MortonOrder ? 1 : 0);
-  for (vtkLight* l : f.ClusteredVTKLights)
-  {
-    vtkMTimeType t = l->GetMTime();
-    if (l->GetTransformMatrix())
-    {
-      t = std::max(t, l->GetTransformMatrix()->GetMTime());
-    }
-    signature.push_back(reinterpret_cast<vtkTypeUInt64>(l));
-    signature.push_back(t);
+    vtkWarningMacro(<< problem);
   }
-  for (const auto& set : this->LightSets)
+  if (!r.NewError.empty())
   {
-    set->UpdateLights(); // a set fed by a pipeline reads its input here
-    signature.push_back(reinterpret_cast<vtkTypeUInt64>(set.Get()));
-    signature.push_back(set->GetEnabled() ? set->GetMTime() : 0);
+    vtkErrorMacro(<< r.NewError);
   }
-  if (signature != f.State->LightSignature)
+  this->EffectiveCutoff = r.EffectiveCutoff;
+  this->NumberOfClusteredLights = r.NumberOfLights;
+  this->NumberOfRejectedLights = r.NumberOfRejected;
+  this->NumberOfAlwaysOnLights = r.NumberOfAlwaysOn;
+  this->NumberOfLightsBelowCutoff = r.NumberOfBelowCutoff;
+  this->NumberOfSpotLights = r.NumberOfSpots;
+  this->NumberOfAssignedLights = r.NumberOfAssigned;
+  this->NumberOfLightUploads += r.LightsUploaded ? 1 : 0;
+  if (r.Reassigned)
   {
-    f.State->LightSignature = signature;
-    std::vector<LightSource> sources;
-    for (vtkLight* l : f.ClusteredVTKLights)
-    {
-      LightSource src;
-      const double* p = l->GetTransformedPosition();
-      const double* focal = l->GetTransformedFocalPoint();
-      src.PositionWC = glm::dvec3(p[0], p[1], p[2]);
-      src.DirectionWC = glm::dvec3(focal[0] - p[0], focal[1] - p[1], focal[2] - p[2]);
-      const double* c = l->GetDiffuseColor();
-      src.Color = glm::dvec3(c[0], c[1], c[2]);
-      src.Intensity = l->GetIntensity();
-      const double* a = l->GetAttenuationValues();
-      src.Attenuation = glm::dvec3(a[0], a[1], a[2]);
-      src.ConeAngle = l->GetConeAngle();
-      src.Exponent = l->GetExponent();
-      sources.push_back(src);
-    }
-    const std::size_t firstSetLight = sources.size();
-    std::vector<std::pair<vtkClusteredLightSet*, vtkIdType>> setOf;
-    for (const auto& set : this->LightSets)
-    {
-      if (!set->GetEnabled())
-      {
-        continue;
-      }
-      const vtkIdType n = set->GetNumberOfLights();
-      for (vtkIdType i = 0; i < n; ++i)
-      {
-        LightSource src;
-        double v[3];
-        set->GetPosition(i, v);
-        src.PositionWC = glm::dvec3(v[0], v[1], v[2]);
-        set->GetColor(i, v);
-        src.Color = glm::dvec3(v[0], v[1], v[2]);
-        src.Intensity = set->GetIntensity(i);
-        set->GetAttenuation(i, v);
-        src.Attenuation = glm::dvec3(v[0], v[1], v[2]);
-        src.HasRadius = set->HasRadius(i);
-        src.Radius = set->GetRadius(i);
-        src.ConeAngle = set->GetConeAngle(i);
-        src.Exponent = set->GetExponent(i);
-        set->GetSpotDirection(i, v);
-        src.DirectionWC = glm::dvec3(v[0], v[1], v[2]);
-        sources.push_back(src);
-        setOf.emplace_back(set.Get(), i);
-      }
-    }
-    auto nameOf = [&](std::size_t i)
-    {
-      std::ostringstream os;
-      if (i < firstSetLight)
-      {
-        os << "vtkLight " << f.ClusteredVTKLights[i] << " (renderer light " << i << ")";
-      }
-      else
-      {
-        const auto& so = setOf[i - firstSetLight];
-        os << "vtkClusteredLightSet " << so.first << " light " << so.second;
-      }
-      return os.str();
-    };
-    LightPreparationOptions options;
-    options.Cutoff = self->Cutoff;
-    options.MortonOrder = self->MortonOrder;
-    if (self->ErrorBudget > 0.0)
-    {
-      // Validate once, then pick the cutoff that meets the budget (see the header).
-      LightPreparationOptions probe = options;
-      probe.MortonOrder = false;
-      const PreparedLights valid = PrepareLights(sources, probe, nameOf);
-      options.Cutoff = ChooseCutoffForErrorBudget(valid.Lights, self->ErrorBudget,
-        ComputeErrorBudgetSamples(valid.Lights),
-        self->Falloff == vtkClusteredLightingPass::FALLOFF_WINDOWED);
-    }
-    f.State->EffectiveCutoff = options.Cutoff;
-    f.State->Prepared = PrepareLights(sources, options, nameOf);
-    // Warn once per problem: a bad light stays reported while it stays bad, even when
-    // other lights change every frame.
-    std::set<std::string> problems(
-      f.State->Prepared.Problems.begin(), f.State->Prepared.Problems.end());
-    for (const std::string& problem : problems)
-    {
-      if (!f.State->ReportedProblems.count(problem))
-      {
-        vtkWarningWithObjectMacro(self, << problem);
-      }
-    }
-    f.State->ReportedProblems.swap(problems);
-    ++f.State->LightsVersion;
-    f.State->LightDataUploaded = false;
+    this->LastAssignmentTime = r.AssignmentTime;
+    this->LastAssignmentUpdated = true;
+    ++this->NumberOfAssignmentUpdates;
   }
-  const PreparedLights& prepared = f.State->Prepared;
-  self->EffectiveCutoff = f.State->EffectiveCutoff;
-  const int numberOfLights = static_cast<int>(prepared.Lights.size());
-  self->NumberOfClusteredLights = numberOfLights;
-  self->NumberOfRejectedLights = static_cast<int>(prepared.Problems.size());
-  self->NumberOfAlwaysOnLights = static_cast<int>(prepared.NumberOfAlwaysOn);
-  self->NumberOfLightsBelowCutoff = static_cast<int>(prepared.NumberOfBelowCutoff);
-  self->NumberOfSpotLights = static_cast<int>(prepared.NumberOfSpots);
+  this->ListTextureBytes = r.ListBytes;
+  this->MasterTextureBytes = r.MasterBytes;
+  this->LightBufferBytes = r.LightBufferBytes;
 }
 
 //------------------------------------------------------------------------------
-void vtkClusteredLightingPass::vtkInternals::CheckLimits(vtkClusteredLightingPass* self, Frame& f)
-{
-  const int numberOfLights = static_cast<int>(f.State->Prepared.Lights.size());
-  f.Enabled = numberOfLights > 0;
-  if (f.Enabled)
-  {
-    int maxTexture = vtkTextureObject::GetMaximumTextureSize(f.Window);
-    if (self->MaximumTextureSize > 0)
-    {
-      maxTexture = std::min(maxTexture, self->MaximumTextureSize);
-    }
-    GLint maxBuffer = 0;
-    glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxBuffer);
-    std::string error;
-    bool ok = true;
-    if (static_cast<vtkTypeInt64>(numberOfLights) * 2 > maxBuffer)
-    {
-      std::ostringstream os;
-      os << numberOfLights << " lights need " << 2 * static_cast<vtkTypeInt64>(numberOfLights)
-         << " texels of light records, over GL_MAX_TEXTURE_BUFFER_SIZE " << maxBuffer;
-      error = os.str();
-      ok = false;
-    }
-    else if (f.Clustered)
-    {
-      ok = ComputeLayout(
-        self->TilesX, self->TilesY, self->Slices, numberOfLights, maxTexture, f.Layout, &error);
-    }
-    if (!ok)
-    {
-      if (error != f.State->LayoutError)
-      {
-        vtkErrorWithObjectMacro(self, "Clustered lights are not rendered: " << error << ".");
-      }
-      f.State->LayoutError = error;
-      f.Enabled = false;
-    }
-    else
-    {
-      f.State->LayoutError.clear();
-    }
-  }
-
-  // Light records are uploaded only when the lights changed.
-  if (f.Enabled && !f.State->LightDataUploaded)
-  {
-    f.State->GPU.UploadLightData(f.Window, PackLightData(f.State->Prepared.Lights));
-    f.State->LightDataUploaded = true;
-    ++self->NumberOfLightUploads;
-  }
-}
-
-//------------------------------------------------------------------------------
-void vtkClusteredLightingPass::vtkInternals::ComputeView(vtkClusteredLightingPass* self, Frame& f)
-{
-  vtkCamera* camera = f.Renderer->GetActiveCamera();
-  int width = 0, height = 0;
-  f.Renderer->GetTiledSizeAndOrigin(&width, &height, &f.ViewportOrigin[0], &f.ViewportOrigin[1]);
-  const bool parallel = camera->GetParallelProjection() != 0;
-  double range[2];
-  camera->GetClippingRange(range);
-  ViewParameters& view = f.View;
-  if (vtkOpenGLCamera* glCamera = vtkOpenGLCamera::SafeDownCast(camera))
-  {
-    // Exactly the matrices the mappers will use (VTK caches them per camera and renderer;
-    // they are stored transposed for GL).
-    vtkMatrix4x4* wcvc = nullptr;
-    vtkMatrix3x3* normals = nullptr;
-    vtkMatrix4x4* vcdc = nullptr;
-    vtkMatrix4x4* wcdc = nullptr;
-    glCamera->GetKeyMatrices(f.Renderer, wcvc, normals, vcdc, wcdc);
-    view.WCVC = glm::transpose(ToGLM(wcvc));
-    view.VCDC = glm::transpose(ToGLM(vcdc));
-  }
-  else
-  {
-    view.WCVC = ToGLM(camera->GetModelViewTransformMatrix());
-    view.VCDC =
-      ToGLM(camera->GetProjectionTransformMatrix(f.Renderer->GetTiledAspectRatio(), -1, 1));
-  }
-  view.Grid.TilesX = self->TilesX;
-  view.Grid.TilesY = self->TilesY;
-  view.Grid.Slices = self->Slices;
-  view.Grid.ViewportWidth = std::max(width, 1);
-  view.Grid.ViewportHeight = std::max(height, 1);
-  view.Grid.NearVC = range[0];
-  view.Grid.FarVC = range[1];
-  SanitizeDepthRange(view.Grid.NearVC, view.Grid.FarVC);
-  f.Linear = self->SlicingScheme == vtkClusteredLightingPass::SLICING_LINEAR ||
-    (self->SlicingScheme == vtkClusteredLightingPass::SLICING_AUTO && parallel);
-  view.Grid.Scheme = f.Linear ? SlicingScheme::Linear : SlicingScheme::Exponential;
-  view.Bounds = self->BoundsMethod == vtkClusteredLightingPass::BOUNDS_CENTER_DEPTH_QUAD
-    ? BoundsMethod::CenterDepthQuad
-    : BoundsMethod::Tangent;
-}
-
-//------------------------------------------------------------------------------
-// The list and master passes run only when lights, camera, viewport or grid changed.
-void vtkClusteredLightingPass::vtkInternals::UpdateAssignment(
-  vtkClusteredLightingPass* self, Frame& f)
-{
-  const ViewParameters& view = f.View;
-  vtkClusteredLightingRendererState* state = f.State;
-  vtkOpenGLRenderWindow* rw = f.Window;
-  const ClusterTextureLayout& layout = f.Layout;
-  const PreparedLights& prepared = state->Prepared;
-  std::vector<double> viewSignature(&view.WCVC[0][0], &view.WCVC[0][0] + 16);
-  viewSignature.insert(viewSignature.end(), &view.VCDC[0][0], &view.VCDC[0][0] + 16);
-  const double more[] = { double(view.Grid.TilesX), double(view.Grid.TilesY),
-    double(view.Grid.Slices), double(view.Grid.ViewportWidth), double(view.Grid.ViewportHeight),
-    view.Grid.NearVC, view.Grid.FarVC, double(f.Linear), double(self->BoundsMethod),
-    double(state->LightsVersion), double(f.Clustered), double(f.Enabled),
-    double(self->PerClusterCulling) };
-  viewSignature.insert(viewSignature.end(), std::begin(more), std::end(more));
-
-  if (f.Enabled && (viewSignature != state->ViewSignature || !state->AssignmentValid))
-  {
-    const auto t0 = std::chrono::steady_clock::now();
-    if (self->MeasureTimings)
-    {
-      glFinish();
-    }
-    const auto t1 = std::chrono::steady_clock::now();
-    ViewData data = ComputeViewData(prepared.Lights, view);
-    state->GPU.UploadLightView(rw, data.LightView);
-    bool ok = true;
-    if (f.Clustered)
-    {
-      state->GPU.UploadQuads(rw, data.Quads);
-      vtkClusteredLightingListPassParameters listPass;
-      const glm::dmat4& P = view.VCDC;
-      // Per-cluster culling unprojects tile edges; it needs VTK's usual projection form.
-      listPass.CullClusters = self->PerClusterCulling && P[1][0] == 0.0 && P[0][1] == 0.0 &&
-        P[0][3] == 0.0 && P[1][3] == 0.0;
-      const float px[3] = { float(P[0][0]), float(P[2][0]), float(P[3][0]) };
-      const float py[3] = { float(P[1][1]), float(P[2][1]), float(P[3][1]) };
-      std::copy(px, px + 3, listPass.ProjectionX);
-      std::copy(py, py + 3, listPass.ProjectionY);
-      listPass.ProjectionW[0] = float(P[2][3]);
-      listPass.ProjectionW[1] = float(P[3][3]);
-      double slicing[4];
-      ComputeSliceShaderParameters(view.Grid, slicing);
-      for (int k = 0; k < 4; ++k)
-      {
-        listPass.Slicing[k] = static_cast<float>(slicing[k]);
-      }
-      listPass.DepthRange[0] = static_cast<float>(view.Grid.NearVC);
-      listPass.DepthRange[1] = static_cast<float>(view.Grid.GetMaxFragmentDepth());
-      ok = state->GPU.AllocateTextures(rw, layout) &&
-        state->GPU.BuildAssignment(rw, layout, data.NumberOfQuads, listPass);
-      if (!ok)
-      {
-        vtkErrorWithObjectMacro(self,
-          "Could not allocate or fill the cluster textures (" << layout.ListWidth << "x"
-                                                              << layout.ListHeight << " R32UI).");
-      }
-    }
-    if (self->MeasureTimings)
-    {
-      glFinish();
-    }
-    const auto t2 = std::chrono::steady_clock::now();
-    self->LastAssignmentTime = self->MeasureTimings ? Milliseconds(t1, t2) : Milliseconds(t0, t2);
-    state->NumberOfQuads = data.NumberOfQuads;
-    state->NumberOfAssignedLights = data.NumberOfAssignedLights;
-    state->AssignmentValid = ok;
-    state->ViewSignature = viewSignature;
-    state->VCDC = view.VCDC;
-    ComputeSliceShaderParameters(view.Grid, state->SliceParameters);
-    state->Frame.Valid = ok;
-    state->Frame.Grid = view.Grid;
-    state->Frame.WCVC = view.WCVC;
-    state->Frame.VCDC = view.VCDC;
-    state->Frame.ViewportOrigin[0] = f.ViewportOrigin[0];
-    state->Frame.ViewportOrigin[1] = f.ViewportOrigin[1];
-    state->Frame.Layout = layout;
-    state->Frame.LightsVC = std::move(data.LightsVC);
-    state->Frame.Lights = prepared.Lights;
-    state->Frame.NumberOfQuads = data.NumberOfQuads;
-    self->LastAssignmentUpdated = true;
-    ++self->NumberOfAssignmentUpdates;
-  }
-  f.Enabled = f.Enabled && state->AssignmentValid;
-  self->NumberOfAssignedLights = f.Enabled ? state->NumberOfAssignedLights : 0;
-  self->ListTextureBytes = state->GPU.GetListBytes();
-  self->MasterTextureBytes = state->GPU.GetMasterBytes();
-  self->LightBufferBytes = state->GPU.GetLightBufferBytes();
-}
-
-//------------------------------------------------------------------------------
-void vtkClusteredLightingPass::vtkInternals::UpdateShaderVariant(
-  vtkClusteredLightingPass* self, Frame& f)
+void vtkClusteredLightingPass::UpdateShaderVariant(const vtkClusteredLightingAssignment& r)
 {
   // The global part of the variant; the actor's part is decided in the shader hooks.
   vtkClusteredLightingShaderVariant variant;
-  variant.Enabled = f.Enabled;
-  variant.Clustered = f.Clustered;
-  variant.Spot = f.State->Prepared.NumberOfSpots > 0;
-  variant.Window = self->Falloff == vtkClusteredLightingPass::FALLOFF_WINDOWED;
-  variant.LinearSlices = f.Linear;
-  variant.MasterTexels = std::max(f.Layout.MasterTexelsPerCluster, 1);
-  variant.DebugView = self->DebugView;
-  if (!variant.SameGlobalPart(this->Variant))
+  variant.Enabled = r.Enabled;
+  variant.Clustered = r.Clustered;
+  variant.Spot = r.NumberOfSpots > 0;
+  variant.Window = this->Falloff == FALLOFF_WINDOWED;
+  variant.LinearSlices = r.Linear;
+  variant.MasterTexels = r.MasterTexels;
+  variant.DebugView = ToVariantDebug(this->DebugView);
+  if (!variant.SameGlobalPart(this->Internals->Variant))
   {
-    this->Variant = variant;
-    this->ShaderStageTime.Modified();
+    this->Internals->Variant = variant;
+    this->Internals->ShaderStageTime.Modified();
   }
 }
 
 //------------------------------------------------------------------------------
-// Renders the delegate with the clustered lights hidden from VTK's lighting code.
-void vtkClusteredLightingPass::vtkInternals::RenderDelegate(
-  vtkClusteredLightingPass* self, const vtkRenderState* s, Frame& f)
+// Renders the delegate with the clustered lights hidden from VTK's lighting code and the
+// assignment's textures bound.
+void vtkClusteredLightingPass::RenderDelegate(const vtkRenderState* s,
+  const vtkClusteredLightingLightCollection& lights, vtkClusteredLightingAssigner* assigner)
 {
-  vtkLightCollection* lights = f.Renderer->GetLights();
-  if (f.Enabled)
+  vtkRenderer* ren = s->GetRenderer();
+  vtkLightCollection* rendererLights = ren->GetLights();
+  const bool enabled = assigner->GetResult().Enabled;
+  if (enabled)
   {
-    lights->RemoveAllItems();
+    rendererLights->RemoveAllItems();
     bool stockOn = false;
-    for (const auto& l : f.StockLights)
+    for (const auto& l : lights.StockLights)
     {
-      lights->AddItem(l);
+      rendererLights->AddItem(l);
       stockOn = stockOn || l->GetSwitch();
     }
     if (!stockOn)
     {
-      lights->AddItem(this->PlaceholderLight);
+      rendererLights->AddItem(this->Internals->PlaceholderLight);
     }
-    f.State->GPU.ActivateShadingTextures(f.Clustered);
+    assigner->ActivateShading();
   }
   const auto s0 = std::chrono::steady_clock::now();
-  if (self->MeasureTimings)
+  if (this->MeasureTimings)
   {
     glFinish();
   }
   const auto s1 = std::chrono::steady_clock::now();
-  self->PreRender(s);
-  self->DelegatePass->Render(s);
-  self->NumberOfRenderedProps += self->DelegatePass->GetNumberOfRenderedProps();
-  self->PostRender(s);
-  if (self->MeasureTimings)
+  this->PreRender(s);
+  this->DelegatePass->Render(s);
+  this->NumberOfRenderedProps += this->DelegatePass->GetNumberOfRenderedProps();
+  this->PostRender(s);
+  if (this->MeasureTimings)
   {
     glFinish();
   }
   const auto s2 = std::chrono::steady_clock::now();
-  self->LastShadingTime = self->MeasureTimings ? Milliseconds(s1, s2) : Milliseconds(s0, s2);
-  if (f.Enabled)
+  this->LastShadingTime = this->MeasureTimings ? Milliseconds(s1, s2) : Milliseconds(s0, s2);
+  if (enabled)
   {
-    f.State->GPU.DeactivateShadingTextures();
-    lights->RemoveAllItems();
-    for (const auto& l : f.AllLights)
+    assigner->DeactivateShading();
+    rendererLights->RemoveAllItems();
+    for (const auto& l : lights.RendererLights)
     {
-      lights->AddItem(l);
+      rendererLights->AddItem(l);
     }
   }
 }
@@ -867,54 +505,41 @@ bool vtkClusteredLightingPass::PostReplaceShaderValues(
 bool vtkClusteredLightingPass::SetShaderParameters(
   vtkShaderProgram* program, vtkAbstractMapper*, vtkProp*, vtkOpenGLVertexArrayObject*)
 {
-  vtkClusteredLightingRendererState* state = this->Internals->Current;
-  if (!state || !program)
+  if (!this->Internals->Current || !program)
   {
     return true;
   }
+  const vtkClusteredLightingAssignment& r = this->Internals->Current->GetResult();
   // Each uniform is set only if the program uses it: debug views let the compiler drop
   // the lighting math (and its samplers), programs without clustered code use none.
-  if (program->IsUniformUsed("clLightData"))
+  const struct
   {
-    program->SetUniformi("clLightData", state->GPU.GetLightDataUnit());
-  }
-  if (program->IsUniformUsed("clLightView"))
+    const char* Name;
+    int Unit;
+  } samplers[] = { { "clLightData", r.LightDataUnit }, { "clLightView", r.LightViewUnit },
+    { "clMaster", r.MasterUnit }, { "clList", r.ListUnit } };
+  for (const auto& sampler : samplers)
   {
-    program->SetUniformi("clLightView", state->GPU.GetLightViewUnit());
-  }
-  if (program->IsUniformUsed("clMaster"))
-  {
-    program->SetUniformi("clMaster", state->GPU.GetMasterUnit());
-  }
-  if (program->IsUniformUsed("clList"))
-  {
-    program->SetUniformi("clList", state->GPU.GetListUnit());
+    if (program->IsUniformUsed(sampler.Name))
+    {
+      program->SetUniformi(sampler.Name, sampler.Unit);
+    }
   }
   if (program->IsUniformUsed("clGrid"))
   {
-    const ClusterTextureLayout& layout = state->Frame.Layout;
-    const int grid[4] = { layout.TilesX, layout.TilesY, layout.Slices, layout.BatchRows };
-    vtkClusteredLightingSetUniform4i(program, "clGrid", grid);
+    vtkClusteredLightingSetUniform4i(program, "clGrid", r.Shading.Grid);
   }
   if (program->IsUniformUsed("clProjection"))
   {
-    float projection[16];
-    for (int i = 0; i < 16; ++i)
-    {
-      projection[i] = static_cast<float>((&state->VCDC[0][0])[i]); // column-major
-    }
-    program->SetUniformMatrix4x4("clProjection", projection);
+    program->SetUniformMatrix4x4("clProjection", const_cast<float*>(r.Shading.Projection));
   }
   if (program->IsUniformUsed("clSlicing"))
   {
-    const float slicing[4] = { static_cast<float>(state->SliceParameters[0]),
-      static_cast<float>(state->SliceParameters[1]), static_cast<float>(state->SliceParameters[2]),
-      static_cast<float>(state->SliceParameters[3]) };
-    program->SetUniform4f("clSlicing", slicing);
+    program->SetUniform4f("clSlicing", r.Shading.Slicing);
   }
   if (program->IsUniformUsed("clLightCount"))
   {
-    program->SetUniformi("clLightCount", static_cast<int>(state->Prepared.Lights.size()));
+    program->SetUniformi("clLightCount", r.NumberOfLights);
   }
   if (program->IsUniformUsed("clHeatMapMaximum"))
   {
@@ -924,33 +549,20 @@ bool vtkClusteredLightingPass::SetShaderParameters(
 }
 
 //------------------------------------------------------------------------------
-bool vtkClusteredLightingPass::ReadBackAssignment(
-  vtkRenderer* renderer, std::vector<std::uint32_t>& list, std::vector<std::uint32_t>& master)
+vtkClusteredLightingAssigner* vtkClusteredLightingPass::GetAssigner(vtkRenderer* renderer) const
 {
-  auto it = this->Internals->States.find(renderer);
-  if (it == this->Internals->States.end() || !it->second->Window || !it->second->AssignmentValid)
-  {
-    return false;
-  }
-  return it->second->GPU.ReadBack(it->second->Window, list, master);
+  auto it = this->Internals->Renderers.find(renderer);
+  return it == this->Internals->Renderers.end() ? nullptr : it->second.Assigner.get();
 }
 
-//------------------------------------------------------------------------------
-const vtkClusteredLightingFrameState* vtkClusteredLightingPass::GetFrameState(
-  vtkRenderer* renderer) const
+std::vector<vtkClusteredLightingAssigner*> vtkClusteredLightingPass::GetAssigners() const
 {
-  auto it = this->Internals->States.find(renderer);
-  return it == this->Internals->States.end() ? nullptr : &it->second->Frame;
-}
-
-//------------------------------------------------------------------------------
-void vtkClusteredLightingPass::GetGLObjectNames(
-  std::vector<std::pair<unsigned int, unsigned int>>& names) const
-{
-  for (const auto& it : this->Internals->States)
+  std::vector<vtkClusteredLightingAssigner*> out;
+  for (const auto& it : this->Internals->Renderers)
   {
-    it.second->GPU.GetGLObjectNames(names);
+    out.push_back(it.second.Assigner.get());
   }
+  return out;
 }
 
 //------------------------------------------------------------------------------

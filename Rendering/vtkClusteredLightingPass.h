@@ -63,15 +63,15 @@
 #include "vtkOpenGLRenderPass.h"
 #include "vtkRenderingClusteredModule.h" // For export macro
 
-#include <cstdint> // for std::uint32_t
-#include <memory>  // for std::unique_ptr
-#include <utility> // for std::pair
-#include <vector>  // for std::vector
+#include <memory> // for std::unique_ptr
+#include <vector> // for std::vector
 
 class vtkClusteredLightSet;
+class vtkClusteredLightingAssigner;
 class vtkRenderer;
-class vtkRenderWindow;
-struct vtkClusteredLightingFrameState;
+struct vtkClusteredLightingAssignerInputs;
+struct vtkClusteredLightingAssignment;
+struct vtkClusteredLightingLightCollection;
 
 class VTKRENDERINGCLUSTERED_EXPORT vtkClusteredLightingPass : public vtkOpenGLRenderPass
 {
@@ -343,26 +343,6 @@ public:
   vtkMTimeType GetShaderStageMTime() override;
   ///@}
 
-#ifndef __VTK_WRAP__
-  /**
-   * For tests: read the list and master textures of a renderer back (row-major).
-   */
-  bool ReadBackAssignment(
-    vtkRenderer* renderer, std::vector<std::uint32_t>& list, std::vector<std::uint32_t>& master);
-
-  /**
-   * For tests: what the last assignment for a renderer used (grid, matrices, layout,
-   * lights in view coordinates). See vtkClusteredLightingFrameState.h. Null if none.
-   */
-  const vtkClusteredLightingFrameState* GetFrameState(vtkRenderer* renderer) const;
-
-  /**
-   * For tests: (kind, GL name) of every GL object the pass holds, for all renderers; kind
-   * is GL_TEXTURE, GL_BUFFER, GL_FRAMEBUFFER or GL_VERTEX_ARRAY.
-   */
-  void GetGLObjectNames(std::vector<std::pair<unsigned int, unsigned int>>& names) const;
-#endif
-
 protected:
   vtkClusteredLightingPass();
   ~vtkClusteredLightingPass() override;
@@ -409,6 +389,20 @@ private:
 
   struct vtkInternals;
   std::unique_ptr<vtkInternals> Internals;
+
+  // The steps of Render() (see the .cxx).
+  void SetUpCamera(vtkRenderer* ren);
+  vtkClusteredLightingAssignerInputs MakeAssignerInputs(
+    vtkRenderer* ren, vtkClusteredLightingLightCollection& lights) const;
+  void ReportAssignment(const vtkClusteredLightingAssignment& result);
+  void UpdateShaderVariant(const vtkClusteredLightingAssignment& result);
+  void RenderDelegate(const vtkRenderState* s, const vtkClusteredLightingLightCollection& lights,
+    vtkClusteredLightingAssigner* assigner);
+
+  // Test hook (Testing/Cxx/vtkClusteredLightingInspector.h): the assigners of the renderers.
+  friend class vtkClusteredLightingInspector;
+  vtkClusteredLightingAssigner* GetAssigner(vtkRenderer* renderer) const;
+  std::vector<vtkClusteredLightingAssigner*> GetAssigners() const;
 };
 
 #endif

@@ -1,14 +1,13 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkClusteredLightingShaderVariant.h"
 
-#include "vtkClusteredLightingPass.h" // for DebugViews
+#include "vtkClusteredLightingShaderCode.h"
 
 #include "vtkClusteredLightingDebugImpl.h"
 #include "vtkClusteredLightingShadingDec.h"
 #include "vtkClusteredLightingShadingImpl.h"
 
-#include <sstream> // for std::istringstream
-#include <vector>  // for std::vector
+using namespace vtkClusteredLighting;
 
 //------------------------------------------------------------------------------
 bool vtkClusteredLightingShaderVariant::SameGlobalPart(
@@ -47,96 +46,47 @@ std::set<std::string> vtkClusteredLightingShaderVariant::GetFlags() const
   }
   switch (this->DebugView)
   {
-    case vtkClusteredLightingPass::DEBUG_CLUSTER_INDEX:
+    case Debug::ClusterIndex:
       if (this->Clustered)
       {
         f.insert("CLUSTER_INDEX");
       }
       break;
-    case vtkClusteredLightingPass::DEBUG_HEAT_MAP:
+    case Debug::HeatMap:
       f.insert("COUNT");
       f.insert("HEAT_MAP");
       break;
-    case vtkClusteredLightingPass::DEBUG_EVALUATED_COUNT:
+    case Debug::EvaluatedCount:
       f.insert("COUNT");
       f.insert("EVALUATED_COUNT");
       break;
-    case vtkClusteredLightingPass::DEBUG_REACHED_COUNT:
+    case Debug::ReachedCount:
       f.insert("COUNT");
       f.insert("REACHED_COUNT");
       break;
-    case vtkClusteredLightingPass::DEBUG_NON_FINITE:
+    case Debug::NonFinite:
       f.insert("NON_FINITE");
       break;
-    default:
+    case Debug::None:
       break;
   }
   return f;
 }
 
 //------------------------------------------------------------------------------
-std::string vtkClusteredLightingShaderVariant::SelectCode(
-  const std::string& source, const std::set<std::string>& flags)
-{
-  std::istringstream in(source);
-  std::string line, out;
-  // Stack of (condition of this block, block currently emitting).
-  std::vector<std::pair<bool, bool>> stack;
-  auto active = [&stack]() { return stack.empty() || stack.back().second; };
-  while (std::getline(in, line))
-  {
-    const auto first = line.find_first_not_of(" \t");
-    const std::string trimmed = first == std::string::npos ? std::string() : line.substr(first);
-    if (trimmed.rfind("//CL_IF(", 0) == 0)
-    {
-      const auto close = trimmed.find(')');
-      const std::string flag = trimmed.substr(8, close - 8);
-      const bool cond = flags.count(flag) > 0;
-      const bool parent = active();
-      stack.emplace_back(cond, parent && cond);
-      continue;
-    }
-    if (trimmed.rfind("//CL_ELSE", 0) == 0 && !stack.empty())
-    {
-      const bool cond = stack.back().first;
-      stack.pop_back();
-      const bool parent = active();
-      stack.emplace_back(!cond, parent && !cond);
-      continue;
-    }
-    if (trimmed.rfind("//CL_ENDIF", 0) == 0 && !stack.empty())
-    {
-      stack.pop_back();
-      continue;
-    }
-    if (active())
-    {
-      out += line;
-      out += '\n';
-    }
-  }
-  return out;
-}
-
-//------------------------------------------------------------------------------
 std::string vtkClusteredLightingShaderVariant::GetDeclarations() const
 {
-  std::string code = SelectCode(vtkClusteredLightingShadingDec, this->GetFlags());
-  const std::string key = "@CL_MASTER_TEXELS@";
-  const auto pos = code.find(key);
-  if (pos != std::string::npos)
-  {
-    code.replace(pos, key.size(), std::to_string(this->MasterTexels));
-  }
+  std::string code = SelectShaderCode(vtkClusteredLightingShadingDec, this->GetFlags());
+  ReplaceShaderKey(code, "@CL_MASTER_TEXELS@", std::to_string(this->MasterTexels));
   return code;
 }
 
 std::string vtkClusteredLightingShaderVariant::GetImplementation() const
 {
-  return SelectCode(vtkClusteredLightingShadingImpl, this->GetFlags());
+  return SelectShaderCode(vtkClusteredLightingShadingImpl, this->GetFlags());
 }
 
 std::string vtkClusteredLightingShaderVariant::GetDebugImplementation() const
 {
-  return SelectCode(vtkClusteredLightingDebugImpl, this->GetFlags());
+  return SelectShaderCode(vtkClusteredLightingDebugImpl, this->GetFlags());
 }

@@ -6,7 +6,8 @@
  * Private helper of vtkClusteredLightingPass. The shading sources
  * (glsl/vtkClusteredLightingShading{Dec,Impl}.glsl, vtkClusteredLightingDebugImpl.glsl)
  * mark optional blocks with //CL_IF(FLAG) ... //CL_ELSE ... //CL_ENDIF lines;
- * SelectCode() keeps only the blocks of the flags this variant sets, so the text injected
+ * vtkClusteredLighting::SelectShaderCode (Rendering/Core/vtkClusteredLightingShaderCode.h,
+ * unit-tested) keeps only the blocks of the flags this variant sets, so the text injected
  * into a mapper's shader holds no code path the actor or the light set does not need.
  *
  * Flags: CLUSTERED or BRUTE_FORCE, CUTOFF (radius test, clustered only), PHONG or PBR,
@@ -29,7 +30,18 @@ public:
   bool Window = false;
   bool LinearSlices = false;
   int MasterTexels = 1;
-  int DebugView = 0; ///< vtkClusteredLightingPass::DebugViews
+
+  /// Debug views (the pass maps its DebugView option to these).
+  enum class Debug
+  {
+    None,
+    ClusterIndex,
+    HeatMap,
+    EvaluatedCount,
+    ReachedCount,
+    NonFinite
+  };
+  Debug DebugView = Debug::None;
 
   // Parts that depend on the actor.
   bool PBR = false;
@@ -41,9 +53,6 @@ public:
   std::string GetDeclarations() const;
   std::string GetImplementation() const;
   std::string GetDebugImplementation() const;
-
-  /// Keep only the lines of source whose //CL_IF(...) conditions hold for flags.
-  static std::string SelectCode(const std::string& source, const std::set<std::string>& flags);
 };
 
 #endif

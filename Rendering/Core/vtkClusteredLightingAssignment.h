@@ -21,8 +21,8 @@
 #ifndef vtkClusteredLightingAssignment_h
 #define vtkClusteredLightingAssignment_h
 
+#include "vtkClusteredLightingLayout.h"
 #include "vtkClusteredLightingLights.h"
-#include "vtkClusteredLightingReference.h"
 #include "vtkClusteredLightingSphereBounds.h"
 
 #include <glm/glm.hpp>
@@ -57,9 +57,8 @@ struct ViewParameters
 
 struct ViewData
 {
-  std::vector<float> LightView;         ///< FloatsPerLightRecord per light
-  std::vector<float> Quads;             ///< FloatsPerQuad per (light, slice)
-  std::vector<ReferenceLight> LightsVC; ///< double-precision VC centre + radius
+  std::vector<float> LightView; ///< FloatsPerLightRecord per light
+  std::vector<float> Quads;     ///< FloatsPerQuad per (light, slice)
   int NumberOfQuads = 0;
   int NumberOfAssignedLights = 0; ///< lights with at least one quad
   int NumberOfCulled = 0;         ///< lights with a radius that miss the view frustum
@@ -94,7 +93,6 @@ inline ViewData ComputeViewData(const std::vector<PreparedLight>& lights, const 
   ViewData out;
   const std::size_t n = lights.size();
   out.LightView.resize(n * FloatsPerLightRecord);
-  out.LightsVC.resize(n);
   out.Quads.reserve(n * FloatsPerQuad);
   // Spot axes transform like vtkTransform::TransformNormal (inverse transpose), as VTK.
   const glm::dmat3 normalMatrix = glm::transpose(glm::inverse(glm::dmat3(v.WCVC)));
@@ -119,7 +117,6 @@ inline ViewData ComputeViewData(const std::vector<PreparedLight>& lights, const 
     o[5] = static_cast<float>(dir.y);
     o[6] = static_cast<float>(dir.z);
     o[7] = 0.0f;
-    out.LightsVC[i] = ReferenceLight{ c, l.Radius };
     if (!(l.Radius > 0.0))
     {
       continue;
@@ -143,6 +140,81 @@ inline ViewData ComputeViewData(const std::vector<PreparedLight>& lights, const 
     ++out.NumberOfAssignedLights;
   }
   return out;
+}
+
+/**
+ * Uniforms of the list pass (vtkClusteredLightingListFS.glsl), packed from the view:
+ * per-cluster culling unprojects tile edges with the rows (P00, P02, P03), (P11, P12, P13)
+ * and (P32, P33) of the projection, which needs VTK's usual projection form
+ * (P01 = P10 = P30 = P31 = 0); for any other form culling falls back to whole ranges.
+ */
+struct ListPassParameters
+{
+  bool CullClusters = true;
+  float ProjectionX[3] = { 1, 0, 0 }; ///< P00, P02, P03
+  float ProjectionY[3] = { 1, 0, 0 }; ///< P11, P12, P13
+  float ProjectionW[2] = { -1, 0 };   ///< P32, P33
+  float Slicing[4] = { 0, 0, 0, 0 };  ///< ComputeSliceShaderParameters
+  float DepthRange[2] = { 0, 1 };     ///< camera near depth, deepest fragment depth
+};
+
+inline ListPassParameters ComputeListPassParameters(
+  const ViewParameters& view, bool perClusterCulling)
+{
+  ListPassParameters p;
+  const glm::dmat4& P = view.VCDC; // column-major: P[column][row]
+  p.CullClusters =
+    perClusterCulling && P[1][0] == 0.0 && P[0][1] == 0.0 && P[0][3] == 0.0 && P[1][3] == 0.0;
+  p.ProjectionX[0] = static_cast<float>(P[0][0]);
+  p.ProjectionX[1] = static_cast<float>(P[2][0]);
+  p.ProjectionX[2] = static_cast<float>(P[3][0]);
+  p.ProjectionY[0] = static_cast<float>(P[1][1]);
+  p.ProjectionY[1] = static_cast<float>(P[2][1]);
+  p.ProjectionY[2] = static_cast<float>(P[3][1]);
+  p.ProjectionW[0] = static_cast<float>(P[2][3]);
+  p.ProjectionW[1] = static_cast<float>(P[3][3]);
+  double slicing[4];
+  ComputeSliceShaderParameters(view.Grid, slicing);
+  for (int k = 0; k < 4; ++k)
+  {
+    p.Slicing[k] = static_cast<float>(slicing[k]);
+  }
+  p.DepthRange[0] = static_cast<float>(view.Grid.NearVC);
+  p.DepthRange[1] = static_cast<float>(view.Grid.GetMaxFragmentDepth());
+  return p;
+}
+
+/**
+ * Uniforms of the shading code (vtkClusteredLightingShadingDec.glsl) for one assignment:
+ * clGrid = (tiles x, tiles y, slices, batch rows), clProjection (VC -> clip, column-major,
+ * the matrix the mappers use), clSlicing (ComputeSliceShaderParameters).
+ */
+struct ShadingParameters
+{
+  int Grid[4] = { 1, 1, 1, 1 };
+  float Projection[16] = { 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1 };
+  float Slicing[4] = { 0, 0, 0, 0 };
+};
+
+inline ShadingParameters ComputeShadingParameters(
+  const ViewParameters& view, const ClusterTextureLayout& layout)
+{
+  ShadingParameters s;
+  s.Grid[0] = view.Grid.TilesX;
+  s.Grid[1] = view.Grid.TilesY;
+  s.Grid[2] = view.Grid.Slices;
+  s.Grid[3] = std::max(layout.BatchRows, 1);
+  for (int i = 0; i < 16; ++i)
+  {
+    s.Projection[i] = static_cast<float>((&view.VCDC[0][0])[i]);
+  }
+  double slicing[4];
+  ComputeSliceShaderParameters(view.Grid, slicing);
+  for (int k = 0; k < 4; ++k)
+  {
+    s.Slicing[k] = static_cast<float>(slicing[k]);
+  }
+  return s;
 }
 
 } // namespace vtkClusteredLighting

@@ -4,6 +4,7 @@
 #ifndef ClusteredLightingGLTestUtilities_h
 #define ClusteredLightingGLTestUtilities_h
 
+#include "vtkClusteredLightingInspector.h"
 #include "vtkClusteredLightingPass.h"
 
 #include "vtkActor.h"
@@ -91,7 +92,7 @@ inline GLNames TakeGLNameCensus(vtkRenderWindow* rw)
 inline GLNames PassGLNames(vtkClusteredLightingPass* pass)
 {
   std::vector<std::pair<unsigned int, unsigned int>> v;
-  pass->GetGLObjectNames(v);
+  vtkClusteredLightingInspector(pass).GetGLObjectNames(v);
   return GLNames(v.begin(), v.end());
 }
 

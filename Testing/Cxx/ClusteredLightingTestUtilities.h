@@ -5,7 +5,7 @@
 #define ClusteredLightingTestUtilities_h
 
 #include "ClusteredLightingImages.h"
-#include "vtkClusteredLightingFrameState.h"
+#include "vtkClusteredLightingInspector.h"
 #include "vtkClusteredLightingPass.h"
 #include "vtkClusteredLightingReference.h"
 
@@ -146,18 +146,20 @@ inline vtkClusteredLighting::AssignmentComparison CheckAssignment(
   vtkClusteredLightingPass* pass, vtkRenderer* ren, const char* what)
 {
   vtkClusteredLighting::AssignmentComparison cmp;
-  const vtkClusteredLightingFrameState* frame = pass->GetFrameState(ren);
+  vtkClusteredLightingInspector inspect(pass);
+  const vtkClusteredLightingAssignmentSnapshot frame = inspect.GetFrame(ren);
   std::vector<std::uint32_t> list, master;
-  if (!frame || !frame->Valid || (frame->Layout.Batches == 0 && !frame->Lights.empty()) ||
-    !pass->ReadBackAssignment(ren, list, master))
+  if (!frame.Valid || (frame.Layout.Batches == 0 && !frame.Lights.empty()) ||
+    !inspect.ReadBackAssignment(ren, list, master))
   {
     std::printf("%s: no clustered assignment to check (render in clustered mode first)\n", what);
     cmp.FalseNegatives = ~0ull;
     return cmp;
   }
-  const auto ref = vtkClusteredLighting::ComputeReferenceAssignment(frame->LightsVC, frame->Grid,
-    frame->VCDC, frame->Grid.NearVC, frame->Grid.GetMaxFragmentDepth());
-  cmp = vtkClusteredLighting::CompareWithReference(ref, list, master, frame->Layout, frame->Grid);
+  const auto ref = vtkClusteredLighting::ComputeReferenceAssignment(
+    vtkClusteredLightingInspector::ComputeLightsVC(frame), frame.Grid, frame.VCDC,
+    frame.Grid.NearVC, frame.Grid.GetMaxFragmentDepth());
+  cmp = vtkClusteredLighting::CompareWithReference(ref, list, master, frame.Layout, frame.Grid);
   std::printf("%s: %llu reference pairs, %llu GPU pairs, false negatives %llu, "
               "false-positive rate %.3f, master mismatches %llu%s%s\n",
     what, static_cast<unsigned long long>(cmp.ReferencePairs),
@@ -212,7 +214,8 @@ inline BruteForceCheck CheckAgainstBruteForce(vtkClusteredLightingPass* pass, vt
   pass->SetShadingMode(vtkClusteredLightingPass::SHADING_CLUSTERED);
   rw->Render();
   const std::vector<float> clustered = CapturePixels(rw);
-  vtkClusteredLightingFrameState frame = *pass->GetFrameState(ren);
+  vtkClusteredLightingInspector inspect(pass);
+  vtkClusteredLightingAssignmentSnapshot frame = inspect.GetFrame(ren);
   // Surface positions come from the depth buffer. At far/near ratios beyond 1e3 a 24-bit
   // depth quantum spans a large depth interval, so they are taken from one more render
   // with near = far / 1e3 (the test scenes have no geometry closer than that); the light
@@ -228,7 +231,7 @@ inline BruteForceCheck CheckAgainstBruteForce(vtkClusteredLightingPass* pass, vt
     camera->SetClippingRange(range[1] / 1e3, frame.Grid.GetMaxFragmentDepth());
     rw->Render();
     depth = CaptureDepth(rw, ren, w, h);
-    frame.VCDC = pass->GetFrameState(ren)->VCDC;
+    frame.VCDC = inspect.GetFrame(ren).VCDC;
     camera->SetClippingRange(range);
   }
   else
@@ -245,10 +248,10 @@ inline BruteForceCheck CheckAgainstBruteForce(vtkClusteredLightingPass* pass, vt
   int x0, y0, ww, wh;
   ren->GetTiledSizeAndOrigin(&ww, &wh, &x0, &y0);
   const int windowWidth = rw->GetSize()[0];
-  std::vector<glm::dvec3> centers(frame.Lights.size());
-  for (std::size_t i = 0; i < centers.size(); ++i)
+  std::vector<glm::dvec3> centers;
+  for (const auto& l : vtkClusteredLightingInspector::ComputeLightsVC(frame))
   {
-    centers[i] = frame.LightsVC[i].CenterVC;
+    centers.push_back(l.CenterVC);
   }
   const bool windowed = pass->GetFalloff() == vtkClusteredLightingPass::FALLOFF_WINDOWED;
   const glm::dmat4 inverse = glm::inverse(frame.VCDC);

@@ -61,10 +61,12 @@ int TestClusteredLightingDebugViews(int argc, char* argv[])
   renWin->Render();
 
   int status = EXIT_SUCCESS;
-  const vtkClusteredLightingFrameState frame = *pass->GetFrameState(ren);
+  vtkClusteredLightingInspector inspect(pass);
+  const vtkClusteredLightingAssignmentSnapshot frame = inspect.GetFrame(ren);
+  const auto lightsVC = vtkClusteredLightingInspector::ComputeLightsVC(frame);
   const ClusterGridParams& grid = frame.Grid;
   std::vector<std::uint32_t> list, master;
-  pass->ReadBackAssignment(ren, list, master);
+  inspect.ReadBackAssignment(ren, list, master);
   int w = 0, h = 0;
   const std::vector<float> depth = ClusteredLightingTest::CaptureDepth(renWin, ren, w, h);
   const glm::dmat4 inverse = glm::inverse(frame.VCDC);
@@ -104,8 +106,8 @@ int TestClusteredLightingDebugViews(int argc, char* argv[])
       int reached = 0;
       for (std::size_t i = 0; i < frame.Lights.size(); ++i)
       {
-        const double r = frame.LightsVC[i].Radius;
-        const double d = glm::length(p - frame.LightsVC[i].CenterVC);
+        const double r = lightsVC[i].Radius;
+        const double d = glm::length(p - lightsVC[i].CenterVC);
         const double spread = glm::length(pHi - pLo) + 1e-5 * r;
         unsure = unsure || std::abs(d - r) <= spread;
         reached += d < r ? 1 : 0;

@@ -112,7 +112,8 @@ int TestClusteredLightingHardCasesPlacement(int, char*[])
     // Exact tile and slice boundaries of the frame's own grid.
     f.Reset();
     f.Window->Render(); // establishes the grid and matrices
-    const vtkClusteredLightingFrameState frame = *f.Pass->GetFrameState(f.Renderer);
+    const vtkClusteredLightingAssignmentSnapshot frame =
+      vtkClusteredLightingInspector(f.Pass).GetFrame(f.Renderer);
     const auto& g = frame.Grid;
     const glm::dmat4 inverse = glm::inverse(frame.VCDC);
     auto unproject = [&](double ndcX, double ndcY, double depth)

@@ -55,14 +55,15 @@ int TestClusteredLightingHardCasesProjection(int, char*[])
   renWin->SetStereoTypeToLeft();
   failures += RunHardCase(pass, renWin, ren, "stereo, left eye");
   const std::vector<float> leftEye = CapturePixels(renWin);
-  const glm::dmat4 leftView = pass->GetFrameState(ren)->VCDC;
+  const glm::dmat4 leftView = vtkClusteredLightingInspector(pass).GetFrame(ren).VCDC;
 
   renWin->SetStereoTypeToRight();
   failures += RunHardCase(pass, renWin, ren, "stereo, right eye");
   const std::vector<float> rightEye = CapturePixels(renWin);
 
   const double imageDifference = CompareImages(leftEye, rightEye).MaxAbsError;
-  const double shear = std::abs(leftView[2][0] - pass->GetFrameState(ren)->VCDC[2][0]);
+  const double shear =
+    std::abs(leftView[2][0] - vtkClusteredLightingInspector(pass).GetFrame(ren).VCDC[2][0]);
   std::printf(
     "eyes: image difference %.3f, projection shear difference %.4f\n", imageDifference, shear);
   // Different views: a projection shear, and images that differ beyond 8-bit rounding.

@@ -108,8 +108,7 @@ int TestClusteredLightingSkipWork(int, char*[])
   failures += Expect(pass->GetNumberOfShaderBuilds() == builds, "and no shader rebuild");
 
   // Lights behind the camera cost nothing in the list pass.
-  const vtkClusteredLightingFrameState* frame = pass->GetFrameState(ren);
-  const int quads = frame->NumberOfQuads;
+  const int quads = vtkClusteredLightingInspector(pass).GetFrame(ren).NumberOfQuads;
   const int assigned = pass->GetNumberOfAssignedLights();
   const double* eye = camera->GetPosition();
   const double* dir = camera->GetDirectionOfProjection();
@@ -125,11 +124,11 @@ int TestClusteredLightingSkipWork(int, char*[])
   std::printf("with 1000 lights behind the camera: %d clustered, %d assigned (was %d), %d quads "
               "(was %d)\n",
     pass->GetNumberOfClusteredLights(), pass->GetNumberOfAssignedLights(), assigned,
-    pass->GetFrameState(ren)->NumberOfQuads, quads);
+    vtkClusteredLightingInspector(pass).GetFrame(ren).NumberOfQuads, quads);
   failures += Expect(pass->GetNumberOfClusteredLights() == static_cast<int>(first) + 1000,
     "the lights behind the camera are clustered (kept)");
   failures += Expect(pass->GetNumberOfAssignedLights() == assigned &&
-      pass->GetFrameState(ren)->NumberOfQuads == quads,
+      vtkClusteredLightingInspector(pass).GetFrame(ren).NumberOfQuads == quads,
     "but draw nothing in the list pass");
   failures += Expect(
     ClusteredLightingTest::CheckAssignment(pass, ren, "with hidden lights").FalseNegatives == 0,

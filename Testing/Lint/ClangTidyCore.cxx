@@ -7,4 +7,5 @@
 #include "vtkClusteredLightingLights.h"
 #include "vtkClusteredLightingMorton.h"
 #include "vtkClusteredLightingReference.h"
+#include "vtkClusteredLightingShaderCode.h"
 #include "vtkClusteredLightingSphereBounds.h"

@@ -475,7 +475,6 @@ TEST(Fuzz, ViewDataQuadsAreFiniteAndIndexTheGrid)
     const ViewData data = ComputeViewData(prepared.Lights, v);
     const std::size_t n = prepared.Lights.size();
     ASSERT_EQ(data.LightView.size(), n * FloatsPerLightRecord);
-    ASSERT_EQ(data.LightsVC.size(), n);
     ASSERT_EQ(data.Quads.size(), static_cast<std::size_t>(data.NumberOfQuads) * FloatsPerQuad);
     ASSERT_LE(data.NumberOfAssignedLights + data.NumberOfCulled, static_cast<int>(n));
     for (std::size_t i = 0; i < n; ++i)

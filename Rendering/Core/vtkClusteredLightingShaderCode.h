@@ -1,0 +1,125 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @file vtkClusteredLightingShaderCode.h
+ * @brief GL-free selection of the optional blocks of the clustered shading sources.
+ *
+ * The shading sources (Rendering/glsl/vtkClusteredLightingShading{Dec,Impl}.glsl and
+ * vtkClusteredLightingDebugImpl.glsl) mark optional code with lines of their own:
+ *
+ *   //CL_IF(FLAG)      the lines up to the matching //CL_ELSE or //CL_ENDIF are kept
+ *                      only when FLAG is set;
+ *   //CL_ELSE          the lines up to //CL_ENDIF are kept only when FLAG is not set;
+ *   //CL_ENDIF         ends the block.
+ *
+ * Blocks nest; a block inside a dropped block is dropped whatever its flag. Leading
+ * blanks before a directive are allowed; the directive lines themselves never reach the
+ * output. SelectShaderCode() keeps the lines of the set flags, so the text injected into a
+ * mapper's shader holds no code path its actor or its lights do not need (GLSL's own
+ * #ifdef would leave every path in the text, and in each compiled program's source).
+ *
+ * An unbalanced source (an //CL_ELSE or //CL_ENDIF without //CL_IF, or an //CL_IF left
+ * open at the end) is reported through `error` and selects nothing: a typo in a shader
+ * must not silently drop or keep lighting code. Unit-tested in Testing/Unit.
+ */
+#ifndef vtkClusteredLightingShaderCode_h
+#define vtkClusteredLightingShaderCode_h
+
+#include <set>     // for std::set
+#include <sstream> // for std::istringstream
+#include <string>  // for std::string
+#include <utility> // for std::pair
+#include <vector>  // for std::vector
+
+namespace vtkClusteredLighting
+{
+
+/**
+ * Keeps the lines of `source` whose //CL_IF conditions hold for `flags`. Returns an empty
+ * string and sets `error` (when given) if the directives do not balance.
+ */
+inline std::string SelectShaderCode(
+  const std::string& source, const std::set<std::string>& flags, std::string* error = nullptr)
+{
+  std::istringstream in(source);
+  std::string line, out;
+  // One entry per open block: (its condition, whether its lines are emitted).
+  std::vector<std::pair<bool, bool>> open;
+  auto emitting = [&open]() { return open.empty() || open.back().second; };
+  int lineNumber = 0;
+  auto fail = [&](const std::string& what)
+  {
+    if (error)
+    {
+      *error = what + " at line " + std::to_string(lineNumber);
+    }
+    return std::string();
+  };
+  while (std::getline(in, line))
+  {
+    ++lineNumber;
+    const auto first = line.find_first_not_of(" \t");
+    const std::string trimmed = first == std::string::npos ? std::string() : line.substr(first);
+    if (trimmed.rfind("//CL_IF(", 0) == 0)
+    {
+      const auto close = trimmed.find(')');
+      if (close == std::string::npos)
+      {
+        return fail("//CL_IF without a closing parenthesis");
+      }
+      const bool condition = flags.count(trimmed.substr(8, close - 8)) > 0;
+      const bool parent = emitting();
+      open.emplace_back(condition, parent && condition);
+    }
+    else if (trimmed.rfind("//CL_ELSE", 0) == 0)
+    {
+      if (open.empty())
+      {
+        return fail("//CL_ELSE without //CL_IF");
+      }
+      const bool condition = !open.back().first;
+      open.pop_back();
+      const bool parent = emitting();
+      open.emplace_back(condition, parent && condition);
+    }
+    else if (trimmed.rfind("//CL_ENDIF", 0) == 0)
+    {
+      if (open.empty())
+      {
+        return fail("//CL_ENDIF without //CL_IF");
+      }
+      open.pop_back();
+    }
+    else if (emitting())
+    {
+      out += line;
+      out += '\n';
+    }
+  }
+  if (!open.empty())
+  {
+    return fail("//CL_IF not closed by the end");
+  }
+  if (error)
+  {
+    error->clear();
+  }
+  return out;
+}
+
+/// Replaces every occurrence of `key` in `code` with `value`.
+inline void ReplaceShaderKey(std::string& code, const std::string& key, const std::string& value)
+{
+  if (key.empty())
+  {
+    return;
+  }
+  for (auto pos = code.find(key); pos != std::string::npos; pos = code.find(key, pos))
+  {
+    code.replace(pos, key.size(), value);
+    pos += value.size();
+  }
+}
+
+} // namespace vtkClusteredLighting
+
+#endif

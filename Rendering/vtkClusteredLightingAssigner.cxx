@@ -1,0 +1,473 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "vtkClusteredLightingAssigner.h"
+
+#include "vtkCamera.h"
+#include "vtkClusteredLightingLightCollector.h"
+#include "vtkClusteredLightingRasterBackend.h"
+#include "vtkCommand.h"
+#include "vtkMatrix3x3.h"
+#include "vtkMatrix4x4.h"
+#include "vtkOpenGLCamera.h"
+#include "vtkRenderer.h"
+#include "vtkTextureObject.h"
+#include "vtk_glew.h" // for glFinish, GL limits
+
+#include <algorithm> // for std::min
+#include <chrono>    // for timings
+#include <sstream>   // for std::ostringstream
+
+using namespace vtkClusteredLighting;
+
+namespace
+{
+double Milliseconds(
+  std::chrono::steady_clock::time_point a, std::chrono::steady_clock::time_point b)
+{
+  return std::chrono::duration<double, std::milli>(b - a).count();
+}
+
+glm::dmat4 ToGLM(vtkMatrix4x4* m)
+{
+  glm::dmat4 g;
+  for (int r = 0; r < 4; ++r)
+  {
+    for (int c = 0; c < 4; ++c)
+    {
+      g[c][r] = m->GetElement(r, c);
+    }
+  }
+  return g;
+}
+
+bool SameGrid(const ClusterGridParams& a, const ClusterGridParams& b)
+{
+  return a.TilesX == b.TilesX && a.TilesY == b.TilesY && a.Slices == b.Slices &&
+    a.ViewportWidth == b.ViewportWidth && a.ViewportHeight == b.ViewportHeight &&
+    a.NearVC == b.NearVC && a.FarVC == b.FarVC && a.Scheme == b.Scheme;
+}
+}
+
+//------------------------------------------------------------------------------
+ViewParameters vtkClusteredLightingAssigner::ComputeView(
+  vtkRenderer* renderer, const vtkClusteredLightingGridOptions& options)
+{
+  ViewParameters view;
+  vtkCamera* camera = renderer->GetActiveCamera();
+  int width = 0, height = 0, x0 = 0, y0 = 0;
+  renderer->GetTiledSizeAndOrigin(&width, &height, &x0, &y0);
+  const bool parallel = camera->GetParallelProjection() != 0;
+  if (vtkOpenGLCamera* glCamera = vtkOpenGLCamera::SafeDownCast(camera))
+  {
+    // Exactly the matrices the mappers will use (stored transposed for GL).
+    vtkMatrix4x4* wcvc = nullptr;
+    vtkMatrix3x3* normals = nullptr;
+    vtkMatrix4x4* vcdc = nullptr;
+    vtkMatrix4x4* wcdc = nullptr;
+    glCamera->GetKeyMatrices(renderer, wcvc, normals, vcdc, wcdc);
+    view.WCVC = glm::transpose(ToGLM(wcvc));
+    view.VCDC = glm::transpose(ToGLM(vcdc));
+  }
+  else
+  {
+    view.WCVC = ToGLM(camera->GetModelViewTransformMatrix());
+    view.VCDC = ToGLM(camera->GetProjectionTransformMatrix(renderer->GetTiledAspectRatio(), -1, 1));
+  }
+  double range[2];
+  camera->GetClippingRange(range);
+  view.Grid.TilesX = options.TilesX;
+  view.Grid.TilesY = options.TilesY;
+  view.Grid.Slices = options.Slices;
+  view.Grid.ViewportWidth = std::max(width, 1);
+  view.Grid.ViewportHeight = std::max(height, 1);
+  view.Grid.NearVC = range[0];
+  view.Grid.FarVC = range[1];
+  SanitizeDepthRange(view.Grid.NearVC, view.Grid.FarVC);
+  const bool linear = options.Scheme == vtkClusteredLightingGridOptions::Slicing::Linear ||
+    (options.Scheme == vtkClusteredLightingGridOptions::Slicing::Auto && parallel);
+  view.Grid.Scheme = linear ? SlicingScheme::Linear : SlicingScheme::Exponential;
+  view.Bounds = options.Bounds;
+  return view;
+}
+
+//------------------------------------------------------------------------------
+bool vtkClusteredLightingAssigner::PreparationKey::operator!=(const PreparationKey& o) const
+{
+  return this->Cutoff != o.Cutoff || this->ErrorBudget != o.ErrorBudget ||
+    this->Windowed != o.Windowed || this->MortonOrder != o.MortonOrder;
+}
+
+unsigned int vtkClusteredLightingAssigner::ViewKey::CompareWith(const ViewKey& o) const
+{
+  unsigned int reasons = 0;
+  if (this->WCVC != o.WCVC || this->VCDC != o.VCDC)
+  {
+    reasons |= CL_DIRTY_VIEW;
+  }
+  if (!SameGrid(this->Grid, o.Grid))
+  {
+    reasons |= CL_DIRTY_GRID;
+  }
+  if (this->Bounds != o.Bounds || this->Clustered != o.Clustered ||
+    this->PerClusterCulling != o.PerClusterCulling)
+  {
+    reasons |= CL_DIRTY_MODE;
+  }
+  return reasons;
+}
+
+//------------------------------------------------------------------------------
+vtkClusteredLightingAssigner::vtkClusteredLightingAssigner()
+  : Backend(new vtkClusteredLightingRasterBackend)
+{
+}
+
+vtkClusteredLightingAssigner::~vtkClusteredLightingAssigner()
+{
+  this->ReleaseGraphicsResources(nullptr);
+  this->SetWindow(nullptr);
+}
+
+//------------------------------------------------------------------------------
+// The window is watched so that its GL objects are released, in its own context, when it
+// is deleted, even if its renderer no longer uses the pass then (VTK only releases the
+// passes of the renderers it still holds, and vtkOpenGLBufferObject would later delete
+// its stale name in whatever context is current).
+void vtkClusteredLightingAssigner::SetWindow(vtkOpenGLRenderWindow* rw)
+{
+  if (this->Window == rw)
+  {
+    return;
+  }
+  if (this->Window && this->WindowObserver)
+  {
+    this->Window->RemoveObserver(this->WindowObserver);
+  }
+  this->WindowObserver = 0;
+  this->Window = rw;
+  if (rw)
+  {
+    this->WindowObserver = rw->AddObserver(
+      vtkCommand::DeleteEvent, this, &vtkClusteredLightingAssigner::OnWindowDeleted);
+  }
+}
+
+void vtkClusteredLightingAssigner::OnWindowDeleted()
+{
+  this->ReleaseGraphicsResources(this->Window);
+}
+
+//------------------------------------------------------------------------------
+void vtkClusteredLightingAssigner::ReleaseGraphicsResources(vtkWindow* win)
+{
+  // Make the objects' own context current: vtkOpenGLBufferObject and
+  // vtkOpenGLVertexArrayObject delete their names in whatever context is current (which
+  // may be another window's, with names of its own), and a null window (destructor)
+  // would otherwise leave them alive.
+  vtkOpenGLRenderWindow* w =
+    vtkOpenGLRenderWindow::SafeDownCast(win ? win : this->Window.GetPointer());
+  const bool push = w && this->GetNumberOfGLObjects() > 0;
+  if (push)
+  {
+    w->PushContext();
+  }
+  this->LightData.Release(w);
+  this->LightView.Release(w);
+  this->Backend->ReleaseGraphicsResources(w);
+  if (push)
+  {
+    w->PopContext();
+  }
+  this->LightDataUploaded = false;
+  this->AssignmentValid = false;
+}
+
+//------------------------------------------------------------------------------
+int vtkClusteredLightingAssigner::GetNumberOfGLObjects() const
+{
+  return this->LightData.GetNumberOfGLObjects() + this->LightView.GetNumberOfGLObjects() +
+    this->Backend->GetNumberOfGLObjects();
+}
+
+void vtkClusteredLightingAssigner::GetGLObjectNames(
+  std::vector<std::pair<unsigned int, unsigned int>>& names) const
+{
+  this->LightData.GetGLObjectNames(names);
+  this->LightView.GetGLObjectNames(names);
+  this->Backend->GetGLObjectNames(names);
+}
+
+//------------------------------------------------------------------------------
+const vtkClusteredLightingAssignment& vtkClusteredLightingAssigner::Update(
+  vtkOpenGLRenderWindow* rw, const vtkClusteredLightingAssignerInputs& inputs)
+{
+  vtkClusteredLightingAssignment& r = this->Result;
+  r.Reasons = 0;
+  r.LightsUploaded = false;
+  r.Reassigned = false;
+  r.NewProblems.clear();
+  r.NewError.clear();
+  r.Clustered = inputs.Clustered;
+  r.Linear = inputs.View.Grid.Scheme == SlicingScheme::Linear;
+
+  // 1. What changed.
+  if (this->Window != rw)
+  {
+    if (this->Window)
+    {
+      this->ReleaseGraphicsResources(this->Window);
+    }
+    this->SetWindow(rw);
+    r.Reasons |= CL_DIRTY_RESOURCES;
+  }
+  if (!this->LightDataUploaded && !this->AssignmentValid)
+  {
+    r.Reasons |= CL_DIRTY_RESOURCES;
+  }
+  const vtkClusteredLightingSourceKey& key = inputs.Lights->Key;
+  if (!this->HaveSources || key.Objects != this->SourceObjects ||
+    key.NewestMTime != this->SourceMTime)
+  {
+    r.Reasons |= CL_DIRTY_LIGHTS;
+  }
+  PreparationKey preparation;
+  preparation.Cutoff = inputs.Preparation.Cutoff;
+  preparation.ErrorBudget = inputs.ErrorBudget;
+  preparation.Windowed = inputs.ErrorBudget > 0.0 && inputs.Windowed; // only the budget uses it
+  preparation.MortonOrder = inputs.Preparation.MortonOrder;
+  if (preparation != this->LastPreparation)
+  {
+    r.Reasons |= CL_DIRTY_PREPARATION;
+  }
+
+  // 2. Prepare lights.
+  if (r.Reasons & (CL_DIRTY_LIGHTS | CL_DIRTY_PREPARATION))
+  {
+    this->HaveSources = true;
+    this->SourceObjects = key.Objects;
+    this->SourceMTime = key.NewestMTime;
+    this->LastPreparation = preparation;
+    this->PrepareLights(inputs);
+  }
+  const PreparedLights& prepared = this->Prepared;
+  r.EffectiveCutoff = this->EffectiveCutoff;
+  r.NumberOfLights = static_cast<int>(prepared.Lights.size());
+  r.NumberOfRejected = static_cast<int>(prepared.Problems.size());
+  r.NumberOfAlwaysOn = static_cast<int>(prepared.NumberOfAlwaysOn);
+  r.NumberOfBelowCutoff = static_cast<int>(prepared.NumberOfBelowCutoff);
+  r.NumberOfSpots = static_cast<int>(prepared.NumberOfSpots);
+
+  // 3. Limits. 4. Light records, uploaded only when the lights changed.
+  r.Enabled = this->CheckLimits(rw, inputs);
+  if (r.Enabled && !this->LightDataUploaded)
+  {
+    this->LightData.Upload(rw, PackLightData(prepared.Lights));
+    this->LightDataUploaded = true;
+    r.LightsUploaded = true;
+  }
+
+  // 5-6. View records, list and master: only when something changed.
+  ViewKey view;
+  view.WCVC = inputs.View.WCVC;
+  view.VCDC = inputs.View.VCDC;
+  view.Grid = inputs.View.Grid;
+  view.Bounds = static_cast<int>(inputs.View.Bounds);
+  view.Clustered = inputs.Clustered;
+  view.PerClusterCulling = inputs.PerClusterCulling;
+  r.Reasons |= view.CompareWith(this->LastView);
+  if (!r.Enabled)
+  {
+    this->AssignmentValid = false;
+  }
+  else if (r.Reasons != 0 || !this->AssignmentValid)
+  {
+    this->LastView = view;
+    this->Assign(rw, inputs);
+  }
+  r.Enabled = r.Enabled && this->AssignmentValid;
+  r.NumberOfAssigned = r.Enabled ? r.NumberOfAssigned : 0;
+  r.MasterTexels = std::max(this->Layout.MasterTexelsPerCluster, 1);
+  r.ListBytes = this->Backend->GetListBytes();
+  r.MasterBytes = this->Backend->GetMasterBytes();
+  r.LightBufferBytes =
+    16u * (this->LightData.GetNumberOfTexels() + this->LightView.GetNumberOfTexels()) +
+    this->Backend->GetWorkBytes();
+  return r;
+}
+
+//------------------------------------------------------------------------------
+void vtkClusteredLightingAssigner::PrepareLights(const vtkClusteredLightingAssignerInputs& inputs)
+{
+  vtkClusteredLightingLightCollection& lights = *inputs.Lights;
+  vtkClusteredLightingLightCollector::Read(lights);
+  auto nameOf = [&lights](std::size_t i) { return lights.NameOf(i); };
+  LightPreparationOptions options = inputs.Preparation;
+  if (inputs.ErrorBudget > 0.0)
+  {
+    // Validate once, then pick the cutoff that meets the budget (vtkClusteredLightingLights.h).
+    LightPreparationOptions probe = options;
+    probe.MortonOrder = false;
+    const PreparedLights valid = vtkClusteredLighting::PrepareLights(lights.Sources, probe, nameOf);
+    options.Cutoff = ChooseCutoffForErrorBudget(
+      valid.Lights, inputs.ErrorBudget, ComputeErrorBudgetSamples(valid.Lights), inputs.Windowed);
+  }
+  this->EffectiveCutoff = options.Cutoff;
+  this->Prepared = vtkClusteredLighting::PrepareLights(lights.Sources, options, nameOf);
+  // Report each problem once: a bad light stays reported while it stays bad, even when
+  // other lights change every frame.
+  std::set<std::string> problems(this->Prepared.Problems.begin(), this->Prepared.Problems.end());
+  for (const std::string& problem : problems)
+  {
+    if (!this->ReportedProblems.count(problem))
+    {
+      this->Result.NewProblems.push_back(problem);
+    }
+  }
+  this->ReportedProblems.swap(problems);
+  this->LightDataUploaded = false;
+  this->AssignmentValid = false;
+}
+
+//------------------------------------------------------------------------------
+// Whether the lights fit the GL limits (texture buffer size, list and master texture
+// sizes); computes the texture layout. A new error is put in the result.
+bool vtkClusteredLightingAssigner::CheckLimits(
+  vtkOpenGLRenderWindow* rw, const vtkClusteredLightingAssignerInputs& inputs)
+{
+  const int numberOfLights = static_cast<int>(this->Prepared.Lights.size());
+  this->Layout = ClusterTextureLayout();
+  if (numberOfLights == 0)
+  {
+    return false;
+  }
+  int maxTexture = vtkTextureObject::GetMaximumTextureSize(rw);
+  if (inputs.MaximumTextureSize > 0)
+  {
+    maxTexture = std::min(maxTexture, inputs.MaximumTextureSize);
+  }
+  GLint maxBuffer = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxBuffer);
+  std::string error;
+  bool ok = true;
+  if (static_cast<vtkTypeInt64>(numberOfLights) * 2 > maxBuffer)
+  {
+    std::ostringstream os;
+    os << numberOfLights << " lights need " << 2 * static_cast<vtkTypeInt64>(numberOfLights)
+       << " texels of light records, over GL_MAX_TEXTURE_BUFFER_SIZE " << maxBuffer;
+    error = os.str();
+    ok = false;
+  }
+  else if (inputs.Clustered)
+  {
+    const ClusterGridParams& g = inputs.View.Grid;
+    ok =
+      ComputeLayout(g.TilesX, g.TilesY, g.Slices, numberOfLights, maxTexture, this->Layout, &error);
+  }
+  if (!ok && error != this->ReportedError)
+  {
+    this->Result.NewError = "Clustered lights are not rendered: " + error + ".";
+  }
+  this->ReportedError = ok ? std::string() : error;
+  return ok;
+}
+
+//------------------------------------------------------------------------------
+void vtkClusteredLightingAssigner::Assign(
+  vtkOpenGLRenderWindow* rw, const vtkClusteredLightingAssignerInputs& inputs)
+{
+  vtkClusteredLightingAssignment& r = this->Result;
+  const auto t0 = std::chrono::steady_clock::now();
+  if (inputs.MeasureTimings)
+  {
+    glFinish();
+  }
+  const auto t1 = std::chrono::steady_clock::now();
+  const ViewData data = ComputeViewData(this->Prepared.Lights, inputs.View);
+  bool ok = this->LightView.Upload(rw, data.LightView);
+  if (ok && inputs.Clustered)
+  {
+    ok = this->Backend->Assign(rw, this->Layout, data,
+      ComputeListPassParameters(inputs.View, inputs.PerClusterCulling),
+      this->LightView.GetTexture());
+    if (!ok)
+    {
+      std::ostringstream os;
+      os << "Could not allocate or fill the cluster textures (" << this->Layout.ListWidth << "x"
+         << this->Layout.ListHeight << " R32UI) with the " << this->Backend->GetName()
+         << " back end.";
+      r.NewError = os.str();
+    }
+  }
+  if (inputs.MeasureTimings)
+  {
+    glFinish();
+  }
+  const auto t2 = std::chrono::steady_clock::now();
+  r.AssignmentTime = inputs.MeasureTimings ? Milliseconds(t1, t2) : Milliseconds(t0, t2);
+  r.NumberOfQuads = data.NumberOfQuads;
+  r.NumberOfAssigned = data.NumberOfAssignedLights;
+  r.Shading = ComputeShadingParameters(inputs.View, this->Layout);
+  r.Reassigned = true;
+  this->AssignmentValid = ok;
+}
+
+//------------------------------------------------------------------------------
+void vtkClusteredLightingAssigner::ActivateShading()
+{
+  vtkClusteredLightingAssignment& r = this->Result;
+  for (vtkTextureObject* tex : { this->LightData.GetTexture(), this->LightView.GetTexture() })
+  {
+    if (tex)
+    {
+      tex->Activate();
+    }
+  }
+  if (r.Clustered)
+  {
+    this->Backend->ActivateShadingTextures();
+  }
+  r.LightDataUnit =
+    this->LightData.GetTexture() ? this->LightData.GetTexture()->GetTextureUnit() : -1;
+  r.LightViewUnit =
+    this->LightView.GetTexture() ? this->LightView.GetTexture()->GetTextureUnit() : -1;
+  r.ListUnit = r.Clustered ? this->Backend->GetListUnit() : -1;
+  r.MasterUnit = r.Clustered ? this->Backend->GetMasterUnit() : -1;
+}
+
+void vtkClusteredLightingAssigner::DeactivateShading()
+{
+  for (vtkTextureObject* tex : { this->LightData.GetTexture(), this->LightView.GetTexture() })
+  {
+    if (tex && tex->GetTextureUnit() >= 0)
+    {
+      tex->Deactivate();
+    }
+  }
+  this->Backend->DeactivateShadingTextures();
+  vtkClusteredLightingAssignment& r = this->Result;
+  r.LightDataUnit = r.LightViewUnit = r.ListUnit = r.MasterUnit = -1;
+}
+
+//------------------------------------------------------------------------------
+vtkClusteredLightingAssignmentSnapshot vtkClusteredLightingAssigner::GetSnapshot() const
+{
+  vtkClusteredLightingAssignmentSnapshot f;
+  f.Valid = this->AssignmentValid;
+  f.Grid = this->LastView.Grid;
+  f.WCVC = this->LastView.WCVC;
+  f.VCDC = this->LastView.VCDC;
+  f.Layout = this->Layout;
+  f.Lights = this->Prepared.Lights;
+  f.NumberOfQuads = this->Result.NumberOfQuads;
+  return f;
+}
+
+bool vtkClusteredLightingAssigner::ReadBackAssignment(
+  std::vector<std::uint32_t>& list, std::vector<std::uint32_t>& master)
+{
+  if (!this->Window || !this->AssignmentValid)
+  {
+    return false;
+  }
+  this->Window->MakeCurrent();
+  return this->Backend->ReadBack(this->Window, list, master);
+}

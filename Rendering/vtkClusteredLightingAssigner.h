@@ -1,0 +1,242 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @class   vtkClusteredLightingAssigner
+ * @brief   light assignment for one renderer: change detection, light records, list/master
+ *
+ * Private to the module; the second stage of vtkClusteredLightingPass::Render(), one
+ * instance per renderer (it owns that renderer's GL objects):
+ *
+ *   light gathering (vtkClusteredLightingLightCollector)
+ *     -> Update():
+ *          1. what changed (explicit reasons, vtkClusteredLightingDirtyReason)
+ *          2. prepare lights    (only when LIGHTS or PREPARATION: validate, radii, Morton
+ *                                order, error budget; Rendering/Core/...Lights.h)
+ *          3. limits            (texture layout for the light count, or an error)
+ *          4. upload clLightData (only when the prepared lights changed)
+ *          5. view              (only when anything changed: clLightView records and the
+ *                                (light, slice) tile rectangles, ...Assignment.h)
+ *          6. list and master   (the back end, vtkClusteredLightingAssignmentBackend)
+ *        and returns a vtkClusteredLightingAssignment: statistics, messages to report,
+ *        and the values the shading code needs (one struct for SetShaderParameters)
+ *     -> shading (the pass: shader variant, delegate render with the textures bound)
+ *
+ * Change detection compares typed inputs with those of the last update, never a flat
+ * signature: the light sources' key (objects and newest MTime), the preparation
+ * options, and the view key (matrices, grid, mode). A still frame with unchanged lights
+ * does no work at all; a moving camera re-runs steps 5-6 only; a changed light re-runs
+ * 2-6.
+ *
+ * GL objects (all in the context of the window of the last update, released in that
+ * context when the window is deleted, when the assigner is destroyed, or on
+ * ReleaseGraphicsResources):
+ *   clLightData  texture buffer, RGBA32F, 2 texels per light (changes with the lights)
+ *   clLightView  texture buffer, RGBA32F, 2 texels per light (changes with the view)
+ *   + whatever the back end owns (raster back end: quads, list, master, FBO, VAO)
+ *
+ * For tests (vtkClusteredLightingInspector, Testing/Cxx), GetSnapshot() copies what the
+ * last assignment used (grid, matrices, layout, prepared lights) when asked; nothing is
+ * kept for it otherwise.
+ *
+ * @sa vtkClusteredLightingPass vtkClusteredLightingLightCollector
+ */
+#ifndef vtkClusteredLightingAssigner_h
+#define vtkClusteredLightingAssigner_h
+
+#include "vtkClusteredLightingAssignment.h" // for ViewParameters, ShadingParameters
+#include "vtkClusteredLightingGLHelpers.h"  // for vtkClusteredLightingTextureBuffer
+#include "vtkClusteredLightingLayout.h"     // for ClusterTextureLayout
+#include "vtkClusteredLightingLights.h"     // for PreparedLights
+#include "vtkOpenGLRenderWindow.h"          // for vtkWeakPointer<vtkOpenGLRenderWindow>
+#include "vtkWeakPointer.h"                 // for vtkWeakPointer
+
+#include <cstdint> // for std::uint64_t
+#include <memory>  // for std::unique_ptr
+#include <set>     // for std::set
+#include <string>  // for std::string
+#include <vector>  // for std::vector
+
+class vtkClusteredLightingAssignmentBackend;
+class vtkRenderer;
+struct vtkClusteredLightingLightCollection;
+
+/// Why an update did work (a bit set; 0: nothing changed, nothing was done).
+enum vtkClusteredLightingDirtyReason : unsigned int
+{
+  CL_DIRTY_LIGHTS = 1u << 0,      ///< a light source was added, removed or modified
+  CL_DIRTY_PREPARATION = 1u << 1, ///< cutoff, error budget or Morton order changed
+  CL_DIRTY_VIEW = 1u << 2,        ///< the camera matrices changed
+  CL_DIRTY_GRID = 1u << 3,        ///< tiles, slices, viewport, depth range or slicing changed
+  CL_DIRTY_MODE = 1u << 4,        ///< shading mode, bounds method or per-cluster culling changed
+  CL_DIRTY_RESOURCES = 1u << 5    ///< first update, another window, or GL objects released
+};
+
+/// The cluster grid as the pass's options describe it.
+struct vtkClusteredLightingGridOptions
+{
+  int TilesX = 32, TilesY = 16, Slices = 32;
+  enum class Slicing
+  {
+    Auto, ///< exponential for perspective cameras, linear for parallel ones
+    Exponential,
+    Linear
+  };
+  Slicing Scheme = Slicing::Auto;
+  vtkClusteredLighting::BoundsMethod Bounds = vtkClusteredLighting::BoundsMethod::Tangent;
+};
+
+/// What one update needs; the pass fills it from its options, the camera and the lights.
+struct vtkClusteredLightingAssignerInputs
+{
+  vtkClusteredLightingLightCollection* Lights = nullptr; ///< Read() is called when needed
+  vtkClusteredLighting::LightPreparationOptions Preparation;
+  double ErrorBudget = 0.0; ///< > 0: choose the cutoff for it (Preparation.Cutoff ignored)
+  bool Windowed = false;    ///< windowed falloff (the error budget accounts for it)
+  vtkClusteredLighting::ViewParameters View; ///< see vtkClusteredLightingAssigner::ComputeView
+  bool Clustered = true;                     ///< false: brute force (no list and master passes)
+  bool PerClusterCulling = true;
+  int MaximumTextureSize = 0; ///< 0: the context's limit
+  bool MeasureTimings = false;
+};
+
+/// What an update did and found; SetShaderParameters reads only this.
+struct vtkClusteredLightingAssignment
+{
+  unsigned int Reasons = 0; ///< vtkClusteredLightingDirtyReason bits
+  bool LightsUploaded = false;
+  bool Reassigned = false; ///< the view records (and list and master) were rebuilt
+  bool Enabled = false;    ///< clustered lights are shaded in this render
+  bool Clustered = true;
+  bool Linear = false; ///< linear depth slices
+
+  // Statistics.
+  int NumberOfLights = 0; ///< valid lights
+  int NumberOfRejected = 0;
+  int NumberOfAlwaysOn = 0;
+  int NumberOfBelowCutoff = 0;
+  int NumberOfSpots = 0;
+  int NumberOfAssigned = 0; ///< lights with at least one list-pass quad
+  int NumberOfQuads = 0;
+  double EffectiveCutoff = 1.0 / 1024.0;
+  double AssignmentTime = 0.0; ///< ms, when Reassigned
+  std::uint64_t ListBytes = 0, MasterBytes = 0, LightBufferBytes = 0;
+
+  // Messages new in this update (each problem is reported once while it persists).
+  std::vector<std::string> NewProblems; ///< invalid lights (warnings)
+  std::string NewError;                 ///< a limit that keeps the lights from rendering
+
+  // Shading inputs.
+  int MasterTexels = 1; ///< master texels per cluster (a compile-time constant of the GLSL)
+  vtkClusteredLighting::ShadingParameters Shading;
+  int LightDataUnit = -1, LightViewUnit = -1, ListUnit = -1, MasterUnit = -1; ///< while bound
+};
+
+/// What the last assignment used (a copy made for tests, GetSnapshot()).
+struct vtkClusteredLightingAssignmentSnapshot
+{
+  bool Valid = false;
+  vtkClusteredLighting::ClusterGridParams Grid; ///< includes the camera near/far
+  glm::dmat4 WCVC = glm::dmat4(1.0);
+  glm::dmat4 VCDC = glm::dmat4(1.0);
+  vtkClusteredLighting::ClusterTextureLayout Layout;
+  std::vector<vtkClusteredLighting::PreparedLight> Lights; ///< upload order, world coords
+  int NumberOfQuads = 0;
+};
+
+class vtkClusteredLightingAssigner
+{
+public:
+  vtkClusteredLightingAssigner();
+  ~vtkClusteredLightingAssigner();
+
+  /**
+   * The view step's input: the matrices the mappers use for this renderer (VTK caches
+   * them per camera and renderer), the viewport, the camera clipping range as the
+   * clustering depth range, and the grid.
+   */
+  static vtkClusteredLighting::ViewParameters ComputeView(
+    vtkRenderer* renderer, const vtkClusteredLightingGridOptions& grid);
+
+  /// Brings the assignment up to date for this render (the window's context is current).
+  const vtkClusteredLightingAssignment& Update(
+    vtkOpenGLRenderWindow* rw, const vtkClusteredLightingAssignerInputs& inputs);
+
+  /// The result of the last update.
+  const vtkClusteredLightingAssignment& GetResult() const { return this->Result; }
+
+  ///@{
+  /// Bind the light records (and, clustered, list and master) for the shading pass and
+  /// fill the result's texture units; unbind after the delegate rendered.
+  void ActivateShading();
+  void DeactivateShading();
+  ///@}
+
+  /// The window whose context holds the GL objects (null after it was deleted).
+  vtkOpenGLRenderWindow* GetWindow() const { return this->Window; }
+
+  /// Releases every GL object, in the context of w (or of the assigner's window, for a
+  /// null w, while it lives), made current for the duration.
+  void ReleaseGraphicsResources(vtkWindow* w);
+
+  int GetNumberOfGLObjects() const;
+
+  ///@{
+  /// For tests (vtkClusteredLightingInspector).
+  vtkClusteredLightingAssignmentSnapshot GetSnapshot() const;
+  bool ReadBackAssignment(std::vector<std::uint32_t>& list, std::vector<std::uint32_t>& master);
+  void GetGLObjectNames(std::vector<std::pair<unsigned int, unsigned int>>& names) const;
+  ///@}
+
+private:
+  vtkClusteredLightingAssigner(const vtkClusteredLightingAssigner&) = delete;
+  void operator=(const vtkClusteredLightingAssigner&) = delete;
+
+  /// Preparation options as a comparable value.
+  struct PreparationKey
+  {
+    double Cutoff = 0.0, ErrorBudget = 0.0;
+    bool Windowed = false, MortonOrder = true;
+    bool operator!=(const PreparationKey& o) const;
+  };
+  /// Everything a view assignment depends on, as a comparable value.
+  struct ViewKey
+  {
+    glm::dmat4 WCVC = glm::dmat4(0.0), VCDC = glm::dmat4(0.0);
+    vtkClusteredLighting::ClusterGridParams Grid;
+    int Bounds = 0;
+    bool Clustered = true, PerClusterCulling = true;
+    unsigned int CompareWith(const ViewKey& o) const; ///< dirty reasons between the two
+  };
+
+  void SetWindow(vtkOpenGLRenderWindow* rw);
+  void OnWindowDeleted();
+  void PrepareLights(const vtkClusteredLightingAssignerInputs& inputs);
+  bool CheckLimits(vtkOpenGLRenderWindow* rw, const vtkClusteredLightingAssignerInputs& inputs);
+  void Assign(vtkOpenGLRenderWindow* rw, const vtkClusteredLightingAssignerInputs& inputs);
+
+  vtkWeakPointer<vtkOpenGLRenderWindow> Window;
+  unsigned long WindowObserver = 0;
+
+  // Lights.
+  bool HaveSources = false;
+  std::vector<const void*> SourceObjects;
+  unsigned long long SourceMTime = 0;
+  PreparationKey LastPreparation;
+  vtkClusteredLighting::PreparedLights Prepared;
+  double EffectiveCutoff = 1.0 / 1024.0;
+  std::set<std::string> ReportedProblems;
+  std::string ReportedError;
+  bool LightDataUploaded = false;
+
+  // View.
+  ViewKey LastView;
+  bool AssignmentValid = false;
+  vtkClusteredLighting::ClusterTextureLayout Layout;
+
+  vtkClusteredLightingTextureBuffer LightData;
+  vtkClusteredLightingTextureBuffer LightView;
+  std::unique_ptr<vtkClusteredLightingAssignmentBackend> Backend;
+
+  vtkClusteredLightingAssignment Result;
+};
+
+#endif

@@ -1,0 +1,76 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @file vtkClusteredLightingGLHelpers.h
+ * @brief Small GL building blocks shared by the light buffers and the assignment back end.
+ *
+ * Private to the module:
+ *  - vtkClusteredLightingTextureBuffer: a float RGBA texture buffer (a buffer object plus
+ *    the texture that samples it), re-created only when its size changes;
+ *  - vtkClusteredLightingDebugGroup: a scoped GL debug group (glPushDebugGroup), so that
+ *    the list and master passes show up by name in GL debuggers and traces; a no-op where
+ *    neither GL 4.3 nor KHR_debug is available;
+ *  - vtkClusteredLightingSetUniform4i: vtkShaderProgram has no ivec4 setter in VTK 9.1.
+ *
+ * None of them makes a context current: callers do (see vtkClusteredLightingAssigner).
+ */
+#ifndef vtkClusteredLightingGLHelpers_h
+#define vtkClusteredLightingGLHelpers_h
+
+#include <cstddef> // for std::size_t
+#include <utility> // for std::pair
+#include <vector>  // for std::vector
+
+class vtkOpenGLBufferObject;
+class vtkOpenGLRenderWindow;
+class vtkShaderProgram;
+class vtkTextureObject;
+class vtkWindow;
+
+/// ivec4 uniform setter (the program must be bound). Returns false if the program does
+/// not use the uniform.
+bool vtkClusteredLightingSetUniform4i(vtkShaderProgram* program, const char* name, const int v[4]);
+
+/// A float RGBA texture buffer (samplerBuffer in GLSL).
+class vtkClusteredLightingTextureBuffer
+{
+public:
+  vtkClusteredLightingTextureBuffer() = default;
+  ~vtkClusteredLightingTextureBuffer();
+
+  /// Uploads data (4 floats per texel); keeps the texture when the size is unchanged.
+  /// An empty vector keeps whatever was uploaded before.
+  bool Upload(vtkOpenGLRenderWindow* rw, const std::vector<float>& data);
+
+  /// Deletes the GL objects (in the current context when w is given).
+  void Release(vtkWindow* w);
+
+  vtkTextureObject* GetTexture() const { return this->Texture; }
+  std::size_t GetNumberOfTexels() const { return this->Texels; }
+  int GetNumberOfGLObjects() const;
+  /// Appends (GL_TEXTURE or GL_BUFFER, name) of the live objects.
+  void GetGLObjectNames(std::vector<std::pair<unsigned int, unsigned int>>& names) const;
+
+private:
+  vtkClusteredLightingTextureBuffer(const vtkClusteredLightingTextureBuffer&) = delete;
+  void operator=(const vtkClusteredLightingTextureBuffer&) = delete;
+
+  vtkOpenGLBufferObject* Buffer = nullptr;
+  vtkTextureObject* Texture = nullptr;
+  std::size_t Texels = 0;
+};
+
+/// Scoped GL debug group: pushed by the constructor, popped by the destructor.
+class vtkClusteredLightingDebugGroup
+{
+public:
+  explicit vtkClusteredLightingDebugGroup(const char* name);
+  ~vtkClusteredLightingDebugGroup();
+
+private:
+  vtkClusteredLightingDebugGroup(const vtkClusteredLightingDebugGroup&) = delete;
+  void operator=(const vtkClusteredLightingDebugGroup&) = delete;
+
+  bool Pushed = false;
+};
+
+#endif

@@ -1,0 +1,374 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "vtkClusteredLightingRasterBackend.h"
+
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkOpenGLState.h"
+#include "vtkOpenGLVertexArrayObject.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+#include "vtk_glew.h" // for GL calls
+
+#include "vtkClusteredLightingFullScreenVS.h"
+#include "vtkClusteredLightingListFS.h"
+#include "vtkClusteredLightingListVS.h"
+#include "vtkClusteredLightingMasterFS.h"
+
+#include <algorithm> // for std::max
+
+using namespace vtkClusteredLighting;
+
+namespace
+{
+vtkTextureObject* NewIntegerTexture(vtkOpenGLRenderWindow* rw, int w, int h)
+{
+  vtkTextureObject* tex = vtkTextureObject::New();
+  tex->SetContext(rw);
+  tex->SetInternalFormat(GL_R32UI);
+  tex->SetFormat(GL_RED_INTEGER);
+  tex->SetDataType(GL_UNSIGNED_INT);
+  tex->SetMinificationFilter(vtkTextureObject::Nearest);
+  tex->SetMagnificationFilter(vtkTextureObject::Nearest);
+  tex->SetWrapS(vtkTextureObject::ClampToEdge);
+  tex->SetWrapT(vtkTextureObject::ClampToEdge);
+  if (!tex->Allocate2D(
+        static_cast<unsigned int>(w), static_cast<unsigned int>(h), 1, VTK_UNSIGNED_INT))
+  {
+    tex->Delete();
+    return nullptr;
+  }
+  return tex;
+}
+
+/// Re-allocates `tex` when its size differs from (w, h); returns whether it exists.
+bool Reallocate(vtkOpenGLRenderWindow* rw, vtkTextureObject*& tex, int size[2], int w, int h)
+{
+  if (tex && size[0] == w && size[1] == h)
+  {
+    return true;
+  }
+  if (tex)
+  {
+    tex->ReleaseGraphicsResources(rw);
+    tex->Delete();
+  }
+  tex = NewIntegerTexture(rw, w, h);
+  size[0] = tex ? w : 0;
+  size[1] = tex ? h : 0;
+  return tex != nullptr;
+}
+
+void Release(vtkTextureObject*& tex, vtkWindow* w)
+{
+  if (tex)
+  {
+    if (w)
+    {
+      tex->ReleaseGraphicsResources(w);
+    }
+    tex->Delete();
+    tex = nullptr;
+  }
+}
+}
+
+//------------------------------------------------------------------------------
+vtkClusteredLightingRasterBackend::~vtkClusteredLightingRasterBackend()
+{
+  this->ReleaseGraphicsResources(nullptr);
+}
+
+//------------------------------------------------------------------------------
+void vtkClusteredLightingRasterBackend::ReleaseGraphicsResources(vtkWindow* w)
+{
+  this->Quads.Release(w);
+  Release(this->List, w);
+  Release(this->Master, w);
+  if (this->FBO)
+  {
+    if (w)
+    {
+      this->FBO->ReleaseGraphicsResources(w);
+    }
+    this->FBO->Delete();
+    this->FBO = nullptr;
+  }
+  if (this->VAO)
+  {
+    if (w)
+    {
+      this->VAO->ReleaseGraphicsResources();
+    }
+    this->VAO->Delete();
+    this->VAO = nullptr;
+  }
+  this->VAOCreated = false;
+  this->VAOName = 0;
+  this->ListSize[0] = this->ListSize[1] = 0;
+  this->MasterSize[0] = this->MasterSize[1] = 0;
+}
+
+//------------------------------------------------------------------------------
+int vtkClusteredLightingRasterBackend::GetNumberOfGLObjects() const
+{
+  return this->Quads.GetNumberOfGLObjects() + ((this->List && this->List->GetHandle()) ? 1 : 0) +
+    ((this->Master && this->Master->GetHandle()) ? 1 : 0) +
+    ((this->FBO && this->FBO->GetFBOIndex()) ? 1 : 0) + ((this->VAO && this->VAOCreated) ? 1 : 0);
+}
+
+void vtkClusteredLightingRasterBackend::GetGLObjectNames(
+  std::vector<std::pair<unsigned int, unsigned int>>& names) const
+{
+  this->Quads.GetGLObjectNames(names);
+  for (vtkTextureObject* tex : { this->List, this->Master })
+  {
+    if (tex && tex->GetHandle())
+    {
+      names.emplace_back(GL_TEXTURE, tex->GetHandle());
+    }
+  }
+  if (this->FBO && this->FBO->GetFBOIndex())
+  {
+    names.emplace_back(GL_FRAMEBUFFER, this->FBO->GetFBOIndex());
+  }
+  if (this->VAO && this->VAOCreated)
+  {
+    names.emplace_back(GL_VERTEX_ARRAY, this->VAOName);
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkClusteredLightingRasterBackend::AllocateTextures(
+  vtkOpenGLRenderWindow* rw, const ClusterTextureLayout& layout)
+{
+  const bool list = Reallocate(rw, this->List, this->ListSize, layout.ListWidth, layout.ListHeight);
+  const bool master =
+    Reallocate(rw, this->Master, this->MasterSize, layout.MasterWidth, layout.MasterHeight);
+  return list && master;
+}
+
+//------------------------------------------------------------------------------
+void vtkClusteredLightingRasterBackend::BindVAO()
+{
+  this->VAO->Bind();
+  this->VAOCreated = true;
+  GLint name = 0;
+  glGetIntegerv(GL_VERTEX_ARRAY_BINDING, &name);
+  this->VAOName = static_cast<unsigned int>(name);
+}
+
+//------------------------------------------------------------------------------
+bool vtkClusteredLightingRasterBackend::BindTarget(vtkTextureObject* tex)
+{
+  this->FBO->AddColorAttachment(0, tex);
+  this->FBO->ActivateDrawBuffers(1);
+  return glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
+}
+
+//------------------------------------------------------------------------------
+bool vtkClusteredLightingRasterBackend::Assign(vtkOpenGLRenderWindow* rw,
+  const ClusterTextureLayout& layout, const ViewData& view, const ListPassParameters& parameters,
+  vtkTextureObject* lightView)
+{
+  if (!this->AllocateTextures(rw, layout) || !this->Quads.Upload(rw, view.Quads))
+  {
+    return false;
+  }
+  vtkOpenGLState* state = rw->GetState();
+  if (!this->FBO)
+  {
+    this->FBO = vtkOpenGLFramebufferObject::New();
+  }
+  if (!this->VAO)
+  {
+    this->VAO = vtkOpenGLVertexArrayObject::New();
+  }
+  this->FBO->SetContext(rw);
+
+  // vtkOpenGLState does not track the vertex array binding (VAO::Release binds 0).
+  GLint vertexArray = 0;
+  glGetIntegerv(GL_VERTEX_ARRAY_BINDING, &vertexArray);
+  bool ok = true;
+  state->PushFramebufferBindings();
+  {
+    vtkOpenGLState::ScopedglViewport savedViewport(state);
+    vtkOpenGLState::ScopedglColorMask savedColorMask(state);
+    vtkOpenGLState::ScopedglEnableDisable savedBlend(state, GL_BLEND);
+    vtkOpenGLState::ScopedglEnableDisable savedDepth(state, GL_DEPTH_TEST);
+    vtkOpenGLState::ScopedglEnableDisable savedScissor(state, GL_SCISSOR_TEST);
+    vtkOpenGLState::ScopedglEnableDisable savedCull(state, GL_CULL_FACE);
+    state->vtkglDisable(GL_BLEND);
+    state->vtkglDisable(GL_DEPTH_TEST);
+    state->vtkglDisable(GL_SCISSOR_TEST);
+    state->vtkglDisable(GL_CULL_FACE);
+    state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    this->FBO->Bind();
+    ok = this->RunListPass(rw, layout, view.NumberOfQuads, parameters, lightView) &&
+      this->RunMasterPass(rw, layout);
+    this->FBO->RemoveColorAttachments(1);
+    this->FBO->UnBind();
+  }
+  state->PopFramebufferBindings();
+  glBindVertexArray(static_cast<GLuint>(vertexArray));
+  return ok;
+}
+
+//------------------------------------------------------------------------------
+// One instanced quad per (light, slice) rectangle, bits OR-ed into the list texture.
+bool vtkClusteredLightingRasterBackend::RunListPass(vtkOpenGLRenderWindow* rw,
+  const ClusterTextureLayout& layout, int numberOfQuads, const ListPassParameters& parameters,
+  vtkTextureObject* lightView)
+{
+  vtkClusteredLightingDebugGroup group("vtkClusteredLighting list pass");
+  if (!this->BindTarget(this->List))
+  {
+    return false;
+  }
+  rw->GetState()->vtkglViewport(0, 0, layout.ListWidth, layout.ListHeight);
+  const GLuint zero[4] = { 0u, 0u, 0u, 0u };
+  glClearBufferuiv(GL_COLOR, 0, zero);
+  if (numberOfQuads <= 0 || !this->Quads.GetTexture() || !lightView)
+  {
+    return true;
+  }
+  vtkShaderProgram* program = rw->GetShaderCache()->ReadyShaderProgram(
+    vtkClusteredLightingListVS, vtkClusteredLightingListFS, "");
+  if (!program)
+  {
+    return false;
+  }
+  vtkTextureObject* quads = this->Quads.GetTexture();
+  quads->Activate();
+  lightView->Activate();
+  program->SetUniformi("clQuads", quads->GetTextureUnit());
+  program->SetUniformi("clLightView", lightView->GetTextureUnit());
+  const int grid[4] = { layout.TilesX, layout.TilesY, layout.Slices, layout.BatchRows };
+  vtkClusteredLightingSetUniform4i(program, "clGrid", grid);
+  const float size[2] = { static_cast<float>(layout.ListWidth),
+    static_cast<float>(layout.ListHeight) };
+  program->SetUniform2f("clListSize", size);
+  program->SetUniformi("clCullClusters", parameters.CullClusters ? 1 : 0);
+  program->SetUniform3f("clProjectionX", parameters.ProjectionX);
+  program->SetUniform3f("clProjectionY", parameters.ProjectionY);
+  program->SetUniform2f("clProjectionW", parameters.ProjectionW);
+  program->SetUniform4f("clSlicing", parameters.Slicing);
+  program->SetUniform2f("clDepthRange", parameters.DepthRange);
+  this->BindVAO();
+  // vtkOpenGLState does not track the logic op: restore exactly what was set.
+  const GLboolean logicOp = glIsEnabled(GL_COLOR_LOGIC_OP);
+  GLint logicOpMode = GL_COPY;
+  glGetIntegerv(GL_LOGIC_OP_MODE, &logicOpMode);
+  glEnable(GL_COLOR_LOGIC_OP);
+  glLogicOp(GL_OR);
+  glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, numberOfQuads);
+  glLogicOp(static_cast<GLenum>(logicOpMode));
+  if (!logicOp)
+  {
+    glDisable(GL_COLOR_LOGIC_OP);
+  }
+  this->VAO->Release();
+  lightView->Deactivate();
+  quads->Deactivate();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+// One bit per non-empty 32-light batch of each cluster.
+bool vtkClusteredLightingRasterBackend::RunMasterPass(
+  vtkOpenGLRenderWindow* rw, const ClusterTextureLayout& layout)
+{
+  vtkClusteredLightingDebugGroup group("vtkClusteredLighting master pass");
+  if (!this->BindTarget(this->Master))
+  {
+    return false;
+  }
+  rw->GetState()->vtkglViewport(0, 0, layout.MasterWidth, layout.MasterHeight);
+  vtkShaderProgram* program = rw->GetShaderCache()->ReadyShaderProgram(
+    vtkClusteredLightingFullScreenVS, vtkClusteredLightingMasterFS, "");
+  if (!program)
+  {
+    return false;
+  }
+  this->List->Activate();
+  program->SetUniformi("clList", this->List->GetTextureUnit());
+  const int grid[4] = { layout.TilesX, layout.TilesY, layout.Slices, layout.BatchRows };
+  vtkClusteredLightingSetUniform4i(program, "clGrid", grid);
+  program->SetUniformi("clBatches", layout.Batches);
+  program->SetUniformi("clMasterTexels", std::max(layout.MasterTexelsPerCluster, 1));
+  this->BindVAO();
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  this->VAO->Release();
+  this->List->Deactivate();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkClusteredLightingRasterBackend::ActivateShadingTextures()
+{
+  if (this->List && this->Master)
+  {
+    this->List->Activate();
+    this->Master->Activate();
+  }
+}
+
+void vtkClusteredLightingRasterBackend::DeactivateShadingTextures()
+{
+  for (vtkTextureObject* tex : { this->List, this->Master })
+  {
+    if (tex && tex->GetTextureUnit() >= 0)
+    {
+      tex->Deactivate();
+    }
+  }
+}
+
+int vtkClusteredLightingRasterBackend::GetListUnit() const
+{
+  return this->List ? this->List->GetTextureUnit() : -1;
+}
+
+int vtkClusteredLightingRasterBackend::GetMasterUnit() const
+{
+  return this->Master ? this->Master->GetTextureUnit() : -1;
+}
+
+//------------------------------------------------------------------------------
+bool vtkClusteredLightingRasterBackend::ReadBack(
+  vtkOpenGLRenderWindow* rw, std::vector<std::uint32_t>& list, std::vector<std::uint32_t>& master)
+{
+  if (!this->List || !this->Master)
+  {
+    return false;
+  }
+  vtkOpenGLState::ScopedglActiveTexture savedUnit(rw->GetState());
+  list.assign(static_cast<std::size_t>(this->ListSize[0]) * this->ListSize[1], 0u);
+  master.assign(static_cast<std::size_t>(this->MasterSize[0]) * this->MasterSize[1], 0u);
+  // Through vtkOpenGLState: a direct glPixelStorei would leave VTK's cached pack
+  // alignment stale, and VTK's next RGB read-back would overrun its buffer.
+  rw->GetState()->vtkglPixelStorei(GL_PACK_ALIGNMENT, 4);
+  this->List->Activate();
+  glGetTexImage(GL_TEXTURE_2D, 0, GL_RED_INTEGER, GL_UNSIGNED_INT, list.data());
+  this->List->Deactivate();
+  this->Master->Activate();
+  glGetTexImage(GL_TEXTURE_2D, 0, GL_RED_INTEGER, GL_UNSIGNED_INT, master.data());
+  this->Master->Deactivate();
+  return glGetError() == GL_NO_ERROR;
+}
+
+//------------------------------------------------------------------------------
+std::uint64_t vtkClusteredLightingRasterBackend::GetListBytes() const
+{
+  return 4ull * this->ListSize[0] * this->ListSize[1];
+}
+
+std::uint64_t vtkClusteredLightingRasterBackend::GetMasterBytes() const
+{
+  return 4ull * this->MasterSize[0] * this->MasterSize[1];
+}
+
+std::uint64_t vtkClusteredLightingRasterBackend::GetWorkBytes() const
+{
+  return 16ull * this->Quads.GetNumberOfTexels();
+}

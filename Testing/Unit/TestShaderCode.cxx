@@ -1,0 +1,67 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The //CL_IF preprocessor that keeps only the code paths a shader variant needs.
+#include "vtkClusteredLightingShaderCode.h"
+
+#include <gtest/gtest.h>
+
+using namespace vtkClusteredLighting;
+
+namespace
+{
+const char* Source = "a\n"
+                     "//CL_IF(X)\n"
+                     "x\n"
+                     "  //CL_IF(Y)\n"
+                     "xy\n"
+                     "  //CL_ELSE\n"
+                     "x-not-y\n"
+                     "  //CL_ENDIF\n"
+                     "//CL_ELSE\n"
+                     "not-x\n"
+                     "//CL_IF(Y)\n"
+                     "not-x-but-y\n"
+                     "//CL_ENDIF\n"
+                     "//CL_ENDIF\n"
+                     "b\n";
+}
+
+TEST(ShaderCode, KeepsOnlyTheBlocksOfTheSetFlags)
+{
+  EXPECT_EQ(SelectShaderCode(Source, {}), "a\nnot-x\nb\n");
+  EXPECT_EQ(SelectShaderCode(Source, { "X" }), "a\nx\nx-not-y\nb\n");
+  EXPECT_EQ(SelectShaderCode(Source, { "Y" }), "a\nnot-x\nnot-x-but-y\nb\n");
+  EXPECT_EQ(SelectShaderCode(Source, { "X", "Y" }), "a\nx\nxy\nb\n");
+}
+
+TEST(ShaderCode, UnknownFlagsAndPlainTextPassThrough)
+{
+  EXPECT_EQ(SelectShaderCode("plain\n  indented\n", { "Z" }), "plain\n  indented\n");
+  // A flag name must match exactly: X is not XY.
+  EXPECT_EQ(SelectShaderCode("//CL_IF(XY)\nk\n//CL_ENDIF\n", { "X" }), "");
+  // Directive lines never reach the output, whatever their indentation.
+  const std::string out = SelectShaderCode(Source, { "X", "Y" });
+  EXPECT_EQ(out.find("CL_"), std::string::npos);
+}
+
+TEST(ShaderCode, UnbalancedDirectivesAreErrorsNotSilentSelections)
+{
+  std::string error;
+  EXPECT_EQ(SelectShaderCode("//CL_IF(X)\nx\n", { "X" }, &error), "");
+  EXPECT_NE(error.find("not closed"), std::string::npos) << error;
+  EXPECT_EQ(SelectShaderCode("x\n//CL_ENDIF\n", {}, &error), "");
+  EXPECT_NE(error.find("//CL_ENDIF without //CL_IF"), std::string::npos) << error;
+  EXPECT_EQ(SelectShaderCode("//CL_ELSE\n", {}, &error), "");
+  EXPECT_NE(error.find("//CL_ELSE without //CL_IF"), std::string::npos) << error;
+  EXPECT_EQ(SelectShaderCode("//CL_IF(X\n//CL_ENDIF\n", {}, &error), "");
+  EXPECT_NE(error.find("parenthesis"), std::string::npos) << error;
+  EXPECT_EQ(SelectShaderCode(Source, { "X" }, &error), "a\nx\nx-not-y\nb\n");
+  EXPECT_TRUE(error.empty()) << error;
+}
+
+TEST(ShaderCode, ReplaceShaderKeyReplacesEveryOccurrence)
+{
+  std::string code = "const int n = @N@; int m = @N@ + @M@;";
+  ReplaceShaderKey(code, "@N@", "12");
+  ReplaceShaderKey(code, "@M@", "@M@@M@"); // a value containing the key is not re-expanded
+  EXPECT_EQ(code, "const int n = 12; int m = 12 + @M@@M@;");
+}

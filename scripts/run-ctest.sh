@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Runs ctest in the current build directory under an X display (scripts/with-display.sh)
-# with the given arguments. If a test fails, the output of each failing test is printed
+# with the given arguments, after the checks of the machine itself
+# (scripts/check-machine.sh: an X server that does not reset, and in sanitizer builds the
+# sanitizer runtime), which stop the run if they fail. If a test fails, the output of each failing test is printed
 # once more (its last 100 lines, from Testing/Temporary/LastTest.log) just before ctest's
 # summary ("NN% tests passed, ..."), which is held back until then: a CI log read from its
 # summary backwards shows why, not only which. Then the failing tests are run once more
@@ -11,6 +13,9 @@ root="$(cd "$(dirname "$0")/.." && pwd)"
 summary="$(mktemp "${TMPDIR:-/tmp}/ctest-summary.XXXXXX")"
 trap 'rm -f "$summary"' EXIT
 # Streams ctest's output as it comes, but keeps its summary for the end.
+# The machine first (with DISPLAY unset, with-display.sh starts an X server exactly like
+# the one ctest gets below).
+"$root/scripts/with-display.sh" "$root/scripts/check-machine.sh" || exit 1
 "$root/scripts/with-display.sh" ctest --output-on-failure --timeout 900 "$@" 2>&1 |
   awk -v held="$summary" '
     /^[0-9]+% tests passed, [0-9]+ tests? failed out of [0-9]+/ { hold = 1 }

@@ -194,34 +194,6 @@ inline int CountGLErrors(vtkRenderWindow* rw, std::string* first = nullptr)
   return n;
 }
 
-/// A floor and a shiny sphere (Diffuse 1 + Specular 0.4 at most, for CheckAgainstBruteForce).
-inline void AddTestScene(vtkRenderer* ren, int resolution = 24)
-{
-  vtkNew<vtkPlaneSource> plane;
-  plane->SetOrigin(-3, -1, -3);
-  plane->SetPoint1(3, -1, -3);
-  plane->SetPoint2(-3, -1, 3);
-  plane->SetResolution(8, 8);
-  vtkNew<vtkPolyDataMapper> planeMapper;
-  planeMapper->SetInputConnection(plane->GetOutputPort());
-  vtkNew<vtkActor> floor;
-  floor->SetMapper(planeMapper);
-  floor->GetProperty()->SetColor(0.8, 0.8, 0.8);
-  ren->AddActor(floor);
-  vtkNew<vtkSphereSource> sphere;
-  sphere->SetThetaResolution(resolution);
-  sphere->SetPhiResolution(resolution);
-  vtkNew<vtkPolyDataMapper> sphereMapper;
-  sphereMapper->SetInputConnection(sphere->GetOutputPort());
-  vtkNew<vtkActor> ball;
-  ball->SetMapper(sphereMapper);
-  ball->SetScale(1.5);
-  ball->GetProperty()->SetColor(0.9, 0.7, 0.5);
-  ball->GetProperty()->SetSpecular(0.4);
-  ball->GetProperty()->SetSpecularPower(20);
-  ren->AddActor(ball);
-}
-
 /// Resident set size of this process in bytes (/proc/self/statm, second field).
 inline long long ResidentBytes()
 {

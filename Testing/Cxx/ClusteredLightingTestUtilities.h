@@ -5,6 +5,7 @@
 #define ClusteredLightingTestUtilities_h
 
 #include "ClusteredLightingImages.h"
+#include "ClusteredLightingScenes.h"
 #include "vtkClusteredLightingInspector.h"
 #include "vtkClusteredLightingPass.h"
 #include "vtkClusteredLightingReference.h"
@@ -16,11 +17,14 @@
 #include "vtkPlaneSource.h"
 #include "vtkPointData.h"
 #include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
+#include "vtkRegressionTestImage.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkShader.h"
 #include "vtkShaderProgram.h"
 #include "vtkSmartPointer.h"
+#include "vtkSphereSource.h"
 
 #include <cmath>
 #include <cstdio>
@@ -97,6 +101,73 @@ inline vtkActor* AddFloor(vtkRenderer* ren, double halfSize, int resolution = 1)
 inline std::vector<float> CapturePixels(vtkRenderWindow* rw)
 {
   return ClusteredLightingImages::CaptureRGB(rw);
+}
+
+/// A floor and a shiny sphere (Diffuse 1 + Specular 0.4 at most, for CheckAgainstBruteForce).
+inline void AddTestScene(vtkRenderer* ren, int resolution = 24)
+{
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetOrigin(-3, -1, -3);
+  plane->SetPoint1(3, -1, -3);
+  plane->SetPoint2(-3, -1, 3);
+  plane->SetResolution(8, 8);
+  vtkNew<vtkPolyDataMapper> planeMapper;
+  planeMapper->SetInputConnection(plane->GetOutputPort());
+  vtkNew<vtkActor> floor;
+  floor->SetMapper(planeMapper);
+  floor->GetProperty()->SetColor(0.8, 0.8, 0.8);
+  ren->AddActor(floor);
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetThetaResolution(resolution);
+  sphere->SetPhiResolution(resolution);
+  vtkNew<vtkPolyDataMapper> sphereMapper;
+  sphereMapper->SetInputConnection(sphere->GetOutputPort());
+  vtkNew<vtkActor> ball;
+  ball->SetMapper(sphereMapper);
+  ball->SetScale(1.5);
+  ball->GetProperty()->SetColor(0.9, 0.7, 0.5);
+  ball->GetProperty()->SetSpecular(0.4);
+  ball->GetProperty()->SetSpecularPower(20);
+  ren->AddActor(ball);
+}
+
+/// The usual test window: size, no multisampling, a dark background, one renderer
+/// showing AddTestScene from the usual camera.
+inline void SetUpTestScene(
+  vtkRenderWindow* rw, vtkRenderer* ren, int width, int height, int sphereResolution = 24)
+{
+  rw->SetSize(width, height);
+  rw->SetMultiSamples(0);
+  ren->SetBackground(0.05, 0.05, 0.08);
+  rw->AddRenderer(ren);
+  AddTestScene(ren, sphereResolution);
+  ren->GetActiveCamera()->SetPosition(0.5, 2.5, 7.0);
+  ren->GetActiveCamera()->SetFocalPoint(0.0, -0.3, 0.0);
+  ren->ResetCameraClippingRange();
+}
+
+/// n seeded uniform lights over AddTestScene whose influence radius at the default cutoff
+/// is `radius`.
+inline void MakeTestLights(vtkClusteredLightSet* lights, int n, double radius, unsigned seed)
+{
+  ClusteredLightingScenes::LightParameters params;
+  params.TargetRadius = radius;
+  const double lo[3] = { -3, -0.9, -3 }, hi[3] = { 3, 1.8, 3 };
+  ClusteredLightingScenes::MakeLights(
+    lights, n, ClusteredLightingScenes::Layout::Uniform, lo, hi, params, seed);
+}
+
+/// Renders the scene with VTK's own lighting (no pass), then with `pass`; returns both
+/// images (the pass stays set).
+inline void RenderStockThenClustered(vtkRenderWindow* rw, vtkRenderer* ren,
+  vtkClusteredLightingPass* pass, std::vector<float>& stock, std::vector<float>& clustered)
+{
+  ren->SetPass(nullptr);
+  rw->Render();
+  stock = CapturePixels(rw);
+  ren->SetPass(pass);
+  rw->Render();
+  clustered = CapturePixels(rw);
 }
 
 struct ImageComparison
@@ -319,6 +390,43 @@ inline std::size_t CountNonFinitePixels(vtkClusteredLightingPass* pass, vtkRende
     n += (px[i] > 0.99f && px[i + 1] < 0.01f && px[i + 2] < 0.01f) ? 1 : 0;
   }
   return n;
+}
+
+/**
+ * The checks every clustered frame must pass (after a render): zero false negatives and
+ * master mismatches of the GPU assignment against the double-precision reference; every
+ * pixel within the derived bound of brute force (CheckAgainstBruteForce, same arguments);
+ * no NaN or Inf pixel. Returns the number of failed checks.
+ */
+inline int CheckClusteredFrame(vtkClusteredLightingPass* pass, vtkRenderWindow* rw,
+  vtkRenderer* ren, double materialFactor, const char* what, int raySamples = 0)
+{
+  int failed = 0;
+  const auto assignment = CheckAssignment(pass, ren, what);
+  failed += (assignment.FalseNegatives != 0 || assignment.MasterMismatches != 0) ? 1 : 0;
+  failed +=
+    CheckAgainstBruteForce(pass, rw, ren, materialFactor, what, raySamples).Violations != 0 ? 1 : 0;
+  const std::size_t nonFinite = CountNonFinitePixels(pass, rw);
+  if (nonFinite != 0)
+  {
+    std::printf("%s: %zu non-finite pixels\n", what, nonFinite);
+    ++failed;
+  }
+  return failed;
+}
+
+/**
+ * Ends an image test: compares the window's last image with the test's baseline
+ * (vtkRegressionTestImage) and combines it with the other checks' failure count.
+ */
+inline int FinishImageTest(int argc, char* argv[], vtkRenderWindow* rw, int failed)
+{
+  const int retVal = vtkRegressionTestImage(rw);
+  if (retVal == vtkRegressionTester::DO_INTERACTOR)
+  {
+    return EXIT_SUCCESS;
+  }
+  return (retVal == vtkRegressionTester::PASSED && failed == 0) ? EXIT_SUCCESS : EXIT_FAILURE;
 }
 
 } // namespace ClusteredLightingTest

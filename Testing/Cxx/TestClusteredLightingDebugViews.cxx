@@ -154,11 +154,5 @@ int TestClusteredLightingDebugViews(int argc, char* argv[])
 
   pass->SetDebugView(vtkClusteredLightingPass::DEBUG_HEAT_MAP);
   renWin->Render();
-  const int retVal = vtkRegressionTestImage(renWin);
-  if (retVal == vtkRegressionTester::DO_INTERACTOR)
-  {
-    return EXIT_SUCCESS;
-  }
-  return (retVal == vtkRegressionTester::PASSED && status == EXIT_SUCCESS) ? EXIT_SUCCESS
-                                                                           : EXIT_FAILURE;
+  return ClusteredLightingTest::FinishImageTest(argc, argv, renWin, status);
 }

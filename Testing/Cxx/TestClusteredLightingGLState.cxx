@@ -219,16 +219,9 @@ int TestClusteredLightingGLState(int, char*[])
 {
   using namespace ClusteredLightingTest;
   vtkNew<vtkRenderWindow> renWin;
-  renWin->SetSize(160, 120);
-  renWin->SetMultiSamples(0);
   renWin->SetNumberOfLayers(2);
   vtkNew<vtkRenderer> ren;
-  ren->SetBackground(0.05, 0.05, 0.08);
-  renWin->AddRenderer(ren);
-  AddTestScene(ren);
-  ren->GetActiveCamera()->SetPosition(0.5, 2.5, 7.0);
-  ren->GetActiveCamera()->SetFocalPoint(0.0, -0.3, 0.0);
-  ren->ResetCameraClippingRange();
+  SetUpTestScene(renWin, ren, 160, 120);
   vtkNew<vtkLight> light;
   light->SetLightTypeToSceneLight();
   light->SetPositional(true);
@@ -237,11 +230,7 @@ int TestClusteredLightingGLState(int, char*[])
   light->SetAttenuationValues(1.0, 0.0, 2.0);
   ren->AddLight(light);
   vtkNew<vtkClusteredLightSet> lights;
-  ClusteredLightingScenes::LightParameters params;
-  params.TargetRadius = 0.9;
-  const double lo[3] = { -3, -0.9, -3 }, hi[3] = { 3, 1.8, 3 };
-  ClusteredLightingScenes::MakeLights(
-    lights, 300, ClusteredLightingScenes::Layout::Uniform, lo, hi, params, 3);
+  MakeTestLights(lights, 300, 0.9, 3);
 
   // The overlay: an unlit cube in a renderer of layer 1, drawn after the pass.
   vtkNew<vtkRenderer> overlay;

@@ -77,15 +77,9 @@ int TestClusteredLightingMatchesStock(int argc, char* argv[])
   ren->GetActiveCamera()->SetFocalPoint(0, 0, 0);
   ren->ResetCameraClippingRange();
 
-  // Stock VTK.
-  renWin->Render();
-  const std::vector<float> stock = ClusteredLightingTest::CapturePixels(renWin);
-
-  // Clustered.
   vtkNew<vtkClusteredLightingPass> pass;
-  ren->SetPass(pass);
-  renWin->Render();
-  const std::vector<float> clustered = ClusteredLightingTest::CapturePixels(renWin);
+  std::vector<float> stock, clustered;
+  ClusteredLightingTest::RenderStockThenClustered(renWin, ren, pass, stock, clustered);
 
   int status = EXIT_SUCCESS;
   if (pass->GetNumberOfClusteredLights() != 5 || pass->GetNumberOfSpotLights() != 1)
@@ -109,11 +103,5 @@ int TestClusteredLightingMatchesStock(int argc, char* argv[])
     status = EXIT_FAILURE;
   }
 
-  const int retVal = vtkRegressionTestImage(renWin);
-  if (retVal == vtkRegressionTester::DO_INTERACTOR)
-  {
-    return EXIT_SUCCESS;
-  }
-  return (retVal == vtkRegressionTester::PASSED && status == EXIT_SUCCESS) ? EXIT_SUCCESS
-                                                                           : EXIT_FAILURE;
+  return ClusteredLightingTest::FinishImageTest(argc, argv, renWin, status);
 }

@@ -132,14 +132,7 @@ int TestClusteredLightingRendererLights(int, char*[])
     }
   };
   checkOrder();
-  const auto assignment = ClusteredLightingTest::CheckAssignment(pass, ren, "renderer lights");
-  if (assignment.FalseNegatives != 0 || assignment.MasterMismatches != 0)
-  {
-    status = EXIT_FAILURE;
-  }
-  const auto brute =
-    ClusteredLightingTest::CheckAgainstBruteForce(pass, renWin, ren, 1.5, "renderer lights");
-  if (brute.Violations != 0)
+  if (ClusteredLightingTest::CheckClusteredFrame(pass, renWin, ren, 1.5, "renderer lights") != 0)
   {
     status = EXIT_FAILURE;
   }

@@ -32,22 +32,10 @@ int TestClusteredLightingResources(int, char*[])
 {
   using namespace ClusteredLightingTest;
   vtkNew<vtkRenderWindow> renWin;
-  renWin->SetSize(160, 120);
-  renWin->SetMultiSamples(0);
   vtkNew<vtkRenderer> ren;
-  ren->SetBackground(0.05, 0.05, 0.08);
-  renWin->AddRenderer(ren);
-  AddTestScene(ren);
-  ren->GetActiveCamera()->SetPosition(0.5, 2.5, 7.0);
-  ren->GetActiveCamera()->SetFocalPoint(0.0, -0.3, 0.0);
-  ren->ResetCameraClippingRange();
-
+  SetUpTestScene(renWin, ren, 160, 120);
   vtkNew<vtkClusteredLightSet> lights;
-  ClusteredLightingScenes::LightParameters params;
-  params.TargetRadius = 0.9;
-  const double lo[3] = { -3, -0.9, -3 }, hi[3] = { 3, 1.8, 3 };
-  ClusteredLightingScenes::MakeLights(
-    lights, 300, ClusteredLightingScenes::Layout::Uniform, lo, hi, params, 11);
+  MakeTestLights(lights, 300, 0.9, 11);
   for (int i = 0; i < 3; ++i)
   {
     vtkNew<vtkLight> l;
@@ -138,8 +126,7 @@ int TestClusteredLightingResources(int, char*[])
   pass->SetTilesX(32);
   pass->SetTilesY(16);
   pass->SetSlices(32);
-  ClusteredLightingScenes::MakeLights(
-    lights, 300, ClusteredLightingScenes::Layout::Uniform, lo, hi, params, 11);
+  MakeTestLights(lights, 300, 0.9, 11);
   renWin->Render();
   Check(CompareImages(first, CapturePixels(renWin)).MaxAbsError == 0.0,
     "the original settings give the original image again");

@@ -87,11 +87,7 @@ int TestClusteredLightingSharedPass(int, char*[])
 {
   using namespace ClusteredLightingTest;
   vtkNew<vtkClusteredLightSet> lights;
-  ClusteredLightingScenes::LightParameters params;
-  params.TargetRadius = 0.9;
-  const double lo[3] = { -3, -0.9, -3 }, hi[3] = { 3, 1.8, 3 };
-  ClusteredLightingScenes::MakeLights(
-    lights, 200, ClusteredLightingScenes::Layout::Uniform, lo, hi, params, 5);
+  ClusteredLightingTest::MakeTestLights(lights, 200, 0.9, 5);
   vtkNew<vtkClusteredLightingPass> shared;
   shared->AddLightSet(lights);
   vtkNew<MessageCollector> messages;

@@ -123,26 +123,15 @@ int TestClusteredLightingSoak(int, char*[])
   const int Frames =
     framesEnv ? std::max(8, std::atoi(framesEnv) / Period) * Period : DefaultFrames;
   vtkNew<vtkRenderWindow> renWin;
-  renWin->SetSize(96, 72);
-  renWin->SetMultiSamples(0);
   vtkNew<vtkRenderer> ren;
-  ren->SetBackground(0.05, 0.05, 0.08);
   ren->AutomaticLightCreationOff();
-  renWin->AddRenderer(ren);
-  AddTestScene(ren, 16);
-  ren->GetActiveCamera()->SetPosition(0.5, 2.5, 7.0);
-  ren->GetActiveCamera()->SetFocalPoint(0.0, -0.3, 0.0);
-  ren->ResetCameraClippingRange();
+  SetUpTestScene(renWin, ren, 96, 72, 16);
 
   vtkNew<vtkClusteredLightSet> lights;
-  ClusteredLightingScenes::LightParameters params;
-  params.TargetRadius = 0.7;
-  const double lo[3] = { -3, -0.9, -3 }, hi[3] = { 3, 1.8, 3 };
   std::vector<std::array<double, 3>> base;
   auto makeLights = [&](int n)
   {
-    ClusteredLightingScenes::MakeLights(
-      lights, n, ClusteredLightingScenes::Layout::Uniform, lo, hi, params, 17);
+    MakeTestLights(lights, n, 0.7, 17);
     base.resize(static_cast<std::size_t>(n));
     for (int i = 0; i < n; ++i)
     {

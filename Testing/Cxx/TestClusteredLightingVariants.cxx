@@ -221,12 +221,9 @@ int TestClusteredLightingVariants(int, char*[])
     ren->GetActiveCamera()->SetPosition(0, -7, 4);
     ren->GetActiveCamera()->SetFocalPoint(0, 0, 0.5);
     ren->ResetCameraClippingRange();
-    renWin->Render();
-    const std::vector<float> stock = ClusteredLightingTest::CapturePixels(renWin);
     vtkNew<vtkClusteredLightingPass> pass;
-    ren->SetPass(pass);
-    renWin->Render();
-    const std::vector<float> clustered = ClusteredLightingTest::CapturePixels(renWin);
+    std::vector<float> stock, clustered;
+    ClusteredLightingTest::RenderStockThenClustered(renWin, ren, pass, stock, clustered);
     std::printf("-- PBR\n");
     failures += Expect(Has(ball.Shader->LastFragmentSource, "Lo += clLo") &&
         Has(ball.Shader->LastFragmentSource, "SpecularIsotropic(NdH, NdV, NdL, HdL"),

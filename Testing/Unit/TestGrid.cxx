@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
+#include "TestUtilities.h"
 #include "vtkClusteredLightingGrid.h"
 
 #include <gtest/gtest.h>
@@ -12,16 +13,7 @@ namespace
 {
 ClusterGridParams MakeGrid(SlicingScheme scheme, double nearVC = 0.5, double farVC = 500.0)
 {
-  ClusterGridParams g;
-  g.TilesX = 32;
-  g.TilesY = 16;
-  g.Slices = 32;
-  g.ViewportWidth = 1024;
-  g.ViewportHeight = 768;
-  g.NearVC = nearVC;
-  g.FarVC = farVC;
-  g.Scheme = scheme;
-  return g;
+  return ClusteredLightingTest::MakeGrid(32, 16, 32, 1024, 768, nearVC, farVC, scheme);
 }
 }
 

@@ -17,16 +17,7 @@ namespace
 {
 ClusterGridParams SmallGrid(double nearVC, double farVC, SlicingScheme scheme)
 {
-  ClusterGridParams g;
-  g.TilesX = 12;
-  g.TilesY = 8;
-  g.Slices = 16;
-  g.ViewportWidth = 640;
-  g.ViewportHeight = 480;
-  g.NearVC = nearVC;
-  g.FarVC = farVC;
-  g.Scheme = scheme;
-  return g;
+  return ClusteredLightingTest::MakeGrid(12, 8, 16, 640, 480, nearVC, farVC, scheme);
 }
 }
 

@@ -230,16 +230,9 @@ TEST(SphereBounds, ClusterRangeContainsClusterOfEverySample)
 {
   for (const Camera& cam : MakeCameras())
   {
-    ClusterGridParams g;
-    g.TilesX = 16;
-    g.TilesY = 9;
-    g.Slices = 24;
-    g.ViewportWidth = 800;
-    g.ViewportHeight = 450;
-    g.NearVC = cam.Near;
-    g.FarVC = cam.Far;
-    g.Scheme =
-      cam.Name == std::string("parallel") ? SlicingScheme::Linear : SlicingScheme::Exponential;
+    const ClusterGridParams g =
+      ClusteredLightingTest::MakeGrid(16, 9, 24, 800, 450, cam.Near, cam.Far,
+        cam.Name == std::string("parallel") ? SlicingScheme::Linear : SlicingScheme::Exponential);
     for (const auto& [c, r] : MakeLights())
     {
       const SphereScreenBounds b = ComputeSphereScreenBounds(c, r, cam.P, cam.Near, cam.Far);

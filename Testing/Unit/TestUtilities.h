@@ -3,12 +3,30 @@
 #ifndef ClusteredLightingTestUtilities_h
 #define ClusteredLightingTestUtilities_h
 
+#include "vtkClusteredLightingGrid.h"
+
 #include <cmath>
 #include <glm/glm.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
 namespace ClusteredLightingTest
 {
+/// A cluster grid of tilesX x tilesY x slices over a width x height viewport.
+inline vtkClusteredLighting::ClusterGridParams MakeGrid(int tilesX, int tilesY, int slices,
+  int width, int height, double nearVC, double farVC, vtkClusteredLighting::SlicingScheme scheme)
+{
+  vtkClusteredLighting::ClusterGridParams g;
+  g.TilesX = tilesX;
+  g.TilesY = tilesY;
+  g.Slices = slices;
+  g.ViewportWidth = width;
+  g.ViewportHeight = height;
+  g.NearVC = nearVC;
+  g.FarVC = farVC;
+  g.Scheme = scheme;
+  return g;
+}
+
 /// Perspective VC->clip matrix like vtkCamera's: vertical view angle in degrees,
 /// window centre (SetWindowCenter) shifting the frustum off axis.
 inline glm::dmat4 Perspective(double viewAngleDeg, double aspect, double nearVC, double farVC,

@@ -14,27 +14,133 @@
 //
 //   ManyLights [--lights N] [--size W H] [--frames F] [--brute-frames B]
 //              [--subdivide L] [--output image.png] [--heatmap heat.png] [-I]
-#include "ClusteredLightingImages.h"
-#include "ClusteredLightingScenes.h"
-
+#include "vtkActor.h"
 #include "vtkCamera.h"
+#include "vtkCleanPolyData.h"
 #include "vtkClusteredLightSet.h"
 #include "vtkClusteredLightingPass.h"
 #include "vtkInteractorStyleTrackballCamera.h"
 #include "vtkLight.h"
+#include "vtkLoopSubdivisionFilter.h"
 #include "vtkNew.h"
+#include "vtkOBJReader.h"
+#include "vtkPNGWriter.h"
+#include "vtkPlaneSource.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkPolyDataNormals.h"
+#include "vtkProperty.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderWindowInteractor.h"
 #include "vtkRenderer.h"
+#include "vtkWindowToImageFilter.h"
+#include "vtksys/SystemTools.hxx"
 
+#include <algorithm>
+#include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
+#include <random>
 #include <string>
 #include <vector>
 
 namespace
 {
+const char* BunnyPath = "/usr/share/glmark2/models/bunny.obj"; // Debian's glmark2-data
+
+// The Stanford bunny (about [-1, 1]^3) with normals, Loop-subdivided `levels` times, on a
+// 6 x 6 floor at y = -1.
+bool AddBunnyOnFloor(vtkRenderer* ren, int levels, vtkIdType& triangles)
+{
+  const char* dir = std::getenv("CLUSTERED_LIGHTING_DATA");
+  const std::string local = dir ? std::string(dir) + "/bunny.obj" : std::string();
+  const std::string path = vtksys::SystemTools::FileExists(local) ? local : BunnyPath;
+  if (!vtksys::SystemTools::FileExists(path))
+  {
+    std::fprintf(
+      stderr, "bunny mesh not found at %s (run scripts/install-deps.sh)\n", path.c_str());
+    return false;
+  }
+  vtkNew<vtkOBJReader> reader;
+  reader->SetFileName(path.c_str());
+  vtkNew<vtkCleanPolyData> clean;
+  clean->SetInputConnection(reader->GetOutputPort());
+  vtkNew<vtkLoopSubdivisionFilter> subdivide;
+  subdivide->SetInputConnection(clean->GetOutputPort());
+  subdivide->SetNumberOfSubdivisions(std::max(levels, 0));
+  vtkNew<vtkPolyDataNormals> normals;
+  normals->SetInputConnection(levels > 0 ? subdivide->GetOutputPort() : clean->GetOutputPort());
+  normals->SplittingOff();
+  normals->Update();
+  triangles = normals->GetOutput()->GetNumberOfPolys();
+  vtkNew<vtkPolyDataMapper> bunnyMapper;
+  bunnyMapper->SetInputConnection(normals->GetOutputPort());
+  vtkNew<vtkActor> bunny;
+  bunny->SetMapper(bunnyMapper);
+  bunny->GetProperty()->SetColor(0.85, 0.85, 0.8);
+  bunny->GetProperty()->SetSpecular(0.3);
+  bunny->GetProperty()->SetSpecularPower(20);
+  ren->AddActor(bunny);
+
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetOrigin(-3, -1, -3);
+  plane->SetPoint1(3, -1, -3);
+  plane->SetPoint2(-3, -1, 3);
+  vtkNew<vtkPolyDataMapper> floorMapper;
+  floorMapper->SetInputConnection(plane->GetOutputPort());
+  vtkNew<vtkActor> floor;
+  floor->SetMapper(floorMapper);
+  floor->GetProperty()->SetColor(0.7, 0.7, 0.7);
+  ren->AddActor(floor);
+  return true;
+}
+
+// n seeded lights in the box [lo, hi] with saturated random colors.
+void MakeLights(vtkClusteredLightSet* lights, int n, const double lo[3], const double hi[3])
+{
+  std::mt19937 rng(1);
+  std::uniform_real_distribution<double> U(0.0, 1.0);
+  lights->SetNumberOfLights(n);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    lights->SetPosition(i, lo[0] + U(rng) * (hi[0] - lo[0]), lo[1] + U(rng) * (hi[1] - lo[1]),
+      lo[2] + U(rng) * (hi[2] - lo[2]));
+    const double hue = 6.0 * U(rng);
+    auto channel = [hue](double offset)
+    { return std::clamp(std::abs(std::fmod(hue + offset, 6.0) - 3.0) - 1.0, 0.0, 1.0); };
+    lights->SetColor(
+      i, 0.3 + 0.7 * channel(0.0), 0.3 + 0.7 * channel(4.0), 0.3 + 0.7 * channel(2.0));
+  }
+}
+
+double TimeRender(vtkRenderWindow* rw)
+{
+  const auto t0 = std::chrono::steady_clock::now();
+  rw->Render();
+  rw->WaitForCompletion();
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+double Median(std::vector<double> v)
+{
+  if (v.empty())
+  {
+    return 0.0;
+  }
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+
+void WritePNG(vtkRenderWindow* rw, const std::string& path)
+{
+  vtkNew<vtkWindowToImageFilter> w2i;
+  w2i->SetInput(rw);
+  w2i->ReadFrontBufferOff();
+  vtkNew<vtkPNGWriter> writer;
+  writer->SetInputConnection(w2i->GetOutputPort());
+  writer->SetFileName(path.c_str());
+  writer->Write();
+}
 }
 
 int main(int argc, char* argv[])
@@ -87,14 +193,6 @@ int main(int argc, char* argv[])
     }
   }
 
-  vtkSmartPointer<vtkPolyData> bunny = ClusteredLightingScenes::LoadBunny(subdivide);
-  if (!bunny)
-  {
-    std::fprintf(stderr, "bunny mesh not found at %s (run scripts/install-deps.sh)\n",
-      ClusteredLightingScenes::BunnyPath().c_str());
-    return EXIT_FAILURE;
-  }
-
   vtkNew<vtkRenderWindow> renWin;
   renWin->SetSize(width, height);
   renWin->SetMultiSamples(0);
@@ -106,19 +204,21 @@ int main(int argc, char* argv[])
   headlight->SetLightTypeToHeadlight();
   headlight->SetIntensity(0.12);
   ren->AddLight(headlight);
-  ClusteredLightingScenes::AddBunnyScene(ren, bunny);
+  vtkIdType triangles = 0;
+  if (!AddBunnyOnFloor(ren, subdivide, triangles))
+  {
+    return EXIT_FAILURE;
+  }
 
   // The lights: one compact set, no vtkLight objects. Seeded positions in a box around
-  // the bunny, attenuation (1, 0, 60) capped by a radius of 0.45.
+  // the bunny, intensity 1.2, attenuation (1, 0, 60) capped by a radius of 0.45.
   vtkNew<vtkClusteredLightSet> lights;
   const double lo[3] = { -3.0, -0.98, -3.0 }, hi[3] = { 3.0, 1.0, 3.0 };
-  ClusteredLightingScenes::LightParameters params;
-  params.Intensity = 1.2;
-  params.Quadratic = 60.0;
-  ClusteredLightingScenes::MakeLights(
-    lights, numberOfLights, ClusteredLightingScenes::Layout::Uniform, lo, hi, params);
+  MakeLights(lights, numberOfLights, lo, hi);
   for (vtkIdType i = 0; i < lights->GetNumberOfLights(); ++i)
   {
+    lights->SetIntensity(i, 1.2);
+    lights->SetAttenuation(i, 1.0, 0.0, 60.0);
     lights->SetRadius(i, 0.45);
   }
 
@@ -149,14 +249,14 @@ int main(int argc, char* argv[])
   // reassigns the lights, so the time includes the list and master passes.
   renWin->Render();
   renWin->Render();
-  ClusteredLightingImages::WritePNG(renWin, output);
+  WritePNG(renWin, output);
   std::vector<double> clusteredMs, assignMs;
   pass->MeasureTimingsOn();
   for (int f = 0; f < frames; ++f)
   {
     camera->Azimuth(1.0);
     ren->ResetCameraClippingRange();
-    clusteredMs.push_back(ClusteredLightingScenes::TimeRender(renWin));
+    clusteredMs.push_back(TimeRender(renWin));
     assignMs.push_back(pass->GetLastAssignmentTime());
   }
   camera->Azimuth(-frames);
@@ -166,7 +266,7 @@ int main(int argc, char* argv[])
   {
     pass->SetDebugView(vtkClusteredLightingPass::DEBUG_HEAT_MAP);
     renWin->Render();
-    ClusteredLightingImages::WritePNG(renWin, heatmap);
+    WritePNG(renWin, heatmap);
     pass->SetDebugView(vtkClusteredLightingPass::DEBUG_NONE);
   }
 
@@ -179,7 +279,7 @@ int main(int argc, char* argv[])
     {
       camera->Azimuth(1.0);
       ren->ResetCameraClippingRange();
-      bruteMs.push_back(ClusteredLightingScenes::TimeRender(renWin));
+      bruteMs.push_back(TimeRender(renWin));
     }
   }
 
@@ -190,19 +290,18 @@ int main(int argc, char* argv[])
       pass->GetNumberOfClusteredLights(), pass->GetNumberOfAssignedLights());
     return EXIT_FAILURE;
   }
-  const double clustered = ClusteredLightingScenes::Median(clusteredMs);
-  const double brute = ClusteredLightingScenes::Median(bruteMs);
+  const double clustered = Median(clusteredMs);
+  const double brute = Median(bruteMs);
   std::printf("ClusteredLighting many-lights example\n");
-  std::printf("mesh:        %s (%lld triangles + floor), window %dx%d\n",
-    ClusteredLightingScenes::BunnyPath().c_str(), static_cast<long long>(bunny->GetNumberOfPolys()),
-    width, height);
+  std::printf("mesh:        Stanford bunny (%lld triangles) on a floor, window %dx%d\n",
+    static_cast<long long>(triangles), width, height);
   std::printf("lights:      %d clustered point lights (%d rejected, %d always-on), radius 0.45, "
               "windowed falloff, grid %dx%dx%d\n",
     pass->GetNumberOfClusteredLights(), pass->GetNumberOfRejectedLights(),
     pass->GetNumberOfAlwaysOnLights(), pass->GetTilesX(), pass->GetTilesY(), pass->GetSlices());
   std::printf(
     "clustered:   %.1f ms/frame (median of %d, orbiting camera; light assignment %.1f ms)\n",
-    clustered, frames, ClusteredLightingScenes::Median(assignMs));
+    clustered, frames, Median(assignMs));
   if (!bruteMs.empty())
   {
     std::printf("brute force: %.1f ms/frame (median of %d, same scene and shading code)\n", brute,

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Lights as data: a VTK pipeline drives 2,048 (or --lights N) point lights.
+// Lights as data: a VTK pipeline drives 2,048 (or --lights N) point lights over a terrain.
 //
 //   vtkPointSource  ->  vtkTransformPolyDataFilter  ->  vtkElevationFilter  ->  vtkArrayCalculator
 //   (points on a        (flattened into a swarm that    ("Elevation": 0 at     ("Color" = blue ->
-//    sphere)             turns around the bunny)         x = -3, 1 at x = 3)    red along x)
+//    sphere)             turns over the terrain)         x = -3, 1 at x = 3)    red along x)
 //        ->  vtkClusteredLightSet (every point a light, "Color" read by name; intensity,
 //            attenuation and radius are the set's defaults)  ->  vtkClusteredLightingPass
 //
@@ -16,9 +16,7 @@
 //
 //   PipelineLights [--lights N] [--size W H] [--frames F] [--output image.png]
 //                  [--heatmap heat.png] [-I]
-#include "ClusteredLightingImages.h"
-#include "ClusteredLightingScenes.h"
-
+#include "vtkActor.h"
 #include "vtkArrayCalculator.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
@@ -28,13 +26,22 @@
 #include "vtkInteractorStyleTrackballCamera.h"
 #include "vtkLight.h"
 #include "vtkNew.h"
+#include "vtkPNGWriter.h"
+#include "vtkParametricFunctionSource.h"
+#include "vtkParametricRandomHills.h"
 #include "vtkPointSource.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkPolyDataNormals.h"
+#include "vtkProperty.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderWindowInteractor.h"
 #include "vtkRenderer.h"
 #include "vtkTransform.h"
 #include "vtkTransformPolyDataFilter.h"
+#include "vtkWindowToImageFilter.h"
 
+#include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -42,6 +49,47 @@
 
 namespace
 {
+// Rolling hills in x and z over [-3, 3], heights between -1 and about -0.6.
+void AddTerrain(vtkRenderer* ren)
+{
+  vtkNew<vtkParametricRandomHills> hills;
+  hills->SetRandomSeed(3);
+  hills->SetNumberOfHills(24);
+  vtkNew<vtkParametricFunctionSource> surface;
+  surface->SetParametricFunction(hills);
+  surface->SetUResolution(200);
+  surface->SetVResolution(200);
+  vtkNew<vtkTransform> place; // (u in [-10, 10], v in [0, 20], height 0..8) -> (x, y, z)
+  place->Translate(0.0, -1.0, 0.0);
+  place->RotateX(-90.0);
+  place->Scale(0.3, 0.3, 0.05);
+  place->Translate(0.0, -10.0, 0.0);
+  vtkNew<vtkTransformPolyDataFilter> placed;
+  placed->SetInputConnection(surface->GetOutputPort());
+  placed->SetTransform(place);
+  vtkNew<vtkPolyDataNormals> normals;
+  normals->SetInputConnection(placed->GetOutputPort());
+  normals->SplittingOff();
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(normals->GetOutputPort());
+  mapper->ScalarVisibilityOff();
+  vtkNew<vtkActor> terrain;
+  terrain->SetMapper(mapper);
+  terrain->GetProperty()->SetColor(0.75, 0.75, 0.72);
+  ren->AddActor(terrain);
+}
+
+void WriteImage(vtkRenderWindow* rw, const std::string& path)
+{
+  vtkNew<vtkWindowToImageFilter> capture;
+  capture->SetInput(rw);
+  capture->ReadFrontBufferOff();
+  vtkNew<vtkPNGWriter> png;
+  png->SetInputConnection(capture->GetOutputPort());
+  png->SetFileName(path.c_str());
+  png->Write();
+}
+
 // The swarm at a given angle: flattened to a band 0.05-0.95 above the floor (y = -1),
 // turned about the vertical axis.
 void PlaceSwarm(vtkTransform* transform, double degrees)
@@ -110,13 +158,6 @@ int main(int argc, char* argv[])
     }
   }
 
-  vtkSmartPointer<vtkPolyData> bunny = ClusteredLightingScenes::LoadBunny();
-  if (!bunny)
-  {
-    std::fprintf(stderr, "bunny mesh not found at %s (run scripts/install-deps.sh)\n",
-      ClusteredLightingScenes::BunnyPath().c_str());
-    return EXIT_FAILURE;
-  }
   vtkNew<vtkRenderWindow> renWin;
   renWin->SetSize(width, height);
   renWin->SetMultiSamples(0);
@@ -128,13 +169,13 @@ int main(int argc, char* argv[])
   headlight->SetLightTypeToHeadlight();
   headlight->SetIntensity(0.12);
   ren->AddLight(headlight);
-  ClusteredLightingScenes::AddBunnyScene(ren, bunny);
+  AddTerrain(ren);
 
   // The light pipeline.
   vtkNew<vtkPointSource> cloud;
   cloud->SetNumberOfPoints(numberOfLights);
   cloud->SetRadius(2.5);
-  cloud->SetDistributionToShell(); // a swarm around the bunny, denser at its rim
+  cloud->SetDistributionToShell(); // a ring-like swarm, denser at its rim
   vtkNew<vtkTransform> transform;
   PlaceSwarm(transform, 0.0);
   vtkNew<vtkTransformPolyDataFilter> swarm;
@@ -194,7 +235,11 @@ int main(int argc, char* argv[])
   for (int f = 0; f < frames; ++f)
   {
     PlaceSwarm(transform, 90.0 * f / (frames - 1));
-    const double t = ClusteredLightingScenes::TimeRender(renWin);
+    const auto start = std::chrono::steady_clock::now();
+    renWin->Render();
+    renWin->WaitForCompletion();
+    const double t =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     if (f == 0)
     {
       shaderBuilds = pass->GetNumberOfShaderBuilds();
@@ -213,15 +258,16 @@ int main(int argc, char* argv[])
       ok = false;
     }
   }
-  ClusteredLightingImages::WritePNG(renWin, output);
+  WriteImage(renWin, output);
   if (!heatmap.empty())
   {
     pass->SetDebugView(vtkClusteredLightingPass::DEBUG_HEAT_MAP);
     renWin->Render();
-    ClusteredLightingImages::WritePNG(renWin, heatmap);
+    WriteImage(renWin, heatmap);
     pass->SetDebugView(vtkClusteredLightingPass::DEBUG_NONE);
   }
 
+  std::sort(ms.begin(), ms.end()); // for the median
   std::printf("ClusteredLighting pipeline-lights example\n");
   std::printf("pipeline:    vtkPointSource -> vtkTransformPolyDataFilter -> vtkElevationFilter -> "
               "vtkArrayCalculator -> vtkClusteredLightSet\n");
@@ -230,7 +276,7 @@ int main(int argc, char* argv[])
     pass->GetNumberOfClusteredLights(), width, height);
   std::printf("animation:   %d frames, %.1f ms/frame (median, pipeline update + light upload + "
               "assignment + shading)\n",
-    frames, ClusteredLightingScenes::Median(ms));
+    frames, ms[ms.size() / 2]);
   std::printf("re-reads:    %d (one per frame); shader builds: %d, all in the first frame\n",
     lights->GetNumberOfInputReads(), pass->GetNumberOfShaderBuilds());
   std::printf("image:       %s\n", output.c_str());

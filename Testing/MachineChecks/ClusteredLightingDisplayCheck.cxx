@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// ctest Display.ReopenAfterLastClient: the X server the tests run on must accept a new
+// scripts/check-machine.sh: the X server the tests run on must accept a new
 // connection right after its last client has closed one.
 //
 // That is what a VTK program does when it destroys its only window and creates another

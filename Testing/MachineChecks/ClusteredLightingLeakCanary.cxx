@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Sanitizer builds only (ctest Sanitizers.LeakCanary): leaks a vtkClusteredLightingPass on
-// purpose after rendering with it, and the test passes only if LeakSanitizer reports that
+// Sanitizer builds only (scripts/check-machine.sh): leaks a vtkClusteredLightingPass on
+// purpose after rendering with it, and the check passes only if LeakSanitizer reports that
 // leak with its allocation in vtkClusteredLightingPass::New. This shows that the run's
 // options, the suppressions file (lsan.supp) and the driver pin cannot hide a leak of
 // our own code, even one whose stack goes through VTK and Mesa.

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Sanitizer builds only (ctest Sanitizers.LeakCheckDynamicTls): the leak check at exit
+// Sanitizer builds only (scripts/check-machine.sh): the leak check at exit
 // must survive threads that use dynamic TLS, as llvmpipe's threads do.
 //
 // GCC 12's __tls_get_addr interceptor takes a dynamic TLS block that starts 16 bytes into

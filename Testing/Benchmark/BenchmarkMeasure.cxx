@@ -1,0 +1,321 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "BenchmarkMeasure.h"
+
+#include "ClusteredLightingImages.h"
+#include "ClusteredLightingScenes.h"
+
+#include "vtkActorCollection.h"
+#include "vtkCamera.h"
+#include "vtkMapper.h"
+#include "vtkOBJImporter.h"
+#include "vtkPolyData.h"
+#include "vtkProperty.h"
+#include "vtksys/SystemTools.hxx"
+
+#include <algorithm>
+#include <cstdio>
+
+namespace ClusteredLightingBenchmark
+{
+
+namespace
+{
+std::string HousePath()
+{
+  return ClusteredLightingScenes::DataPath(
+    "house.obj", CLUSTERED_LIGHTING_BUILD_DATA_DIR "/house.obj");
+}
+
+std::string Num(double v)
+{
+  if (std::isnan(v))
+  {
+    return "";
+  }
+  char buf[32];
+  std::snprintf(buf, sizeof(buf), "%.3g", v);
+  return buf;
+}
+}
+
+//------------------------------------------------------------------------------
+double Median(std::vector<double> v)
+{
+  return ClusteredLightingScenes::Median(std::move(v));
+}
+
+//------------------------------------------------------------------------------
+void CompareWithReference(const std::vector<float>& img, const std::vector<float>& ref, Row& row)
+{
+  if (img.size() != ref.size() || ref.empty())
+  {
+    return;
+  }
+  double maxErr = 0.0, sum = 0.0;
+  std::size_t over = 0;
+  const std::size_t pixels = ref.size() / 3;
+  for (std::size_t p = 0; p < pixels; ++p)
+  {
+    double worst = 0.0;
+    for (int c = 0; c < 3; ++c)
+    {
+      const double d = std::abs(double(img[3 * p + c]) - double(ref[3 * p + c]));
+      worst = std::max(worst, d);
+      sum += d * d;
+    }
+    maxErr = std::max(maxErr, worst);
+    over += worst > 1.5 / 255.0 ? 1 : 0;
+  }
+  row.MaxError = maxErr;
+  row.RMSE = std::sqrt(sum / (3.0 * pixels));
+  row.OverOneStep = double(over) / pixels;
+}
+
+//------------------------------------------------------------------------------
+Context::Context(int width, int height)
+{
+  this->Window->SetSize(width, height);
+  this->Window->SetMultiSamples(0);
+  this->Window->SetOffScreenRendering(1);
+  this->Renderer->SetBackground(0.02, 0.02, 0.03);
+  this->Renderer->AutomaticLightCreationOff();
+  this->Window->AddRenderer(this->Renderer);
+  this->Pass->AddLightSet(this->Lights);
+  this->Renderer->SetPass(this->Pass);
+}
+
+//------------------------------------------------------------------------------
+long long Context::LoadScene(const Scene& scene, bool quick)
+{
+  this->Renderer->RemoveAllViewProps();
+  this->Current = &scene;
+  this->Reference.clear();
+  if (scene.Name == "bunny")
+  {
+    vtkSmartPointer<vtkPolyData> bunny = ClusteredLightingScenes::LoadBunny(quick ? 0 : 2);
+    if (!bunny)
+    {
+      return -1;
+    }
+    ClusteredLightingScenes::AddBunnyScene(this->Renderer, bunny);
+    return bunny->GetNumberOfPolys() + 2;
+  }
+  const std::string obj = HousePath();
+  if (!vtksys::SystemTools::FileExists(obj))
+  {
+    return -1;
+  }
+  vtkNew<vtkOBJImporter> importer;
+  importer->SetFileName(obj.c_str());
+  const std::string mtl = obj.substr(0, obj.size() - 4) + ".mtl";
+  importer->SetFileNameMTL(mtl.c_str());
+  importer->SetRenderWindow(this->Window);
+  importer->Update();
+  long long triangles = 0;
+  vtkActorCollection* actors = this->Renderer->GetActors();
+  actors->InitTraversal();
+  while (vtkActor* a = actors->GetNextActor())
+  {
+    if (vtkPolyData* pd = vtkPolyData::SafeDownCast(a->GetMapper()->GetInputDataObject(0, 0)))
+    {
+      triangles += pd->GetNumberOfPolys();
+    }
+    a->GetProperty()->SetSpecular(0.0);
+  }
+  return triangles;
+}
+
+//------------------------------------------------------------------------------
+void Context::SetView()
+{
+  vtkCamera* cam = this->Renderer->GetActiveCamera();
+  cam->SetPosition(this->Current->CameraPosition);
+  cam->SetFocalPoint(this->Current->CameraFocalPoint);
+  cam->SetViewUp(0, 1, 0);
+  cam->SetViewAngle(this->Current->ViewAngle);
+  this->Renderer->ResetCameraClippingRange();
+}
+
+//------------------------------------------------------------------------------
+void Context::MakeLights(int n, const std::string& layout)
+{
+  this->Layout = layout;
+  ClusteredLightingScenes::LightParameters params;
+  params.Intensity = this->Current->Intensity;
+  params.TargetRadius = this->Current->Radius;
+  using ClusteredLightingScenes::Layout;
+  const Layout kind = layout == "clumped" ? Layout::Clumped
+    : layout == "hard"                    ? Layout::Hard
+                                          : Layout::Uniform;
+  ClusteredLightingScenes::MakeLights(this->Lights, n, kind, this->Current->LightBoxLo,
+    this->Current->LightBoxHi, params, 7, this->Current->CameraPosition);
+}
+
+//------------------------------------------------------------------------------
+void Context::ResetPassDefaults()
+{
+  vtkClusteredLightingPass* p = this->Pass;
+  p->SetCutoff(1.0 / 1024.0);
+  p->SetErrorBudget(0.0);
+  p->SetFalloff(vtkClusteredLightingPass::FALLOFF_HARD_CUT);
+  p->SetTilesX(32);
+  p->SetTilesY(16);
+  p->SetSlices(32);
+  p->SetSlicingScheme(vtkClusteredLightingPass::SLICING_AUTO);
+  p->SetBoundsMethod(vtkClusteredLightingPass::BOUNDS_TANGENT);
+  p->SetMortonOrder(true);
+  p->SetPerClusterCulling(true);
+  p->SetShadingMode(vtkClusteredLightingPass::SHADING_CLUSTERED);
+  p->SetDebugView(vtkClusteredLightingPass::DEBUG_NONE);
+}
+
+//------------------------------------------------------------------------------
+void Context::MakeReference()
+{
+  this->SetView();
+  const int mode = this->Pass->GetShadingMode();
+  this->Pass->SetShadingMode(vtkClusteredLightingPass::SHADING_BRUTE_FORCE);
+  this->Window->Render();
+  this->Reference = ClusteredLightingImages::CaptureRGB(this->Window);
+  this->Pass->SetShadingMode(mode);
+  int* size = this->Window->GetSize();
+  std::vector<float> depth(static_cast<std::size_t>(size[0]) * size[1]);
+  this->Window->GetZbufferData(0, 0, size[0] - 1, size[1] - 1, depth.data());
+  this->Geometry.assign(depth.size(), 0);
+  for (std::size_t i = 0; i < depth.size(); ++i)
+  {
+    this->Geometry[i] = depth[i] < 1.0f ? 1 : 0;
+  }
+}
+
+//------------------------------------------------------------------------------
+void Context::MeasureCounts(Row& row)
+{
+  this->Pass->SetDebugView(vtkClusteredLightingPass::DEBUG_EVALUATED_COUNT);
+  this->Window->Render();
+  const std::vector<float> ev = ClusteredLightingImages::CaptureRGB(this->Window);
+  this->Pass->SetDebugView(vtkClusteredLightingPass::DEBUG_REACHED_COUNT);
+  this->Window->Render();
+  const std::vector<float> re = ClusteredLightingImages::CaptureRGB(this->Window);
+  this->Pass->SetDebugView(vtkClusteredLightingPass::DEBUG_NONE);
+  double se = 0.0, sr = 0.0;
+  std::size_t n = 0;
+  for (std::size_t p = 0; p < this->Geometry.size(); ++p)
+  {
+    if (!this->Geometry[p])
+    {
+      continue;
+    }
+    auto byte = [](float v) { return static_cast<int>(std::lround(v * 255.0f)); };
+    se += byte(ev[3 * p]) + 256 * byte(ev[3 * p + 1]);
+    sr += byte(re[3 * p]) + 256 * byte(re[3 * p + 1]);
+    ++n;
+  }
+  row.Evaluated = n ? se / n : NAN;
+  row.Reached = n ? sr / n : NAN;
+}
+
+//------------------------------------------------------------------------------
+// Stock VTK 9.1: the same lights as vtkLights of the renderer.
+void Context::AddStockLights(std::vector<vtkSmartPointer<vtkLight>>& added)
+{
+  const vtkIdType n = this->Lights->GetNumberOfLights();
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    vtkNew<vtkLight> l;
+    l->SetLightTypeToSceneLight();
+    l->SetPositional(true);
+    l->SetConeAngle(180.0);
+    double v[3];
+    this->Lights->GetPosition(i, v);
+    l->SetPosition(v);
+    this->Lights->GetColor(i, v);
+    l->SetColor(v);
+    l->SetIntensity(this->Lights->GetIntensity(i));
+    this->Lights->GetAttenuation(i, v);
+    l->SetAttenuationValues(v);
+    this->Renderer->AddLight(l);
+    added.emplace_back(l);
+  }
+}
+
+//------------------------------------------------------------------------------
+Row Context::Measure(const Step& step)
+{
+  Row row;
+  row.Scene = this->Current->Name;
+  row.Layout = this->Layout;
+  row.Method = step.Method;
+  row.Sweep = step.Sweep;
+  row.Value = step.Value;
+  row.Lights = static_cast<int>(this->Lights->GetNumberOfLights());
+  row.Frames = step.Frames;
+  row.Note = step.Note;
+  const bool clustered = step.Method == "clustered";
+  const bool stock = step.Method == "stock";
+  std::vector<vtkSmartPointer<vtkLight>> stockLights;
+  if (stock)
+  {
+    this->AddStockLights(stockLights);
+    this->Renderer->SetPass(nullptr);
+  }
+  this->SetView();
+  this->Pass->SetMeasureTimings(clustered);
+  row.FirstFrameMs = ClusteredLightingScenes::TimeRender(this->Window); // shaders, assignment
+  ClusteredLightingScenes::TimeRender(this->Window);
+  std::vector<double> ms, assign, shade;
+  for (int f = 0; f < step.Frames; ++f)
+  {
+    if (step.Moving)
+    {
+      this->Renderer->GetActiveCamera()->Azimuth(1.0);
+      this->Renderer->ResetCameraClippingRange();
+    }
+    ms.push_back(ClusteredLightingScenes::TimeRender(this->Window));
+    if (clustered)
+    {
+      assign.push_back(
+        this->Pass->GetLastAssignmentUpdated() ? this->Pass->GetLastAssignmentTime() : 0.0);
+      shade.push_back(this->Pass->GetLastShadingTime());
+    }
+  }
+  this->Pass->SetMeasureTimings(false);
+  row.MsMedian = Median(ms);
+  row.MsMin = *std::min_element(ms.begin(), ms.end());
+  row.MsMax = *std::max_element(ms.begin(), ms.end());
+  if (clustered)
+  {
+    row.AssignMs = Median(assign);
+    row.ShadeMs = Median(shade);
+    row.ListMiB = this->Pass->GetListTextureBytes() / 1048576.0;
+    row.MasterMiB = this->Pass->GetMasterTextureBytes() / 1048576.0;
+    row.LightsMiB = this->Pass->GetLightBufferBytes() / 1048576.0;
+    row.Cutoff = this->Pass->GetEffectiveCutoff();
+    row.Budget = this->Pass->GetErrorBudget() > 0.0 ? this->Pass->GetErrorBudget() : NAN;
+  }
+  this->SetView();
+  this->Window->Render();
+  CompareWithReference(ClusteredLightingImages::CaptureRGB(this->Window), this->Reference, row);
+  if (clustered && step.Counts)
+  {
+    this->MeasureCounts(row);
+  }
+  if (stock)
+  {
+    for (auto& l : stockLights)
+    {
+      this->Renderer->RemoveLight(l);
+    }
+    this->Renderer->SetPass(this->Pass);
+  }
+  std::printf("%-6s %-8s %6d %-9s %-9s %-14s %8.1f ms [%7.1f, %7.1f]  assign %6s  eval/px %6s "
+              "reach/px %6s  max err %5s  rmse %7s\n",
+    row.Scene.c_str(), row.Layout.c_str(), row.Lights, row.Method.c_str(), row.Sweep.c_str(),
+    row.Value.c_str(), row.MsMedian, row.MsMin, row.MsMax, Num(row.AssignMs).c_str(),
+    Num(row.Evaluated).c_str(), Num(row.Reached).c_str(), Num(row.MaxError * 255.0).c_str(),
+    Num(row.RMSE * 255.0).c_str());
+  std::fflush(stdout);
+  return row;
+}
+
+} // namespace ClusteredLightingBenchmark

@@ -1,0 +1,100 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @file BenchmarkMeasure.h
+ * @brief How the benchmark measures one step: frame times, counts, error, memory.
+ *
+ * Context holds one offscreen window with one renderer, the clustered pass and one light
+ * set. For each step (BenchmarkPlan.h) it:
+ *  - times the frames: two warm-up frames (shader compilation, first assignment), then
+ *    `frames` frames with the camera orbiting one degree per frame (so the assignment runs
+ *    every frame) or still; each frame ends with glFinish before the clock is read; the
+ *    pass's own timers (MeasureTimings) split assignment from shading;
+ *  - back at the view, compares the image with the exact reference (brute force: every
+ *    light, no cutoff) in 8-bit steps (max, RMSE, share of pixels off by more than one);
+ *  - counts, exactly per fragment with the pass's debug views, the lights the shader
+ *    evaluates per pixel and the ones that really reach it (closer than the radius,
+ *    inside the cone), averaged over the pixels that show geometry;
+ *  - reads the GPU memory the pass holds.
+ */
+#ifndef BenchmarkMeasure_h
+#define BenchmarkMeasure_h
+
+#include "BenchmarkPlan.h"
+
+#include "vtkClusteredLightSet.h"
+#include "vtkClusteredLightingPass.h"
+#include "vtkLight.h"
+#include "vtkNew.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace ClusteredLightingBenchmark
+{
+
+/// One row of results (NaN: not measured).
+struct Row
+{
+  std::string Scene, Layout, Method, Sweep, Value;
+  int Lights = 0;
+  int Frames = 0;
+  double MsMedian = NAN, MsMin = NAN, MsMax = NAN;
+  double AssignMs = NAN, ShadeMs = NAN, FirstFrameMs = NAN;
+  double Evaluated = NAN, Reached = NAN;
+  double MaxError = NAN, RMSE = NAN, OverOneStep = NAN;
+  double ListMiB = NAN, MasterMiB = NAN, LightsMiB = NAN;
+  double Cutoff = NAN, Budget = NAN;
+  std::string Note;
+};
+
+class Context
+{
+public:
+  Context(int width, int height);
+
+  /// Loads a scene's geometry (quick: the bunny without subdivision); returns its
+  /// triangle count, or -1 if its data is missing.
+  long long LoadScene(const Scene& scene, bool quick);
+  /// Fills the light set for a step (seeded: the same lights every run).
+  void MakeLights(int n, const std::string& layout);
+  /// The exact reference image of the current lights at the scene's view.
+  void MakeReference();
+  void ClearReference() { this->Reference.clear(); }
+  /// Sets every option the plan's knobs touch back to the pass's default.
+  void ResetPassDefaults();
+  /// Measures one step with the current scene, lights and pass options.
+  Row Measure(const Step& step);
+
+  vtkRenderWindow* GetWindow() { return this->Window; }
+  vtkRenderer* GetRenderer() { return this->Renderer; }
+  vtkClusteredLightingPass* GetPass() { return this->Pass; }
+  vtkClusteredLightSet* GetLights() { return this->Lights; }
+  const Scene* GetScene() const { return this->Current; }
+  void SetView();
+
+private:
+  void MeasureCounts(Row& row);
+  void AddStockLights(std::vector<vtkSmartPointer<vtkLight>>& added);
+
+  vtkNew<vtkRenderWindow> Window;
+  vtkNew<vtkRenderer> Renderer;
+  vtkNew<vtkClusteredLightingPass> Pass;
+  vtkNew<vtkClusteredLightSet> Lights;
+  const Scene* Current = nullptr;
+  std::string Layout;
+  std::vector<float> Reference;        ///< exact image of the current lights at the view
+  std::vector<unsigned char> Geometry; ///< pixels that show geometry at the view
+};
+
+/// Max error, RMSE and share of pixels off by more than one 8-bit step, into row.
+void CompareWithReference(const std::vector<float>& img, const std::vector<float>& ref, Row& row);
+
+/// Median of a list (0 for an empty one).
+double Median(std::vector<double> v);
+
+} // namespace ClusteredLightingBenchmark
+
+#endif

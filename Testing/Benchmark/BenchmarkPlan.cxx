@@ -1,0 +1,234 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "BenchmarkPlan.h"
+
+#include "BenchmarkMeasure.h"
+
+#include "vtkActor.h"
+#include "vtkActorCollection.h"
+#include "vtkProperty.h"
+
+#include <cstdio>
+#include <memory>
+
+namespace ClusteredLightingBenchmark
+{
+
+//------------------------------------------------------------------------------
+const Scene& BunnyScene()
+{
+  static const Scene s = { "bunny", { 0.0, 1.6, 4.6 }, { 0.0, -0.3, 0.0 }, 40.0,
+    { -3.0, -0.98, -3.0 }, { 3.0, 1.0, 3.0 }, 0.35, 1.0 };
+  return s;
+}
+
+// Standing in the kitchen of the ground floor, looking at the spiral staircase; lights in
+// both storeys of the house.
+const Scene& HouseScene()
+{
+  static const Scene s = { "house", { 1.5, 1.6, -1.5 }, { 10.0, 1.0, -9.0 }, 70.0,
+    { 0.2, 0.05, -9.8 }, { 11.8, 5.5, -0.2 }, 1.0, 1.0 };
+  return s;
+}
+
+//------------------------------------------------------------------------------
+std::string Step::GetId() const
+{
+  return this->Where->Name + "/" + this->Layout + "/" + std::to_string(this->Lights) + "/" +
+    this->Method + "/" + this->Sweep + "/" + this->Value;
+}
+
+namespace
+{
+std::string Fraction(double denominator)
+{
+  char buf[32];
+  std::snprintf(buf, sizeof(buf), "1/%g", denominator);
+  return buf;
+}
+
+/// Every actor's specular coefficient set to 0, and back (a step that changes the scene).
+void SwitchSpecular(Context& ctx, bool off)
+{
+  static std::vector<double> saved;
+  vtkActorCollection* actors = ctx.GetRenderer()->GetActors();
+  actors->InitTraversal();
+  std::size_t i = 0;
+  if (off)
+  {
+    saved.clear();
+  }
+  while (vtkActor* a = actors->GetNextActor())
+  {
+    if (off)
+    {
+      saved.push_back(a->GetProperty()->GetSpecular());
+      a->GetProperty()->SetSpecular(0.0);
+    }
+    else if (i < saved.size())
+    {
+      a->GetProperty()->SetSpecular(saved[i++]);
+    }
+  }
+}
+}
+
+//------------------------------------------------------------------------------
+std::vector<Step> MakePlan(const PlanOptions& options)
+{
+  const bool quick = options.Quick;
+  const int F = options.Frames;
+  std::vector<Step> plan;
+  std::vector<const Scene*> scenes = { &BunnyScene() };
+  if (!quick)
+  {
+    scenes.push_back(&HouseScene());
+  }
+  for (const Scene* scene : scenes)
+  {
+    const bool main = scene == &BunnyScene();
+    Step base;
+    base.Where = scene;
+    base.Frames = F;
+
+    // Light counts, with the brute-force peer (the same shading code, every light for
+    // every fragment; it costs the same for every layout, so it is measured once).
+    const std::vector<int> counts = quick ? std::vector<int>{ 64, 1024, 4096 }
+                                          : std::vector<int>{ 64, 256, 1024, 4096, 16384, 65536 };
+    const std::vector<std::string> layouts = quick
+      ? std::vector<std::string>{ "uniform" }
+      : std::vector<std::string>{ "uniform", "clumped", "hard" };
+    for (const std::string& layout : layouts)
+    {
+      for (int n : counts)
+      {
+        Step s = base;
+        s.Layout = layout;
+        s.Lights = n;
+        s.Value = std::to_string(n);
+        s.Reference = n <= 16384; // brute force takes minutes per frame above
+        plan.push_back(s);
+        if (layout == "uniform" && n <= 16384)
+        {
+          s.Method = "brute";
+          s.Frames = (n >= 16384 && !quick) ? 3 : (quick ? 1 : F);
+          s.Counts = false;
+          s.Apply = [](vtkClusteredLightingPass* p)
+          { p->SetShadingMode(vtkClusteredLightingPass::SHADING_BRUTE_FORCE); };
+          plan.push_back(s);
+        }
+      }
+    }
+    if (main && !quick && options.LargestLights > 0)
+    {
+      Step s = base;
+      s.Lights = static_cast<int>(options.LargestLights);
+      s.Value = std::to_string(options.LargestLights);
+      s.Frames = 3;
+      s.Reference = false; // hours per frame here
+      s.Note = "largest the default grid holds; no brute-force reference at this count";
+      plan.push_back(s);
+    }
+
+    // Stock VTK 9.1 with the same lights as vtkLights (on the house too, where triangles
+    // are large: the clustered/stock ratio depends on the mesh, see docs/benchmark).
+    const std::vector<int> stockCounts = quick ? std::vector<int>{ 8 }
+      : main                                   ? std::vector<int>{ 1, 8, 64, 256 }
+                                               : std::vector<int>{ 1, 8 };
+    for (int n : stockCounts)
+    {
+      Step s = base;
+      s.Lights = n;
+      s.Value = std::to_string(n);
+      s.Method = "stock";
+      s.Frames = quick ? 2 : F;
+      s.Counts = false;
+      s.Note = "first frame compiles VTK's unrolled per-light shader";
+      plan.push_back(s);
+    }
+
+    if (!main)
+    {
+      continue;
+    }
+    // Knobs, one at a time from the default, at 4,096 uniform lights.
+    auto knob = [&](const std::string& sweep, const std::string& value,
+                  std::function<void(vtkClusteredLightingPass*)> apply)
+    {
+      Step s = base;
+      s.Sweep = sweep;
+      s.Value = value;
+      s.Apply = std::move(apply);
+      plan.push_back(s);
+      return &plan.back();
+    };
+    const std::vector<double> cutoffs =
+      quick ? std::vector<double>{ 64, 1024 } : std::vector<double>{ 16, 64, 256, 1024, 4096 };
+    for (double c : cutoffs)
+    {
+      knob("cutoff", Fraction(c), [c](vtkClusteredLightingPass* p) { p->SetCutoff(1.0 / c); });
+    }
+    knob("bounds", "centre-depth quad",
+      [](vtkClusteredLightingPass* p)
+      { p->SetBoundsMethod(vtkClusteredLightingPass::BOUNDS_CENTER_DEPTH_QUAD); });
+    if (!quick)
+    {
+      knob("falloff", "windowed",
+        [](vtkClusteredLightingPass* p)
+        { p->SetFalloff(vtkClusteredLightingPass::FALLOFF_WINDOWED); });
+      knob("tiles", "16x8",
+        [](vtkClusteredLightingPass* p)
+        {
+          p->SetTilesX(16);
+          p->SetTilesY(8);
+        });
+      knob("tiles", "64x32",
+        [](vtkClusteredLightingPass* p)
+        {
+          p->SetTilesX(64);
+          p->SetTilesY(32);
+        });
+      knob("slices", "16", [](vtkClusteredLightingPass* p) { p->SetSlices(16); });
+      knob("slices", "64", [](vtkClusteredLightingPass* p) { p->SetSlices(64); });
+      knob("slicing", "linear",
+        [](vtkClusteredLightingPass* p)
+        { p->SetSlicingScheme(vtkClusteredLightingPass::SLICING_LINEAR); });
+      knob("morton", "off", [](vtkClusteredLightingPass* p) { p->SetMortonOrder(false); });
+      knob("culling", "per-cluster off",
+        [](vtkClusteredLightingPass* p) { p->SetPerClusterCulling(false); });
+      knob("camera", "static", nullptr)->Moving = false;
+      // Effects a scene calls for: specular off, spot lights present (each with the exact
+      // reference of its own scene).
+      Step* specular = knob("specular", "off", nullptr);
+      specular->ChangesScene = "specular off";
+      specular->Setup = [](Context& ctx) { SwitchSpecular(ctx, true); };
+      specular->Teardown = [](Context& ctx) { SwitchSpecular(ctx, false); };
+      // The spot-cone code alone: one light becomes a spot light, so every shader gets the
+      // cone code while the other 4,095 lights stay point lights.
+      Step* oneSpot = knob("spots", "1 spot light", nullptr);
+      oneSpot->ChangesScene = "1 spot light";
+      oneSpot->Setup = [](Context& ctx) { ctx.GetLights()->SetSpot(0, 0.0, -1.0, 0.0, 60.0, 1.0); };
+      oneSpot->Teardown = [](Context& ctx) { ctx.MakeLights(4096, "uniform"); };
+      Step* tenth = knob("spots", "10% spot lights", nullptr);
+      tenth->ChangesScene = "10% spot lights";
+      tenth->Setup = [](Context& ctx)
+      {
+        for (vtkIdType i = 0; i < 4096; i += 10)
+        {
+          ctx.GetLights()->SetSpot(i, 0.0, -1.0, 0.0, 60.0, 1.0);
+        }
+      };
+      tenth->Teardown = [](Context& ctx) { ctx.MakeLights(4096, "uniform"); };
+    }
+    const std::vector<double> budgets =
+      quick ? std::vector<double>{ 4 } : std::vector<double>{ 1, 4, 16 };
+    for (double b : budgets)
+    {
+      char value[32];
+      std::snprintf(value, sizeof(value), "%g/255", b);
+      knob("budget", value, [b](vtkClusteredLightingPass* p) { p->SetErrorBudget(b / 255.0); });
+    }
+  }
+  return plan;
+}
+
+} // namespace ClusteredLightingBenchmark

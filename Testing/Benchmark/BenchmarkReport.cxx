@@ -1,0 +1,308 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "BenchmarkReport.h"
+
+#include "vtkAxis.h"
+#include "vtkChartLegend.h"
+#include "vtkChartXY.h"
+#include "vtkContextScene.h"
+#include "vtkContextView.h"
+#include "vtkDoubleArray.h"
+#include "vtkNew.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkPNGWriter.h"
+#include "vtkPen.h"
+#include "vtkPlot.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkTable.h"
+#include "vtkTextureObject.h"
+#include "vtkVersion.h"
+#include "vtkWindowToImageFilter.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <ctime>
+#include <fstream>
+#include <sstream>
+#include <thread>
+
+namespace ClusteredLightingBenchmark
+{
+namespace
+{
+const char* CSVHeader = "scene,layout,lights,method,sweep,value,frames,ms_median,ms_min,ms_max,"
+                        "assign_ms,shade_ms,first_frame_ms,evaluated_px,reached_px,max_error,"
+                        "rmse,over_one_step,list_mib,master_mib,lights_mib,cutoff,budget,note";
+
+std::string Num(double v, int precision = 4)
+{
+  if (std::isnan(v))
+  {
+    return "";
+  }
+  std::ostringstream os;
+  os.precision(precision);
+  os << v;
+  return os.str();
+}
+
+} // namespace
+
+//------------------------------------------------------------------------------ plots
+static void SavePlot(vtkContextView* view, const std::string& path)
+{
+  view->GetRenderWindow()->SetOffScreenRendering(1);
+  view->GetRenderWindow()->SetSize(900, 600);
+  view->GetRenderWindow()->SetMultiSamples(0);
+  view->Render();
+  vtkNew<vtkWindowToImageFilter> w2i;
+  w2i->SetInput(view->GetRenderWindow());
+  w2i->ReadFrontBufferOff();
+  vtkNew<vtkPNGWriter> writer;
+  writer->SetInputConnection(w2i->GetOutputPort());
+  writer->SetFileName(path.c_str());
+  writer->Write();
+}
+
+static void AddSeries(vtkChartXY* chart, const std::vector<std::pair<double, double>>& xy,
+  const char* name, int type, const unsigned char rgb[3], float width = 2.0f)
+{
+  if (xy.empty())
+  {
+    return;
+  }
+  if (xy.size() < 2)
+  {
+    type = vtkChart::POINTS; // a line needs two points
+  }
+  vtkNew<vtkTable> table;
+  vtkNew<vtkDoubleArray> x, y;
+  x->SetName("x");
+  y->SetName(name);
+  for (const auto& p : xy)
+  {
+    x->InsertNextValue(p.first);
+    y->InsertNextValue(p.second);
+  }
+  table->AddColumn(x);
+  table->AddColumn(y);
+  vtkPlot* plot = chart->AddPlot(type);
+  plot->SetInputData(table, 0, 1);
+  plot->SetColor(rgb[0], rgb[1], rgb[2], 255);
+  plot->SetWidth(width);
+}
+
+void WritePlots(const std::vector<Row>& rows, const std::string& dir)
+{
+  // 1. Error vs time for the knob sweeps of the main scene, with the Pareto front.
+  {
+    vtkNew<vtkContextView> view;
+    view->GetRenderer()->SetBackground(1, 1, 1);
+    vtkNew<vtkChartXY> chart;
+    view->GetScene()->AddItem(chart);
+    chart->SetTitle(
+      "bunny, 4,096 uniform lights: image error vs frame time (knobs swept one at a time)");
+    chart->GetAxis(vtkAxis::BOTTOM)->SetTitle("frame time (ms, median)");
+    chart->GetAxis(vtkAxis::LEFT)->SetTitle("RMSE vs exact reference (8-bit steps)");
+    chart->GetAxis(vtkAxis::BOTTOM)->SetLogScale(true); // error budgets cost 10-100x
+    std::vector<std::pair<double, double>> points;
+    for (const Row& r : rows)
+    {
+      if (r.Scene == "bunny" && r.Layout == "uniform" && r.Method == "clustered" &&
+        r.Lights == 4096 && r.Sweep != "camera" && r.Sweep != "specular" && r.Sweep != "spots" &&
+        !std::isnan(r.RMSE)) // the last two change the scene, not the trade-off
+      {
+        points.emplace_back(r.MsMedian, r.RMSE * 255.0);
+      }
+    }
+    std::vector<std::pair<double, double>> front;
+    std::vector<std::pair<double, double>> sorted = points;
+    std::sort(sorted.begin(), sorted.end());
+    double best = 1e300;
+    for (const auto& p : sorted)
+    {
+      if (p.second < best)
+      {
+        front.push_back(p);
+        best = p.second;
+      }
+    }
+    const unsigned char gray[3] = { 90, 90, 90 }, red[3] = { 200, 40, 40 };
+    AddSeries(chart, points, "configurations", vtkChart::POINTS, gray, 4.0f);
+    AddSeries(chart, front, "Pareto front", vtkChart::LINE, red, 3.0f);
+    chart->SetShowLegend(true);
+    SavePlot(view, dir + "/pareto.png");
+  }
+  // 2. Frame time vs light count: stock VTK, brute force, clustered.
+  {
+    vtkNew<vtkContextView> view;
+    view->GetRenderer()->SetBackground(1, 1, 1);
+    vtkNew<vtkChartXY> chart;
+    view->GetScene()->AddItem(chart);
+    chart->SetTitle("bunny, uniform lights: frame time vs light count");
+    chart->GetAxis(vtkAxis::BOTTOM)->SetTitle("lights");
+    chart->GetAxis(vtkAxis::LEFT)->SetTitle("frame time (ms, median)");
+    chart->GetAxis(vtkAxis::BOTTOM)->SetLogScale(true);
+    chart->GetAxis(vtkAxis::LEFT)->SetLogScale(true);
+    const char* methods[3] = { "stock", "brute", "clustered" };
+    const char* names[3] = { "stock VTK 9.1 (vtkLights)", "brute force", "clustered" };
+    const unsigned char colors[3][3] = { { 60, 60, 60 }, { 200, 40, 40 }, { 30, 90, 200 } };
+    for (int m = 0; m < 3; ++m)
+    {
+      std::vector<std::pair<double, double>> xy;
+      for (const Row& r : rows)
+      {
+        if (r.Scene == "bunny" && r.Layout == "uniform" && r.Method == methods[m] &&
+          r.Sweep == "count")
+        {
+          xy.emplace_back(r.Lights, r.MsMedian);
+        }
+      }
+      std::sort(xy.begin(), xy.end());
+      AddSeries(chart, xy, names[m], vtkChart::LINE, colors[m]);
+    }
+    chart->SetShowLegend(true);
+    SavePlot(view, dir + "/scaling.png");
+  }
+}
+
+//------------------------------------------------------------------------------ output
+void WriteCSV(const std::vector<Row>& rows, const std::string& path)
+{
+  std::ofstream out(path);
+  out << CSVHeader << "\n";
+  for (const Row& r : rows)
+  {
+    out << r.Scene << "," << r.Layout << "," << r.Lights << "," << r.Method << "," << r.Sweep << ","
+        << r.Value << "," << r.Frames << "," << Num(r.MsMedian) << "," << Num(r.MsMin) << ","
+        << Num(r.MsMax) << "," << Num(r.AssignMs) << "," << Num(r.ShadeMs) << ","
+        << Num(r.FirstFrameMs) << "," << Num(r.Evaluated) << "," << Num(r.Reached) << ","
+        << Num(r.MaxError) << "," << Num(r.RMSE) << "," << Num(r.OverOneStep) << ","
+        << Num(r.ListMiB) << "," << Num(r.MasterMiB) << "," << Num(r.LightsMiB) << ","
+        << Num(r.Cutoff) << "," << Num(r.Budget) << "," << r.Note << "\n";
+  }
+}
+
+void WriteMarkdown(const std::vector<Row>& rows, const std::string& path)
+{
+  std::ofstream out(path);
+  out << "| scene | layout | lights | method | knob | value | ms (median) | [min, max] | "
+         "assign ms | evaluated/px | reaching/px | max err (steps) | RMSE (steps) | "
+         "px > 1 step | list MiB |\n";
+  out << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  for (const Row& r : rows)
+  {
+    out << "| " << r.Scene << " | " << r.Layout << " | " << r.Lights << " | " << r.Method << " | "
+        << r.Sweep << " | " << r.Value << " | " << Num(r.MsMedian, 4) << " | [" << Num(r.MsMin, 4)
+        << ", " << Num(r.MsMax, 4) << "] | " << Num(r.AssignMs, 3) << " | " << Num(r.Evaluated, 3)
+        << " | " << Num(r.Reached, 3) << " | " << Num(r.MaxError * 255.0, 3) << " | "
+        << Num(r.RMSE * 255.0, 3) << " | "
+        << (std::isnan(r.OverOneStep) ? std::string() : Num(100.0 * r.OverOneStep, 3) + "%")
+        << " | " << Num(r.ListMiB, 3) << " |\n";
+  }
+}
+
+static std::string ReadFirstLine(const char* path, const char* key)
+{
+  std::ifstream in(path);
+  std::string line;
+  while (std::getline(in, line))
+  {
+    if (line.find(key) == 0)
+    {
+      return line.substr(line.find(':') + 1);
+    }
+  }
+  return "?";
+}
+
+void WriteMachine(vtkRenderWindow* rw, const std::string& command, const std::string& path)
+{
+  std::ofstream out(path);
+  const std::time_t now = std::time(nullptr);
+  char date[64];
+  std::strftime(date, sizeof(date), "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
+  out << "date: " << date << "\n";
+  out << "command: " << command << "\n";
+  out << "cpu:" << ReadFirstLine("/proc/cpuinfo", "model name") << "\n";
+  out << "hardware threads: " << std::thread::hardware_concurrency() << "\n";
+  out << "memory:" << ReadFirstLine("/proc/meminfo", "MemTotal") << "\n";
+  out << "VTK: " << vtkVersion::GetVTKVersion() << "\n";
+  if (vtkOpenGLRenderWindow* gl = vtkOpenGLRenderWindow::SafeDownCast(rw))
+  {
+    // The driver's own strings ("OpenGL vendor/renderer/version string: ...").
+    std::istringstream caps(gl->ReportCapabilities());
+    std::string line;
+    while (std::getline(caps, line))
+    {
+      if (line.rfind("OpenGL vendor", 0) == 0 || line.rfind("OpenGL renderer", 0) == 0 ||
+        line.rfind("OpenGL version", 0) == 0)
+      {
+        out << line << "\n";
+      }
+    }
+    out << "GL_MAX_TEXTURE_SIZE: " << vtkTextureObject::GetMaximumTextureSize(gl) << "\n";
+  }
+  out << "window: " << rw->GetSize()[0] << "x" << rw->GetSize()[1] << "\n";
+}
+
+//------------------------------------------------------------------------------ check
+int CheckCSV(const std::string& path)
+{
+  std::ifstream in(path);
+  std::string line;
+  if (!std::getline(in, line) || line != CSVHeader)
+  {
+    std::printf("check: bad or missing header in %s\n", path.c_str());
+    return 1;
+  }
+  int failures = 0, rows = 0, clustered = 0, budgets = 0;
+  while (std::getline(in, line))
+  {
+    ++rows;
+    std::vector<std::string> f;
+    std::stringstream ss(line);
+    std::string cell;
+    while (std::getline(ss, cell, ','))
+    {
+      f.push_back(cell);
+    }
+    if (f.size() < 23)
+    {
+      std::printf("check: row %d has %zu fields\n", rows, f.size());
+      ++failures;
+      continue;
+    }
+    auto num = [&](int i) { return f[i].empty() ? NAN : std::atof(f[i].c_str()); };
+    const double ms = num(7), maxErr = num(15), budget = num(22);
+    if (!(ms > 0.0) || !std::isfinite(ms))
+    {
+      std::printf("check: row %d has no valid frame time\n", rows);
+      ++failures;
+    }
+    if (f[3] == "clustered")
+    {
+      ++clustered;
+      if (std::isnan(maxErr) || std::isnan(num(13)) || std::isnan(num(18)))
+      {
+        std::printf("check: clustered row %d lacks error, counts or memory\n", rows);
+        ++failures;
+      }
+      if (!std::isnan(budget))
+      {
+        ++budgets;
+        // The budget bounds the cut tails; the image also rounds to 8 bits (half a step).
+        if (!(maxErr <= budget + 0.5 / 255.0 + 1e-9))
+        {
+          std::printf("check: row %d misses its error budget: %g > %g\n", rows, maxErr, budget);
+          ++failures;
+        }
+      }
+    }
+  }
+  std::printf("check: %d rows (%d clustered, %d with an error budget), %d problem(s)\n", rows,
+    clustered, budgets, failures);
+  return (failures == 0 && clustered > 0 && budgets > 0) ? 0 : 1;
+}
+} // namespace ClusteredLightingBenchmark

@@ -255,6 +255,7 @@ const vtkClusteredLightingAssignment& vtkClusteredLightingAssigner::Update(
   r.NumberOfAlwaysOn = static_cast<int>(prepared.NumberOfAlwaysOn);
   r.NumberOfBelowCutoff = static_cast<int>(prepared.NumberOfBelowCutoff);
   r.NumberOfSpots = static_cast<int>(prepared.NumberOfSpots);
+  r.NumberOfExplicitRadius = static_cast<int>(prepared.NumberOfExplicitRadius);
 
   // 3. Limits. 4. Light records, uploaded only when the lights changed.
   r.Enabled = this->CheckLimits(rw, inputs);

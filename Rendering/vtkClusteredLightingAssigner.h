@@ -114,7 +114,8 @@ struct vtkClusteredLightingAssignment
   int NumberOfAlwaysOn = 0;
   int NumberOfBelowCutoff = 0;
   int NumberOfSpots = 0;
-  int NumberOfAssigned = 0; ///< lights with at least one list-pass quad
+  int NumberOfExplicitRadius = 0; ///< lights with an explicit radius (their model's range)
+  int NumberOfAssigned = 0;       ///< lights with at least one list-pass quad
   int NumberOfQuads = 0;
   double EffectiveCutoff = 1.0 / 1024.0;
   double AssignmentTime = 0.0; ///< ms, when Reassigned

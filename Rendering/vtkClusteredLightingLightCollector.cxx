@@ -49,8 +49,10 @@ void vtkClusteredLightingLightCollector::CollectRendererLights(
   {
     renderer->CreateLight(); // what VTK would do in UpdateLights
   }
+  std::vector<vtkLight*> all;
   for (lights->InitTraversal(it); (light = lights->GetNextLight(it));)
   {
+    all.push_back(light);
     c.RendererLights.emplace_back(light);
     if (cluster && light->GetSwitch() && light->GetPositional())
     {
@@ -68,6 +70,32 @@ void vtkClusteredLightingLightCollector::CollectRendererLights(
       c.StockLights.emplace_back(light);
     }
   }
+  c.RendererComplexity = ComputeVTKLightingComplexity(all);
+}
+
+//------------------------------------------------------------------------------
+int vtkClusteredLightingLightCollector::ComputeVTKLightingComplexity(
+  const std::vector<vtkLight*>& lights)
+{
+  int complexity = 0;
+  int count = 0;
+  for (vtkLight* light : lights)
+  {
+    if (light->GetSwitch())
+    {
+      ++count;
+      complexity = std::max(complexity, 1);
+    }
+    if (complexity == 1 && (count > 1 || light->GetLightType() != VTK_LIGHT_TYPE_HEADLIGHT))
+    {
+      complexity = 2;
+    }
+    if (complexity < 3 && light->GetPositional())
+    {
+      complexity = 3;
+    }
+  }
+  return complexity;
 }
 
 //------------------------------------------------------------------------------

@@ -62,6 +62,9 @@ struct vtkClusteredLightingLightCollection
   std::vector<vtkSmartPointer<vtkLight>> StockLights;    ///< left to VTK's lighting code
   std::vector<vtkLight*> ClusteredLights;                ///< clustered renderer lights
   std::vector<vtkClusteredLightSet*> LightSets;          ///< enabled sets
+  /// The lighting complexity VTK picks for all the renderer's lights (see
+  /// vtkClusteredLightingLightCollector::ComputeVTKLightingComplexity).
+  int RendererComplexity = 0;
 
   /// Filled by vtkClusteredLightingLightCollector::Read.
   std::vector<vtkClusteredLighting::LightSource> Sources;
@@ -96,6 +99,20 @@ public:
 
   /// Fills c.Sources from everything collected, in collection order.
   static void Read(vtkClusteredLightingLightCollection& c);
+
+  /**
+   * The lighting complexity vtkOpenGLRenderer::UpdateLights (VTK 9.1 and 9.2) picks for
+   * these lights, in their order: 0 none switched on, 1 a lone headlight, 2 several lights
+   * or any other kind, 3 any positional light. VTK generates different code for each:
+   * at 1 the headlight's specular is pow(N.z, power), at 2 and 3 reflect()-based Phong,
+   * and PBR directional lights take their direction from the light's position at 3.
+   * Mirrors VTK's loop exactly, quirks included: a positional light raises the complexity
+   * to 3 even when switched off, and a second light (or a non-headlight) raises it to 2
+   * once a switched-on light came before it. The pass keeps the complexity VTK would have
+   * picked with the clustered lights (vtkClusteredLightingPass::RenderDelegate), so VTK's
+   * own lights look exactly as without the pass.
+   */
+  static int ComputeVTKLightingComplexity(const std::vector<vtkLight*>& lights);
 
 private:
   static void ReadRendererLights(vtkClusteredLightingLightCollection& c);

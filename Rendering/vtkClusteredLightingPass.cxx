@@ -94,7 +94,8 @@ struct vtkClusteredLightingPass::vtkInternals
   vtkClusteredLightingAssigner* Current = nullptr; ///< during Render()
   vtkClusteredLightingShaderVariant Variant;       ///< global part for the current render
   vtkTimeStamp ShaderStageTime;
-  vtkNew<vtkLight> PlaceholderLight;
+  vtkNew<vtkLight> PlaceholderLight; ///< keeps VTK's lit code when every light is clustered
+  vtkNew<vtkLight> ComplexityLight;  ///< keeps VTK's lighting complexity (switched off)
 
   vtkClusteredLightingAssigner* GetAssigner(vtkRenderer* ren)
   {
@@ -130,6 +131,13 @@ vtkClusteredLightingPass::vtkClusteredLightingPass()
   placeholder->SetLightTypeToHeadlight();
   placeholder->SetIntensity(0.0);
   placeholder->SwitchOn();
+  // A switched-off positional light raises VTK's lighting complexity to 3 and costs
+  // nothing: VTK generates code and uniforms only for switched-on lights.
+  vtkLight* complexity = this->Internals->ComplexityLight;
+  complexity->SetLightTypeToSceneLight();
+  complexity->SetPositional(true);
+  complexity->SetConeAngle(180.0);
+  complexity->SwitchOff();
   this->Internals->ShaderStageTime.Modified();
 }
 
@@ -367,6 +375,7 @@ void vtkClusteredLightingPass::UpdateShaderVariant(const vtkClusteredLightingAss
   variant.Clustered = r.Clustered;
   variant.Spot = r.NumberOfSpots > 0;
   variant.Window = this->Falloff == FALLOFF_WINDOWED;
+  variant.Explicit = r.NumberOfExplicitRadius > 0;
   variant.LinearSlices = r.Linear;
   variant.MasterTexels = r.MasterTexels;
   variant.DebugView = ToVariantDebug(this->DebugView);
@@ -389,15 +398,25 @@ void vtkClusteredLightingPass::RenderDelegate(const vtkRenderState* s,
   if (enabled)
   {
     rendererLights->RemoveAllItems();
+    std::vector<vtkLight*> stock;
     bool stockOn = false;
     for (const auto& l : lights.StockLights)
     {
       rendererLights->AddItem(l);
+      stock.push_back(l);
       stockOn = stockOn || l->GetSwitch();
     }
     if (!stockOn)
     {
+      // Nothing of VTK's lighting shows: the cheapest code (complexity 1) will do.
       rendererLights->AddItem(this->Internals->PlaceholderLight);
+    }
+    else if (vtkClusteredLightingLightCollector::ComputeVTKLightingComplexity(stock) <
+      lights.RendererComplexity)
+    {
+      // VTK's own lights must be shaded by the code VTK would generate for the whole
+      // collection (the headlight's specular differs between complexity 1 and 3).
+      rendererLights->AddItem(this->Internals->ComplexityLight);
     }
     assigner->ActivateShading();
   }

@@ -43,7 +43,13 @@
  * contribution is below Cutoff (default 1/1024, a quarter of an 8-bit step). Lights that
  * never fall off (VTK's default attenuation (1, 0, 0)) are always-on lights, assigned to
  * every cluster, never dropped. ShadingMode BRUTE_FORCE evaluates every light for every
- * fragment with no cutoff: the reference for images and speed comparisons.
+ * fragment with the same light model (explicit radius, windowed falloff, spot cone) and no
+ * culling or cutoff: the reference for images and speed comparisons.
+ *
+ * VTK's own lights (headlight, light kit, directional and camera lights) are shaded by
+ * VTK's code exactly as without the pass: the pass keeps the lighting complexity VTK picks
+ * for the renderer's whole light collection (a switched-off positional placeholder light
+ * when needed), so the code VTK generates for them does not change.
  *
  * Limits: the list texture is (X*Z*C) x (Y*R) texels for C columns of R batches; with
  * GL_MAX_TEXTURE_SIZE 16384 the default 32x16x32 grid holds 524,288 lights. Past a
@@ -190,7 +196,7 @@ public:
   enum ShadingModes
   {
     SHADING_CLUSTERED = 0,  ///< walk the fragment's cluster lists
-    SHADING_BRUTE_FORCE = 1 ///< every light for every fragment, no cutoff (reference)
+    SHADING_BRUTE_FORCE = 1 ///< the same light model, every light for every fragment (reference)
   };
   ///@{
   /**

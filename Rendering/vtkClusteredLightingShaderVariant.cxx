@@ -14,8 +14,9 @@ bool vtkClusteredLightingShaderVariant::SameGlobalPart(
   const vtkClusteredLightingShaderVariant& o) const
 {
   return this->Enabled == o.Enabled && this->Clustered == o.Clustered && this->Spot == o.Spot &&
-    this->Window == o.Window && this->LinearSlices == o.LinearSlices &&
-    this->MasterTexels == o.MasterTexels && this->DebugView == o.DebugView;
+    this->Window == o.Window && this->Explicit == o.Explicit &&
+    this->LinearSlices == o.LinearSlices && this->MasterTexels == o.MasterTexels &&
+    this->DebugView == o.DebugView;
 }
 
 //------------------------------------------------------------------------------
@@ -26,14 +27,24 @@ std::set<std::string> vtkClusteredLightingShaderVariant::GetFlags() const
   if (this->Clustered)
   {
     f.insert("CUTOFF");
-    if (this->Window)
-    {
-      f.insert("WINDOW");
-    }
     if (this->LinearSlices)
     {
       f.insert("LINEAR_SLICES");
     }
+  }
+  // The light model: brute force stops at explicit radii and windows only there.
+  const bool modelRadius = this->Explicit && (!this->Clustered || this->Window);
+  if (modelRadius)
+  {
+    f.insert("MODEL_RADIUS");
+  }
+  if (this->Window && (this->Clustered || this->Explicit))
+  {
+    f.insert("WINDOW");
+  }
+  if (this->Spot || modelRadius)
+  {
+    f.insert("VIEW1");
   }
   f.insert(this->PBR ? "PBR" : "PHONG");
   if (this->Specular && !this->PBR)

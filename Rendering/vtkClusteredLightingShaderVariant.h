@@ -10,9 +10,15 @@
  * unit-tested) keeps only the blocks of the flags this variant sets, so the text injected
  * into a mapper's shader holds no code path the actor or the light set does not need.
  *
- * Flags: CLUSTERED or BRUTE_FORCE, CUTOFF (radius test, clustered only), PHONG or PBR,
- * SPECULAR, SPOT, WINDOW, LINEAR_SLICES, COUNT, CLUSTER_INDEX, HEAT_MAP, EVALUATED_COUNT,
- * REACHED_COUNT, NON_FINITE.
+ * Flags: CLUSTERED or BRUTE_FORCE, CUTOFF (the culling-radius test, clustered only),
+ * MODEL_RADIUS (the explicit radius of the light model is read: brute force stops there,
+ * windows end there), VIEW1 (the second view texel is read: spot axis, explicit radius),
+ * PHONG or PBR, SPECULAR, SPOT, WINDOW, LINEAR_SLICES, COUNT, CLUSTER_INDEX, HEAT_MAP,
+ * EVALUATED_COUNT, REACHED_COUNT, NON_FINITE.
+ *
+ * Brute force evaluates the same light model as clustered shading (explicit radius,
+ * windowed falloff, spot cone) and differs only in not culling: lights without an explicit
+ * radius are evaluated everywhere, with no cutoff.
  */
 #ifndef vtkClusteredLightingShaderVariant_h
 #define vtkClusteredLightingShaderVariant_h
@@ -27,7 +33,8 @@ public:
   bool Enabled = false;  ///< false: no clustered lights, no clustered code at all
   bool Clustered = true; ///< false: brute force (every light, no cutoff)
   bool Spot = false;
-  bool Window = false;
+  bool Window = false;   ///< windowed falloff (FALLOFF_WINDOWED)
+  bool Explicit = false; ///< some light has an explicit radius (its model's range)
   bool LinearSlices = false;
   int MasterTexels = 1;
 

@@ -14,7 +14,7 @@ work="${TMPDIR:-/tmp}/clustered-lighting-compare-$(git -C "$root" rev-parse --sh
 if [ ! -d "$work" ]; then
   git -C "$root" worktree add --detach "$work" "$rev" > /dev/null
 fi
-"$root/scripts/build.sh" "$work/build" > /dev/null
+"$work/scripts/build.sh" "$work/build" > /dev/null
 "$root/scripts/build.sh" "$root/build" > /dev/null
 out="$(mktemp -d)"
 for ((r = 1; r <= rounds; ++r)); do

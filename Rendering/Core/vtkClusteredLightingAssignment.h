@@ -8,7 +8,9 @@
  *   PreparedLight[]  --PackLightData-->   clLightData  (2 RGBA32F texels / light,
  *   (world coords,                         uploaded when lights change)
  *    Morton order)   --ComputeViewData--> clLightView  (2 RGBA32F texels / light,
- *                                          uploaded when the view changes)
+ *                                          uploaded when the view changes:
+ *                                          (centre VC, culling radius),
+ *                                          (spot axis VC, explicit radius))
  *                                       + clQuads      (2 RGBA32F texels per (light, slice))
  *
  *   clQuads --list pass (instanced quads, logic-op OR)--> list texture (R32UI)
@@ -38,6 +40,13 @@ constexpr int FloatsPerQuad = 8;
 
 /// Radius used in the shader for always-on lights (comparisons with +inf are avoided).
 constexpr float AlwaysOnRadius = 1e30f;
+
+/// A radius as the shaders get it: radii from AlwaysOnRadius up (infinite ones included)
+/// become AlwaysOnRadius, so no float overflows to Inf.
+inline float ToShaderRadius(double r)
+{
+  return r >= static_cast<double>(AlwaysOnRadius) ? AlwaysOnRadius : static_cast<float>(r);
+}
 
 /// How light spheres are bounded on screen.
 enum class BoundsMethod
@@ -112,11 +121,12 @@ inline ViewData ComputeViewData(const std::vector<PreparedLight>& lights, const 
     o[0] = static_cast<float>(c.x);
     o[1] = static_cast<float>(c.y);
     o[2] = static_cast<float>(c.z);
-    o[3] = std::isinf(l.Radius) ? AlwaysOnRadius : static_cast<float>(l.Radius);
+    o[3] = ToShaderRadius(l.Radius);
     o[4] = static_cast<float>(dir.x);
     o[5] = static_cast<float>(dir.y);
     o[6] = static_cast<float>(dir.z);
-    o[7] = 0.0f;
+    // The light model's own range (an explicit radius), AlwaysOnRadius when it has none.
+    o[7] = ToShaderRadius(l.ExplicitRadius);
     if (!(l.Radius > 0.0))
     {
       continue;

@@ -91,6 +91,7 @@ struct PreparedLights
   std::size_t NumberOfAlwaysOn = 0;
   std::size_t NumberOfBelowCutoff = 0;
   std::size_t NumberOfSpots = 0;
+  std::size_t NumberOfExplicitRadius = 0; ///< lights whose model has its own range
 };
 
 /// Attenuation exactly as VTK's shader computes it.
@@ -281,6 +282,7 @@ inline PreparedLights PrepareLights(const std::vector<LightSource>& sources,
     p.SourceIndex = static_cast<std::uint32_t>(i);
     out.NumberOfAlwaysOn += std::isinf(r) ? 1 : 0;
     out.NumberOfBelowCutoff += r == 0.0 ? 1 : 0;
+    out.NumberOfExplicitRadius += s.HasRadius ? 1 : 0;
     valid.push_back(p);
   }
 
@@ -320,11 +322,34 @@ inline double EvaluateFalloffWindow(double d, double radius)
 }
 
 /**
- * Upper bound of what the cutoff removes at a point: the sum, over the lights whose
- * radius the point is at or beyond, of their peak contribution color * att(d) (spot
+ * The light model at distance d for a peak contribution c (spot factor and N.L aside):
+ * VTK's attenuation, cut at an explicit radius (zero at and beyond it) and windowed there
+ * with windowed falloff. Lights without an explicit radius reach everywhere. This is what
+ * brute force evaluates.
+ */
+inline double EvaluateLightModel(double c, double d, const PreparedLight& l, bool windowed)
+{
+  if (std::isinf(l.ExplicitRadius))
+  {
+    return c;
+  }
+  if (!(d < l.ExplicitRadius))
+  {
+    return 0.0;
+  }
+  return windowed ? c * EvaluateFalloffWindow(d, l.ExplicitRadius) : c;
+}
+
+/**
+ * Upper bound of what the cutoff removes at a point, against the light model
+ * (EvaluateLightModel, what brute force shows): the sum, over the lights whose culling
+ * radius the point is at or beyond, of the model's contribution there (peak color, spot
  * factor and N.L taken as 1). Multiply by the material's Diffuse + Specular. Lights within
- * (1 - slack) * radius count as reached. With windowed falloff, reached lights add what
- * the window removes, color * att(d) * (1 - window).
+ * (1 - slack) * radius count as reached. A light culled at its explicit radius (one no
+ * larger than its cutoff radius) has no tail: both modes stop at the same radius. With
+ * windowed falloff, reached lights without an explicit radius add what the window at
+ * their culling radius removes (lights with one are windowed at it, in the model as in
+ * clustered shading).
  */
 inline glm::dvec3 ComputeCutoffTailBound(const glm::dvec3& pointVC,
   const std::vector<PreparedLight>& lights, const std::vector<glm::dvec3>& centersVC,
@@ -333,15 +358,20 @@ inline glm::dvec3 ComputeCutoffTailBound(const glm::dvec3& pointVC,
   glm::dvec3 tail(0.0);
   for (std::size_t i = 0; i < lights.size(); ++i)
   {
-    const double d = glm::length(pointVC - centersVC[i]);
-    const glm::dvec3 c = lights[i].Color * EvaluateAttenuation(d, lights[i].Attenuation);
-    if (d >= lights[i].Radius * (1.0 - slack))
+    const PreparedLight& l = lights[i];
+    if (l.Radius >= l.ExplicitRadius)
     {
-      tail += c;
+      continue; // culled where the model ends: nothing is cut
     }
-    else if (windowed)
+    const double d = glm::length(pointVC - centersVC[i]);
+    const double a = EvaluateAttenuation(d, l.Attenuation);
+    if (d >= l.Radius * (1.0 - slack))
     {
-      tail += c * (1.0 - EvaluateFalloffWindow(d, lights[i].Radius * (1.0 + slack)));
+      tail += l.Color * EvaluateLightModel(a, d, l, windowed);
+    }
+    else if (windowed && std::isinf(l.ExplicitRadius))
+    {
+      tail += l.Color * a * (1.0 - EvaluateFalloffWindow(d, l.Radius * (1.0 + slack)));
     }
   }
   return tail;
@@ -364,13 +394,17 @@ inline double ComputeTailAtCutoff(
     const double peak = std::max(l.Color.x, std::max(l.Color.y, l.Color.z));
     const double r =
       std::min(ComputeInfluenceRadius(peak, l.Attenuation, cutoff), l.ExplicitRadius);
+    if (r >= l.ExplicitRadius)
+    {
+      continue; // culled where the model ends: nothing is cut
+    }
     const double d = glm::length(p - l.PositionWC);
     const double c = peak * EvaluateAttenuation(d, l.Attenuation);
     if (d >= r)
     {
-      tail += c;
+      tail += EvaluateLightModel(c, d, l, windowed);
     }
-    else if (windowed)
+    else if (windowed && std::isinf(l.ExplicitRadius))
     {
       tail += c * (1.0 - EvaluateFalloffWindow(d, r));
     }

@@ -9,7 +9,7 @@
 // In a batch block the clusters of slice s start at column s * X (slice-major layout).
 
 uniform samplerBuffer clQuads;
-uniform samplerBuffer clLightView; // (positionVC, radius), (spot axis, 0) per light
+uniform samplerBuffer clLightView; // (positionVC, radius), (spot axis, explicit radius) per light
 uniform ivec4 clGrid;       // tilesX, tilesY, slices, batchRows (vtkClusteredLightingLayout.h)
 uniform vec2 clListSize;    // list texture size in texels
 

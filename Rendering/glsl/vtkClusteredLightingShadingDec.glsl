@@ -21,7 +21,8 @@ int clFindLSB(uint v)
 
 // Light records: 2 RGBA32F texels per light (upload order = Morton order).
 //  clLightData (uploaded when lights change): (color * intensity, exponent), (a0, a1, a2, cos(cone) or -2)
-//  clLightView (uploaded when the view changes): (positionVC, radius), (spot axis VC, 0)
+//  clLightView (uploaded when the view changes): (positionVC, culling radius),
+//    (spot axis VC, explicit radius: the light model's own range, 1e30 when none)
 uniform samplerBuffer clLightData;
 uniform samplerBuffer clLightView;
 //CL_IF(CLUSTERED)
@@ -80,8 +81,11 @@ vec3 clHeatColor(float t)
 }
 //CL_ENDIF
 
-// Distance test and VTK's attenuation/spot formula; returns false if the light does not
-// reach P. L is the unit direction from the light to P (VTK's vertLightDirectionVC).
+// Distance test and the light model (VTK's attenuation and spot formula, cut at an
+// explicit radius); returns false if the light does not reach P. L is the unit direction
+// from the light to P (VTK's vertLightDirectionVC). Clustered shading also stops at the
+// culling radius (where the light falls below the cutoff); brute force evaluates the
+// light model alone.
 bool clLightAttenuation(int i, vec3 P, out vec3 L, out float att, out vec3 color)
 {
   vec4 view0 = texelFetch(clLightView, 2 * i);
@@ -93,6 +97,17 @@ bool clLightAttenuation(int i, vec3 P, out vec3 L, out float att, out vec3 color
     return false;
   }
 //CL_ENDIF
+//CL_IF(VIEW1)
+  vec4 view1 = texelFetch(clLightView, 2 * i + 1);
+//CL_ENDIF
+//CL_IF(MODEL_RADIUS)
+//CL_IF(BRUTE_FORCE)
+  if (!(d < view1.w))
+  {
+    return false;
+  }
+//CL_ENDIF
+//CL_ENDIF
   L = d > 0.0 ? toP / d : vec3(0.0, 0.0, -1.0);
   vec4 data0 = texelFetch(clLightData, 2 * i);
   vec4 data1 = texelFetch(clLightData, 2 * i + 1);
@@ -100,7 +115,7 @@ bool clLightAttenuation(int i, vec3 P, out vec3 L, out float att, out vec3 color
 //CL_IF(SPOT)
   if (data1.w > -1.5)
   {
-    float coneDot = dot(L, texelFetch(clLightView, 2 * i + 1).xyz);
+    float coneDot = dot(L, view1.xyz);
     if (coneDot < data1.w)
     {
       return false;
@@ -109,9 +124,23 @@ bool clLightAttenuation(int i, vec3 P, out vec3 L, out float att, out vec3 color
   }
 //CL_ENDIF
 //CL_IF(WINDOW)
-  float x2 = d * d / (view0.w * view0.w);
-  float window = clamp(1.0 - x2 * x2, 0.0, 1.0);
-  att *= window * window;
+  // (1 - (d/r)^4)^2 at the explicit radius; clustered shading windows lights without
+  // one at their culling radius.
+//CL_IF(MODEL_RADIUS)
+//CL_IF(BRUTE_FORCE)
+  float clWindowRadius = view1.w;
+  if (clWindowRadius < 1e29)
+//CL_ELSE
+  float clWindowRadius = view1.w < 1e29 ? view1.w : view0.w;
+//CL_ENDIF
+//CL_ELSE
+  float clWindowRadius = view0.w;
+//CL_ENDIF
+  {
+    float x2 = d * d / (clWindowRadius * clWindowRadius);
+    float window = clamp(1.0 - x2 * x2, 0.0, 1.0);
+    att *= window * window;
+  }
 //CL_ENDIF
   color = data0.rgb;
   return true;

@@ -209,3 +209,58 @@ TEST(ErrorBudget, ChosenCutoffMeetsTheBudgetAndIsTight)
   // A budget every cutoff meets gives the largest cutoff.
   EXPECT_DOUBLE_EQ(ChooseCutoffForErrorBudget(p.Lights, 1e6, samples), 1.0 / 16.0);
 }
+
+TEST(LightModel, ExplicitRadiusEndsTheLightAndWindowsThere)
+{
+  LightSource s;
+  s.Attenuation = glm::dvec3(1, 0, 2);
+  PreparedLights p = PrepareLights({ s }, LightPreparationOptions());
+  const PreparedLight unranged = p.Lights[0];
+  s.HasRadius = true;
+  s.Radius = 0.5;
+  p = PrepareLights({ s }, LightPreparationOptions());
+  const PreparedLight ranged = p.Lights[0];
+  EXPECT_EQ(p.NumberOfExplicitRadius, 1u);
+  for (double d : { 0.0, 0.2, 0.49, 0.5, 0.7, 3.0 })
+  {
+    const double c = EvaluateAttenuation(d, s.Attenuation);
+    EXPECT_EQ(EvaluateLightModel(c, d, unranged, false), c) << d;
+    EXPECT_EQ(EvaluateLightModel(c, d, unranged, true), c) << d; // no range: no window
+    EXPECT_EQ(EvaluateLightModel(c, d, ranged, false), d < 0.5 ? c : 0.0) << d;
+    EXPECT_DOUBLE_EQ(
+      EvaluateLightModel(c, d, ranged, true), d < 0.5 ? c * EvaluateFalloffWindow(d, 0.5) : 0.0)
+      << d;
+  }
+}
+
+TEST(LightModel, TailBoundCountsOnlyWhatTheCutoffRemovesFromTheModel)
+{
+  LightSource s;
+  s.Attenuation = glm::dvec3(1, 0, 2);
+  s.HasRadius = true;
+  const glm::dvec3 center(0.0);
+  const LightPreparationOptions coarse{ 1.0 / 8.0, false }; // cutoff radius ~1.87
+  // An explicit radius inside the cutoff radius: culled where the model ends, no tail.
+  s.Radius = 1.0;
+  PreparedLights p = PrepareLights({ s }, coarse);
+  ASSERT_DOUBLE_EQ(p.Lights[0].Radius, 1.0);
+  for (double d : { 0.5, 0.999, 1.0, 1.5, 5.0 })
+  {
+    for (bool windowed : { false, true })
+    {
+      EXPECT_EQ(ComputeCutoffTailBound(glm::dvec3(d, 0, 0), p.Lights, { center }, windowed).x, 0.0)
+        << d;
+    }
+  }
+  // An explicit radius beyond it: the tail is the model between the two radii, nothing
+  // beyond the explicit radius.
+  s.Radius = 3.0;
+  p = PrepareLights({ s }, coarse);
+  const double r = p.Lights[0].Radius;
+  ASSERT_LT(r, 3.0);
+  EXPECT_EQ(ComputeCutoffTailBound(glm::dvec3(0.5 * r, 0, 0), p.Lights, { center }).x, 0.0);
+  const double mid = 0.5 * (r + 3.0);
+  EXPECT_DOUBLE_EQ(ComputeCutoffTailBound(glm::dvec3(mid, 0, 0), p.Lights, { center }).x,
+    EvaluateAttenuation(mid, s.Attenuation));
+  EXPECT_EQ(ComputeCutoffTailBound(glm::dvec3(3.5, 0, 0), p.Lights, { center }).x, 0.0);
+}

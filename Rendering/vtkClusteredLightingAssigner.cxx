@@ -240,6 +240,8 @@ const vtkClusteredLightingAssignment& vtkClusteredLightingAssigner::Update(
   }
 
   // 2. Prepare lights.
+  const auto t0 = std::chrono::steady_clock::now();
+  r.LightUpdateTime = 0.0;
   if (r.Reasons & (CL_DIRTY_LIGHTS | CL_DIRTY_PREPARATION))
   {
     this->HaveSources = true;
@@ -264,6 +266,14 @@ const vtkClusteredLightingAssignment& vtkClusteredLightingAssigner::Update(
     this->LightData.Upload(rw, PackLightData(prepared.Lights));
     this->LightDataUploaded = true;
     r.LightsUploaded = true;
+  }
+  if (r.Reasons & (CL_DIRTY_LIGHTS | CL_DIRTY_PREPARATION))
+  {
+    if (inputs.MeasureTimings)
+    {
+      glFinish();
+    }
+    r.LightUpdateTime = Milliseconds(t0, std::chrono::steady_clock::now());
   }
 
   // 5-6. View records, list and master: only when something changed.

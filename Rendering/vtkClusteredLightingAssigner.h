@@ -118,7 +118,8 @@ struct vtkClusteredLightingAssignment
   int NumberOfAssigned = 0;       ///< lights with at least one list-pass quad
   int NumberOfQuads = 0;
   double EffectiveCutoff = 1.0 / 1024.0;
-  double AssignmentTime = 0.0; ///< ms, when Reassigned
+  double AssignmentTime = 0.0;  ///< ms, when Reassigned
+  double LightUpdateTime = 0.0; ///< ms: reading, preparing and uploading changed lights
   std::uint64_t ListBytes = 0, MasterBytes = 0, LightBufferBytes = 0;
 
   // Messages new in this update (each problem is reported once while it persists).

@@ -355,6 +355,7 @@ void vtkClusteredLightingPass::ReportAssignment(const vtkClusteredLightingAssign
   this->NumberOfSpotLights = r.NumberOfSpots;
   this->NumberOfAssignedLights = r.NumberOfAssigned;
   this->NumberOfLightUploads += r.LightsUploaded ? 1 : 0;
+  this->LastLightUpdateTime = r.LightUpdateTime;
   if (r.Reassigned)
   {
     this->LastAssignmentTime = r.AssignmentTime;

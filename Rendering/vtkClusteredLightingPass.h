@@ -300,7 +300,8 @@ public:
   vtkGetMacro(NumberOfLightsBelowCutoff, int); ///< below the cutoff everywhere
   vtkGetMacro(NumberOfSpotLights, int);
   vtkGetMacro(NumberOfAssignedLights, int); ///< lights drawn in the list pass (visible)
-  vtkGetMacro(LastAssignmentTime, double);  ///< ms, list + master passes (MeasureTimings)
+  vtkGetMacro(LastAssignmentTime, double);  ///< ms, view records + list + master passes
+  vtkGetMacro(LastLightUpdateTime, double); ///< ms, reading, preparing and uploading lights
   vtkGetMacro(LastShadingTime, double);     ///< ms, delegate render (MeasureTimings)
   vtkGetMacro(LastAssignmentUpdated, bool); ///< whether the last render reassigned lights
   ///@}
@@ -380,6 +381,7 @@ protected:
   int NumberOfSpotLights = 0;
   int NumberOfAssignedLights = 0;
   double LastAssignmentTime = 0.0;
+  double LastLightUpdateTime = 0.0;
   double LastShadingTime = 0.0;
   bool LastAssignmentUpdated = false;
   int NumberOfLightUploads = 0;

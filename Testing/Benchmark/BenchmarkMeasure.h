@@ -42,7 +42,7 @@ struct Row
   int Lights = 0;
   int Frames = 0;
   double MsMedian = NAN, MsMin = NAN, MsMax = NAN;
-  double AssignMs = NAN, ShadeMs = NAN, FirstFrameMs = NAN;
+  double AssignMs = NAN, LightUpdateMs = NAN, ShadeMs = NAN, FirstFrameMs = NAN;
   double Evaluated = NAN, Reached = NAN;
   double MaxError = NAN, RMSE = NAN, OverOneStep = NAN;
   double ListMiB = NAN, MasterMiB = NAN, LightsMiB = NAN;
@@ -77,6 +77,7 @@ public:
 
 private:
   void MeasureCounts(Row& row);
+  void NudgeLights(int frame);
   void AddStockLights(std::vector<vtkSmartPointer<vtkLight>>& added);
 
   vtkNew<vtkRenderWindow> Window;
@@ -87,6 +88,7 @@ private:
   std::string Layout;
   std::vector<float> Reference;        ///< exact image of the current lights at the view
   std::vector<unsigned char> Geometry; ///< pixels that show geometry at the view
+  double Nudged = 0.0;                 ///< how far NudgeLights moved the lights
 };
 
 /// Max error, RMSE and share of pixels off by more than one 8-bit step, into row.

@@ -118,6 +118,32 @@ std::vector<Step> MakePlan(const PlanOptions& options)
         }
       }
     }
+    // Animated lights: every light moves every frame, so they are read, prepared and
+    // uploaded every frame on top of the view's assignment (light_update_ms).
+    if (main)
+    {
+      std::vector<long long> animated = { 4096 };
+      if (!quick)
+      {
+        animated.push_back(65536);
+        if (options.LargestLights > 0)
+        {
+          animated.push_back(options.LargestLights);
+        }
+      }
+      for (long long n : animated)
+      {
+        Step s = base;
+        s.Lights = static_cast<int>(n);
+        s.Sweep = "lights";
+        s.Value = "animated";
+        s.AnimateLights = true;
+        s.Counts = false;
+        s.Reference = n <= 16384;
+        s.Frames = n > 16384 ? 3 : base.Frames;
+        plan.push_back(s);
+      }
+    }
     if (main && !quick && options.LargestLights > 0)
     {
       Step s = base;

@@ -48,9 +48,10 @@ struct Step
   std::string Sweep = "count";      ///< the knob changed from the defaults
   std::string Value;
   int Frames = 10;
-  bool Moving = true;    ///< orbit the camera (the assignment runs every frame)
-  bool Counts = true;    ///< lights evaluated/reaching per pixel (clustered only)
-  bool Reference = true; ///< compare with the exact (brute-force) image
+  bool Moving = true;         ///< orbit the camera (the assignment runs every frame)
+  bool AnimateLights = false; ///< move every light a little each frame (lights change)
+  bool Counts = true;         ///< lights evaluated/reaching per pixel (clustered only)
+  bool Reference = true;      ///< compare with the exact (brute-force) image
   /// Changes the pass's options from the defaults (run after the defaults are set).
   std::function<void(vtkClusteredLightingPass*)> Apply;
   /// Changes the scene or the lights for this step and undoes it afterwards; the exact

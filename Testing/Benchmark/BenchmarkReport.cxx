@@ -24,6 +24,8 @@
 #include <cstdio>
 #include <ctime>
 #include <fstream>
+#include <functional>
+#include <map>
 #include <sstream>
 #include <thread>
 
@@ -31,10 +33,6 @@ namespace ClusteredLightingBenchmark
 {
 namespace
 {
-const char* CSVHeader = "scene,layout,lights,method,sweep,value,frames,ms_median,ms_min,ms_max,"
-                        "assign_ms,shade_ms,first_frame_ms,evaluated_px,reached_px,max_error,"
-                        "rmse,over_one_step,list_mib,master_mib,lights_mib,cutoff,budget,note";
-
 std::string Num(double v, int precision = 4)
 {
   if (std::isnan(v))
@@ -47,6 +45,61 @@ std::string Num(double v, int precision = 4)
   return os.str();
 }
 
+/// One CSV column: its name and how a row fills it.
+struct Column
+{
+  const char* Name;
+  std::function<std::string(const Row&)> Get;
+};
+
+#define CL_NUMBER_COLUMN(name, member)                                                             \
+  Column                                                                                           \
+  {                                                                                                \
+    name, [](const Row& r) { return Num(r.member); }                                               \
+  }
+
+const std::vector<Column>& Columns()
+{
+  static const std::vector<Column> columns = {
+    { "scene", [](const Row& r) { return r.Scene; } },
+    { "layout", [](const Row& r) { return r.Layout; } },
+    { "lights", [](const Row& r) { return std::to_string(r.Lights); } },
+    { "method", [](const Row& r) { return r.Method; } },
+    { "sweep", [](const Row& r) { return r.Sweep; } },
+    { "value", [](const Row& r) { return r.Value; } },
+    { "frames", [](const Row& r) { return std::to_string(r.Frames); } },
+    CL_NUMBER_COLUMN("ms_median", MsMedian),
+    CL_NUMBER_COLUMN("ms_min", MsMin),
+    CL_NUMBER_COLUMN("ms_max", MsMax),
+    CL_NUMBER_COLUMN("assign_ms", AssignMs),
+    CL_NUMBER_COLUMN("light_update_ms", LightUpdateMs),
+    CL_NUMBER_COLUMN("shade_ms", ShadeMs),
+    CL_NUMBER_COLUMN("first_frame_ms", FirstFrameMs),
+    CL_NUMBER_COLUMN("evaluated_px", Evaluated),
+    CL_NUMBER_COLUMN("reached_px", Reached),
+    CL_NUMBER_COLUMN("max_error", MaxError),
+    CL_NUMBER_COLUMN("rmse", RMSE),
+    CL_NUMBER_COLUMN("over_one_step", OverOneStep),
+    CL_NUMBER_COLUMN("list_mib", ListMiB),
+    CL_NUMBER_COLUMN("master_mib", MasterMiB),
+    CL_NUMBER_COLUMN("lights_mib", LightsMiB),
+    CL_NUMBER_COLUMN("cutoff", Cutoff),
+    CL_NUMBER_COLUMN("budget", Budget),
+    { "note", [](const Row& r) { return r.Note; } },
+  };
+  return columns;
+}
+#undef CL_NUMBER_COLUMN
+
+std::string Header()
+{
+  std::string h;
+  for (const Column& c : Columns())
+  {
+    h += (h.empty() ? "" : ",") + std::string(c.Name);
+  }
+  return h;
+}
 } // namespace
 
 //------------------------------------------------------------------------------ plots
@@ -171,16 +224,15 @@ void WritePlots(const std::vector<Row>& rows, const std::string& dir)
 void WriteCSV(const std::vector<Row>& rows, const std::string& path)
 {
   std::ofstream out(path);
-  out << CSVHeader << "\n";
+  out << Header() << "\n";
   for (const Row& r : rows)
   {
-    out << r.Scene << "," << r.Layout << "," << r.Lights << "," << r.Method << "," << r.Sweep << ","
-        << r.Value << "," << r.Frames << "," << Num(r.MsMedian) << "," << Num(r.MsMin) << ","
-        << Num(r.MsMax) << "," << Num(r.AssignMs) << "," << Num(r.ShadeMs) << ","
-        << Num(r.FirstFrameMs) << "," << Num(r.Evaluated) << "," << Num(r.Reached) << ","
-        << Num(r.MaxError) << "," << Num(r.RMSE) << "," << Num(r.OverOneStep) << ","
-        << Num(r.ListMiB) << "," << Num(r.MasterMiB) << "," << Num(r.LightsMiB) << ","
-        << Num(r.Cutoff) << "," << Num(r.Budget) << "," << r.Note << "\n";
+    std::string line;
+    for (const Column& c : Columns())
+    {
+      line += (line.empty() ? "" : ",") + c.Get(r);
+    }
+    out << line << "\n";
   }
 }
 
@@ -252,10 +304,15 @@ int CheckCSV(const std::string& path)
 {
   std::ifstream in(path);
   std::string line;
-  if (!std::getline(in, line) || line != CSVHeader)
+  if (!std::getline(in, line) || line != Header())
   {
     std::printf("check: bad or missing header in %s\n", path.c_str());
     return 1;
+  }
+  std::map<std::string, std::size_t> index;
+  for (std::size_t i = 0; i < Columns().size(); ++i)
+  {
+    index[Columns()[i].Name] = i;
   }
   int failures = 0, rows = 0, clustered = 0, budgets = 0;
   while (std::getline(in, line))
@@ -268,23 +325,27 @@ int CheckCSV(const std::string& path)
     {
       f.push_back(cell);
     }
-    if (f.size() < 23)
+    if (f.size() + 1 < Columns().size()) // an empty note may drop the last field
     {
       std::printf("check: row %d has %zu fields\n", rows, f.size());
       ++failures;
       continue;
     }
-    auto num = [&](int i) { return f[i].empty() ? NAN : std::atof(f[i].c_str()); };
-    const double ms = num(7), maxErr = num(15), budget = num(22);
+    auto num = [&](const char* name)
+    {
+      const std::size_t i = index[name];
+      return i < f.size() && !f[i].empty() ? std::atof(f[i].c_str()) : NAN;
+    };
+    const double ms = num("ms_median"), maxErr = num("max_error"), budget = num("budget");
     if (!(ms > 0.0) || !std::isfinite(ms))
     {
       std::printf("check: row %d has no valid frame time\n", rows);
       ++failures;
     }
-    if (f[3] == "clustered")
+    if (f[index["method"]] == "clustered")
     {
       ++clustered;
-      if (std::isnan(maxErr) || std::isnan(num(13)) || std::isnan(num(18)))
+      if (std::isnan(maxErr) || std::isnan(num("evaluated_px")) || std::isnan(num("list_mib")))
       {
         std::printf("check: clustered row %d lacks error, counts or memory\n", rows);
         ++failures;
@@ -305,4 +366,5 @@ int CheckCSV(const std::string& path)
     clustered, budgets, failures);
   return (failures == 0 && clustered > 0 && budgets > 0) ? 0 : 1;
 }
+
 } // namespace ClusteredLightingBenchmark

@@ -93,7 +93,13 @@ ViewParameters vtkClusteredLightingAssigner::ComputeView(
 bool vtkClusteredLightingAssigner::PreparationKey::operator!=(const PreparationKey& o) const
 {
   return this->Cutoff != o.Cutoff || this->ErrorBudget != o.ErrorBudget ||
-    this->Windowed != o.Windowed || this->MortonOrder != o.MortonOrder;
+    this->Windowed != o.Windowed || this->MortonOrder != o.MortonOrder ||
+    this->FarField.Enabled != o.FarField.Enabled ||
+    this->FarField.CellsPerRadius != o.FarField.CellsPerRadius ||
+    this->FarField.TargetNodes != o.FarField.TargetNodes ||
+    this->FarField.Grouping != o.FarField.Grouping ||
+    this->FarField.NearBudget != o.FarField.NearBudget || this->RegionLo != o.RegionLo ||
+    this->RegionHi != o.RegionHi;
 }
 
 unsigned int vtkClusteredLightingAssigner::ViewKey::CompareWith(const ViewKey& o) const
@@ -172,6 +178,7 @@ void vtkClusteredLightingAssigner::ReleaseGraphicsResources(vtkWindow* win)
   }
   this->LightData.Release(w);
   this->LightView.Release(w);
+  this->FarField.Release(w);
   this->Backend->ReleaseGraphicsResources(w);
   if (push)
   {
@@ -185,7 +192,7 @@ void vtkClusteredLightingAssigner::ReleaseGraphicsResources(vtkWindow* win)
 int vtkClusteredLightingAssigner::GetNumberOfGLObjects() const
 {
   return this->LightData.GetNumberOfGLObjects() + this->LightView.GetNumberOfGLObjects() +
-    this->Backend->GetNumberOfGLObjects();
+    this->FarField.GetNumberOfGLObjects() + this->Backend->GetNumberOfGLObjects();
 }
 
 void vtkClusteredLightingAssigner::GetGLObjectNames(
@@ -193,6 +200,7 @@ void vtkClusteredLightingAssigner::GetGLObjectNames(
 {
   this->LightData.GetGLObjectNames(names);
   this->LightView.GetGLObjectNames(names);
+  this->FarField.GetGLObjectNames(names);
   this->Backend->GetGLObjectNames(names);
 }
 
@@ -229,8 +237,12 @@ const vtkClusteredLightingAssignment& vtkClusteredLightingAssigner::Update(
   {
     r.Reasons |= CL_DIRTY_LIGHTS;
   }
+  this->UpdateRegion(inputs);
   PreparationKey preparation;
   preparation.Cutoff = inputs.Preparation.Cutoff;
+  preparation.FarField = inputs.FarField;
+  preparation.RegionLo = this->RegionLo;
+  preparation.RegionHi = this->RegionHi;
   preparation.ErrorBudget = inputs.ErrorBudget;
   preparation.Windowed = inputs.ErrorBudget > 0.0 && inputs.Windowed; // only the budget uses it
   preparation.MortonOrder = inputs.Preparation.MortonOrder;
@@ -266,7 +278,31 @@ const vtkClusteredLightingAssignment& vtkClusteredLightingAssigner::Update(
     this->LightData.Upload(rw, PackLightData(prepared.Lights));
     this->LightDataUploaded = true;
     r.LightsUploaded = true;
+    // The far field holds what the near radii cut off; it changes with the lights only.
+    r.FarField = false;
+    if (this->FarFieldPlan.Active)
+    {
+      r.FarField = this->FarField.Build(rw, this->FarFieldPlan, prepared.Lights);
+      r.FarFieldBuildTime = this->FarField.GetBuildTime();
+      if (!r.FarField)
+      {
+        r.NewError = "Could not upload the far field (7 RGBA32F 3D textures).";
+      }
+    }
+    else
+    {
+      this->FarField.Release(rw);
+    }
   }
+  r.FarField = r.Enabled && this->FarFieldPlan.Active && this->FarField.GetNumberOfGLObjects() > 0;
+  r.NumberOfFarFieldLights = static_cast<int>(this->FarFieldPlan.NumberOfFarFieldLights);
+  r.FarFieldSpacing = this->FarFieldPlan.Active ? this->FarFieldPlan.Grid.Spacing : 0.0;
+  r.NearRadiusCap = this->FarFieldPlan.Active ? this->FarFieldPlan.NearRadiusCap : 0.0;
+  for (int a = 0; a < 3; ++a)
+  {
+    r.FarFieldDims[a] = this->FarFieldPlan.Active ? this->FarFieldPlan.Grid.Dims[a] : 0;
+  }
+  r.FarFieldBytes = this->FarField.GetBytes();
   if (r.Reasons & (CL_DIRTY_LIGHTS | CL_DIRTY_PREPARATION))
   {
     if (inputs.MeasureTimings)
@@ -306,6 +342,33 @@ const vtkClusteredLightingAssignment& vtkClusteredLightingAssigner::Update(
 }
 
 //------------------------------------------------------------------------------
+// The far field's region follows the geometry but is sticky: it changes only when the
+// geometry leaves it or shrinks to less than half of it on some axis, so that animated
+// geometry does not rebuild the far field every frame. It is grown by 10% when adopted.
+void vtkClusteredLightingAssigner::UpdateRegion(const vtkClusteredLightingAssignerInputs& inputs)
+{
+  const glm::dvec3 lo = inputs.RegionLo, hi = inputs.RegionHi;
+  if (!(lo.x <= hi.x && lo.y <= hi.y && lo.z <= hi.z))
+  {
+    return; // no geometry: keep what we have (or the lights' box, see PlanFarField)
+  }
+  const bool valid = this->RegionLo.x <= this->RegionHi.x;
+  bool keep = valid;
+  for (int a = 0; a < 3 && keep; ++a)
+  {
+    const double current = this->RegionHi[a] - this->RegionLo[a];
+    keep = lo[a] >= this->RegionLo[a] && hi[a] <= this->RegionHi[a] &&
+      (hi[a] - lo[a]) >= 0.5 * current - 1e-12 * std::abs(current);
+  }
+  if (!keep)
+  {
+    const glm::dvec3 grow = 0.05 * (hi - lo);
+    this->RegionLo = lo - grow;
+    this->RegionHi = hi + grow;
+  }
+}
+
+//------------------------------------------------------------------------------
 void vtkClusteredLightingAssigner::PrepareLights(const vtkClusteredLightingAssignerInputs& inputs)
 {
   vtkClusteredLightingLightCollection& lights = *inputs.Lights;
@@ -323,6 +386,9 @@ void vtkClusteredLightingAssigner::PrepareLights(const vtkClusteredLightingAssig
   }
   this->EffectiveCutoff = options.Cutoff;
   this->Prepared = vtkClusteredLighting::PrepareLights(lights.Sources, options, nameOf);
+  // Near radii and the far field's grid (caps the culling radii of far-field lights).
+  this->FarFieldPlan =
+    PlanFarField(this->Prepared.Lights, this->RegionLo, this->RegionHi, inputs.FarField);
   // Report each problem once: a bad light stays reported while it stays bad, even when
   // other lights change every frame.
   std::set<std::string> problems(this->Prepared.Problems.begin(), this->Prepared.Problems.end());
@@ -417,6 +483,20 @@ void vtkClusteredLightingAssigner::Assign(
   r.NumberOfQuads = data.NumberOfQuads;
   r.NumberOfAssigned = data.NumberOfAssignedLights;
   r.Shading = ComputeShadingParameters(inputs.View, this->Layout);
+  if (this->FarFieldPlan.Active)
+  {
+    const glm::dmat4 fromVC =
+      ComputeFarFieldTextureFromVC(this->FarFieldPlan.Grid, inputs.View.WCVC);
+    const glm::dmat3 worldFromVC = glm::inverse(glm::dmat3(inputs.View.WCVC));
+    for (int i = 0; i < 16; ++i)
+    {
+      r.FarFieldFromVC[i] = static_cast<float>((&fromVC[0][0])[i]);
+    }
+    for (int i = 0; i < 9; ++i)
+    {
+      r.WorldFromVC[i] = static_cast<float>((&worldFromVC[0][0])[i]);
+    }
+  }
   r.Reassigned = true;
   this->AssignmentValid = ok;
 }
@@ -436,6 +516,11 @@ void vtkClusteredLightingAssigner::ActivateShading()
   {
     this->Backend->ActivateShadingTextures();
   }
+  if (r.FarField && r.Clustered)
+  {
+    this->FarField.Activate();
+    r.FarFieldUnits = this->FarField.GetUnits();
+  }
   r.LightDataUnit =
     this->LightData.GetTexture() ? this->LightData.GetTexture()->GetTextureUnit() : -1;
   r.LightViewUnit =
@@ -454,8 +539,23 @@ void vtkClusteredLightingAssigner::DeactivateShading()
     }
   }
   this->Backend->DeactivateShadingTextures();
+  this->FarField.Deactivate();
   vtkClusteredLightingAssignment& r = this->Result;
+  r.FarFieldUnits.fill(-1);
   r.LightDataUnit = r.LightViewUnit = r.ListUnit = r.MasterUnit = -1;
+}
+
+//------------------------------------------------------------------------------
+vtkClusteredLighting::FarFieldBoundSummary
+vtkClusteredLightingAssigner::SummarizeFarFieldErrorBound() const
+{
+  if (!this->Result.FarField)
+  {
+    return vtkClusteredLighting::FarFieldBoundSummary();
+  }
+  return vtkClusteredLighting::SummarizeFarFieldErrorBound(
+    vtkClusteredLighting::FarFieldBuildInputs{ &this->FarFieldPlan.Grid, &this->Prepared.Lights,
+      &this->FarField.GetNearRadii(), &this->FarField.GetTree(), this->FarFieldPlan.Grouping });
 }
 
 //------------------------------------------------------------------------------
@@ -469,6 +569,7 @@ vtkClusteredLightingAssignmentSnapshot vtkClusteredLightingAssigner::GetSnapshot
   f.Layout = this->Layout;
   f.Lights = this->Prepared.Lights;
   f.NumberOfQuads = this->Result.NumberOfQuads;
+  f.FarField = this->Result.FarField ? this->FarFieldPlan : vtkClusteredLighting::FarFieldPlan();
   return f;
 }
 

@@ -42,12 +42,14 @@
 #ifndef vtkClusteredLightingAssigner_h
 #define vtkClusteredLightingAssigner_h
 
-#include "vtkClusteredLightingAssignment.h" // for ViewParameters, ShadingParameters
-#include "vtkClusteredLightingGLHelpers.h"  // for vtkClusteredLightingTextureBuffer
-#include "vtkClusteredLightingLayout.h"     // for ClusterTextureLayout
-#include "vtkClusteredLightingLights.h"     // for PreparedLights
-#include "vtkOpenGLRenderWindow.h"          // for vtkWeakPointer<vtkOpenGLRenderWindow>
-#include "vtkWeakPointer.h"                 // for vtkWeakPointer
+#include "vtkClusteredLightingAssignment.h"       // for ViewParameters, ShadingParameters
+#include "vtkClusteredLightingFarFieldBound.h"    // for FarFieldOptions, FarFieldPlan, the bound
+#include "vtkClusteredLightingFarFieldTextures.h" // for vtkClusteredLightingFarFieldTextures
+#include "vtkClusteredLightingGLHelpers.h"        // for vtkClusteredLightingTextureBuffer
+#include "vtkClusteredLightingLayout.h"           // for ClusterTextureLayout
+#include "vtkClusteredLightingLights.h"           // for PreparedLights
+#include "vtkOpenGLRenderWindow.h"                // for vtkWeakPointer<vtkOpenGLRenderWindow>
+#include "vtkWeakPointer.h"                       // for vtkWeakPointer
 
 #include <cstdint> // for std::uint64_t
 #include <memory>  // for std::unique_ptr
@@ -63,7 +65,7 @@ struct vtkClusteredLightingLightCollection;
 enum vtkClusteredLightingDirtyReason : unsigned int
 {
   CL_DIRTY_LIGHTS = 1u << 0,      ///< a light source was added, removed or modified
-  CL_DIRTY_PREPARATION = 1u << 1, ///< cutoff, error budget or Morton order changed
+  CL_DIRTY_PREPARATION = 1u << 1, ///< cutoff, error budget, Morton order or far field changed
   CL_DIRTY_VIEW = 1u << 2,        ///< the camera matrices changed
   CL_DIRTY_GRID = 1u << 3,        ///< tiles, slices, viewport, depth range or slicing changed
   CL_DIRTY_MODE = 1u << 4,        ///< shading mode, bounds method or per-cluster culling changed
@@ -91,6 +93,9 @@ struct vtkClusteredLightingAssignerInputs
   vtkClusteredLighting::LightPreparationOptions Preparation;
   double ErrorBudget = 0.0; ///< > 0: choose the cutoff for it (Preparation.Cutoff ignored)
   bool Windowed = false;    ///< windowed falloff (the error budget accounts for it)
+  vtkClusteredLighting::FarFieldOptions FarField;
+  /// World box of the geometry to shade (the far field's region; invalid: the lights' box).
+  glm::dvec3 RegionLo = glm::dvec3(1.0), RegionHi = glm::dvec3(-1.0);
   vtkClusteredLighting::ViewParameters View; ///< see vtkClusteredLightingAssigner::ComputeView
   bool Clustered = true;                     ///< false: brute force (no list and master passes)
   bool PerClusterCulling = true;
@@ -119,7 +124,20 @@ struct vtkClusteredLightingAssignment
   int NumberOfQuads = 0;
   double EffectiveCutoff = 1.0 / 1024.0;
   double AssignmentTime = 0.0;  ///< ms, when Reassigned
-  double LightUpdateTime = 0.0; ///< ms: reading, preparing and uploading changed lights
+  double LightUpdateTime = 0.0; ///< ms: reading, preparing and uploading changed lights,
+                                ///< building the far field included
+
+  // The far field (Rendering/Core/vtkClusteredLightingFarField.h).
+  bool FarField = false; ///< lights have far parts: the shading code adds the far field
+  int NumberOfFarFieldLights = 0;
+  double FarFieldBuildTime = 0.0; ///< ms, the last build
+  double FarFieldSpacing = 0.0;   ///< grid spacing h (world units)
+  double NearRadiusCap = 0.0;     ///< near radius of bright and always-on lights
+  int FarFieldDims[3] = { 0, 0, 0 };
+  std::uint64_t FarFieldBytes = 0;
+  float FarFieldFromVC[16] = { 0 }; ///< VC -> far-field texture coordinates (column-major)
+  float WorldFromVC[9] = { 0 };     ///< VC -> world directions (column-major)
+  std::array<int, vtkClusteredLighting::FarFieldTextures> FarFieldUnits{}; ///< while bound
   std::uint64_t ListBytes = 0, MasterBytes = 0, LightBufferBytes = 0;
 
   // Messages new in this update (each problem is reported once while it persists).
@@ -142,6 +160,7 @@ struct vtkClusteredLightingAssignmentSnapshot
   vtkClusteredLighting::ClusterTextureLayout Layout;
   std::vector<vtkClusteredLighting::PreparedLight> Lights; ///< upload order, world coords
   int NumberOfQuads = 0;
+  vtkClusteredLighting::FarFieldPlan FarField; ///< Active when the far field is shaded
 };
 
 class vtkClusteredLightingAssigner
@@ -164,6 +183,11 @@ public:
 
   /// The result of the last update.
   const vtkClusteredLightingAssignment& GetResult() const { return this->Result; }
+
+  /// The far field's stated error bound over probe points (SummarizeFarFieldErrorBound,
+  /// Rendering/Core/vtkClusteredLightingFarFieldBound.h) for the last build; zeros without
+  /// a far field. CPU only; its cost grows with the number of lights.
+  vtkClusteredLighting::FarFieldBoundSummary SummarizeFarFieldErrorBound() const;
 
   ///@{
   /// Bind the light records (and, clustered, list and master) for the shading pass and
@@ -197,6 +221,8 @@ private:
   {
     double Cutoff = 0.0, ErrorBudget = 0.0;
     bool Windowed = false, MortonOrder = true;
+    vtkClusteredLighting::FarFieldOptions FarField;
+    glm::dvec3 RegionLo = glm::dvec3(0.0), RegionHi = glm::dvec3(0.0);
     bool operator!=(const PreparationKey& o) const;
   };
   /// Everything a view assignment depends on, as a comparable value.
@@ -212,6 +238,7 @@ private:
   void SetWindow(vtkOpenGLRenderWindow* rw);
   void OnWindowDeleted();
   void PrepareLights(const vtkClusteredLightingAssignerInputs& inputs);
+  void UpdateRegion(const vtkClusteredLightingAssignerInputs& inputs);
   bool CheckLimits(vtkOpenGLRenderWindow* rw, const vtkClusteredLightingAssignerInputs& inputs);
   void Assign(vtkOpenGLRenderWindow* rw, const vtkClusteredLightingAssignerInputs& inputs);
 
@@ -236,6 +263,9 @@ private:
 
   vtkClusteredLightingTextureBuffer LightData;
   vtkClusteredLightingTextureBuffer LightView;
+  vtkClusteredLighting::FarFieldPlan FarFieldPlan;
+  vtkClusteredLightingFarFieldTextures FarField;
+  glm::dvec3 RegionLo = glm::dvec3(1.0), RegionHi = glm::dvec3(-1.0); ///< the far field's
   std::unique_ptr<vtkClusteredLightingAssignmentBackend> Backend;
 
   vtkClusteredLightingAssignment Result;

@@ -73,6 +73,8 @@ vtkClusteredLightingShaderVariant::Debug ToVariantDebug(int view)
       return Debug::ReachedCount;
     case vtkClusteredLightingPass::DEBUG_NON_FINITE:
       return Debug::NonFinite;
+    case vtkClusteredLightingPass::DEBUG_NORMAL:
+      return Debug::Normal;
     default:
       return Debug::None;
   }
@@ -316,6 +318,15 @@ vtkClusteredLightingAssignerInputs vtkClusteredLightingPass::MakeAssignerInputs(
   in.Preparation.MortonOrder = this->MortonOrder;
   in.ErrorBudget = this->ErrorBudget;
   in.Windowed = this->Falloff == FALLOFF_WINDOWED;
+  in.FarField.Enabled = this->FarField;
+  in.FarField.TargetNodes = this->FarFieldResolution;
+  in.FarField.CellsPerRadius = this->FarFieldCellsPerRadius;
+  in.FarField.Grouping = this->FarFieldGrouping;
+  in.FarField.NearBudget = this->NearFieldBudget;
+  double bounds[6];
+  ren->ComputeVisiblePropBounds(bounds);
+  in.RegionLo = glm::dvec3(bounds[0], bounds[2], bounds[4]);
+  in.RegionHi = glm::dvec3(bounds[1], bounds[3], bounds[5]);
   vtkClusteredLightingGridOptions grid;
   grid.TilesX = this->TilesX;
   grid.TilesY = this->TilesY;
@@ -356,6 +367,15 @@ void vtkClusteredLightingPass::ReportAssignment(const vtkClusteredLightingAssign
   this->NumberOfAssignedLights = r.NumberOfAssigned;
   this->NumberOfLightUploads += r.LightsUploaded ? 1 : 0;
   this->LastLightUpdateTime = r.LightUpdateTime;
+  this->NumberOfFarFieldLights = r.FarField ? r.NumberOfFarFieldLights : 0;
+  this->LastFarFieldBuildTime = r.FarFieldBuildTime;
+  this->FarFieldGridSpacing = r.FarField ? r.FarFieldSpacing : 0.0;
+  this->NearRadiusCap = r.FarField ? r.NearRadiusCap : 0.0;
+  for (int a = 0; a < 3; ++a)
+  {
+    this->FarFieldDimensions[a] = r.FarField ? r.FarFieldDims[a] : 0;
+  }
+  this->FarFieldTextureBytes = r.FarFieldBytes;
   if (r.Reassigned)
   {
     this->LastAssignmentTime = r.AssignmentTime;
@@ -377,6 +397,7 @@ void vtkClusteredLightingPass::UpdateShaderVariant(const vtkClusteredLightingAss
   variant.Spot = r.NumberOfSpots > 0;
   variant.Window = this->Falloff == FALLOFF_WINDOWED;
   variant.Explicit = r.NumberOfExplicitRadius > 0;
+  variant.FarField = r.FarField;
   variant.LinearSlices = r.Linear;
   variant.MasterTexels = r.MasterTexels;
   variant.DebugView = ToVariantDebug(this->DebugView);
@@ -557,6 +578,32 @@ bool vtkClusteredLightingPass::SetShaderParameters(
   {
     program->SetUniform4f("clSlicing", r.Shading.Slicing);
   }
+  if (r.FarField)
+  {
+    static const char* const farFieldSamplers[vtkClusteredLighting::FarFieldTextures] = {
+      "clFarField0", "clFarField1", "clFarField2", "clFarField3", "clFarField4", "clFarField5",
+      "clFarField6"
+    };
+    for (int q = 0; q < vtkClusteredLighting::FarFieldTextures; ++q)
+    {
+      if (program->IsUniformUsed(farFieldSamplers[q]))
+      {
+        program->SetUniformi(farFieldSamplers[q], r.FarFieldUnits[static_cast<std::size_t>(q)]);
+      }
+    }
+    if (program->IsUniformUsed("clFarFieldFromVC"))
+    {
+      program->SetUniformMatrix4x4("clFarFieldFromVC", const_cast<float*>(r.FarFieldFromVC));
+    }
+    if (program->IsUniformUsed("clWorldFromVC"))
+    {
+      program->SetUniformMatrix3x3("clWorldFromVC", const_cast<float*>(r.WorldFromVC));
+    }
+    if (program->IsUniformUsed("clFarFieldTolerance"))
+    {
+      program->SetUniformf("clFarFieldTolerance", static_cast<float>(this->FarFieldTolerance));
+    }
+  }
   if (program->IsUniformUsed("clLightCount"))
   {
     program->SetUniformi("clLightCount", r.NumberOfLights);
@@ -566,6 +613,17 @@ bool vtkClusteredLightingPass::SetShaderParameters(
     program->SetUniformf("clHeatMapMaximum", static_cast<float>(this->HeatMapMaximum));
   }
   return true;
+}
+
+//------------------------------------------------------------------------------
+double vtkClusteredLightingPass::ComputeFarFieldErrorBound()
+{
+  double bound = 0.0;
+  for (vtkClusteredLightingAssigner* assigner : this->GetAssigners())
+  {
+    bound = std::max(bound, assigner->SummarizeFarFieldErrorBound().Max);
+  }
+  return bound;
 }
 
 //------------------------------------------------------------------------------
@@ -607,6 +665,15 @@ void vtkClusteredLightingPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "PerClusterCulling: " << this->PerClusterCulling << "\n";
   os << indent << "MaximumTextureSize: " << this->MaximumTextureSize << "\n";
   os << indent << "MeasureTimings: " << this->MeasureTimings << "\n";
+  os << indent << "FarField: " << this->FarField << "\n";
+  os << indent << "FarFieldResolution: " << this->FarFieldResolution << "\n";
+  os << indent << "FarFieldCellsPerRadius: " << this->FarFieldCellsPerRadius << "\n";
+  os << indent << "FarFieldTolerance: " << this->FarFieldTolerance << "\n";
+  os << indent << "FarFieldGrouping: " << this->FarFieldGrouping << "\n";
+  os << indent << "NearFieldBudget: " << this->NearFieldBudget << "\n";
   os << indent << "NumberOfClusteredLights: " << this->NumberOfClusteredLights << "\n";
+  os << indent << "NumberOfFarFieldLights: " << this->NumberOfFarFieldLights << "\n";
+  os << indent << "NearRadiusCap: " << this->NearRadiusCap << "\n";
+  os << indent << "FarFieldGridSpacing: " << this->FarFieldGridSpacing << "\n";
   os << indent << "NumberOfAssignedLights: " << this->NumberOfAssignedLights << "\n";
 }

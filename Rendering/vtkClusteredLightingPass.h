@@ -193,6 +193,85 @@ public:
   vtkGetMacro(Falloff, int);
   ///@}
 
+  ///@{
+  /**
+   * Far field: what each light's near radius cuts off is added back, not dropped. Every
+   * light without an explicit radius (VTK's inverse-square lights, always-on lights with
+   * attenuation (1, 0, 0), ...), except spot lights, is split smoothly at its near radius:
+   * the near part is evaluated exactly through the clusters, the far part is summed on a
+   * world-space grid over the visible geometry (order-2 moments of its directions per node)
+   * and added to every fragment by trilinear interpolation, diffuse and Phong specular.
+   * Rebuilt only when the lights change (or the geometry leaves the grid's box), never
+   * for a moving camera. The error has a stated per-pixel bound (docs/far-field.md).
+   * Off: such lights are cut at their cutoff radius (darker than VTK, see Cutoff).
+   * Default is on.
+   */
+  vtkSetMacro(FarField, bool);
+  vtkGetMacro(FarField, bool);
+  vtkBooleanMacro(FarField, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Resolution of the far field: the number of grid nodes over the bounding box of the
+   * visible geometry (108 bytes of GPU memory each). The grid spacing h follows, and the
+   * near radius of bright and always-on lights is FarFieldCellsPerRadius * h: more nodes
+   * mean smaller near radii, fewer lights evaluated per fragment, longer far-field builds.
+   * Range [512, 16777216]. Default is 32768.
+   */
+  vtkSetClampMacro(FarFieldResolution, int, 512, 16777216);
+  vtkGetMacro(FarFieldResolution, int);
+  ///@}
+
+  ///@{
+  /**
+   * Advanced: grid cells per near radius (the far field's accuracy: its error was found
+   * flat from 2 cells per near radius on, docs/far-field.md). Range [1, 8]. Default is 2.
+   */
+  vtkSetClampMacro(FarFieldCellsPerRadius, double, 1.0, 8.0);
+  vtkGetMacro(FarFieldCellsPerRadius, double);
+  ///@}
+
+  ///@{
+  /**
+   * Advanced: how uncertain (in [0, 1] colour units) the far field may leave a fragment
+   * near saturation. The node moments prove an interval the far light's true contribution
+   * lies in; where that interval is wider than this and decides whether the fragment
+   * saturates (its lowest value is below 1, its highest above), the far parts are summed
+   * exactly, light by light. Bright far fields (lights that light the whole scene) need
+   * it on a few fragments; faint ones never. PBR actors (tone-mapped) use the width
+   * alone. 1 turns it off. Range [0, 1]. Default is 2/255.
+   */
+  vtkSetClampMacro(FarFieldTolerance, double, 0.0, 1.0);
+  vtkGetMacro(FarFieldTolerance, double);
+  ///@}
+
+  ///@{
+  /**
+   * Advanced: how the far field's build groups lights (Barnes-Hut). A group of lights
+   * seen from far enough is summed as one light at its centroid when its extent is below
+   * this fraction of its distance (relative error about its square); 0 sums every light
+   * at every node (exact, slow). The error it makes is inside the stated bound
+   * (ComputeFarFieldErrorBound), which grows a little with it. Range [0, 1]. Default is 1.
+   */
+  vtkSetClampMacro(FarFieldGrouping, double, 0.0, 1.0);
+  vtkGetMacro(FarFieldGrouping, double);
+  ///@}
+
+  ///@{
+  /**
+   * Advanced: how many lights per point, on average over the box of the visible geometry,
+   * the near field may evaluate exactly (a light counts at most once per point). When all
+   * lights fit whole (say, up to 16 vtkLights that reach everywhere) there is no far field;
+   * otherwise the lights with the largest radii are cut to one radius R that fills the
+   * budget (a few bright lights among many keep exact highlights); past it
+   * every light's near radius is FarFieldCellsPerRadius grid cells and the far field
+   * carries the rest. Range [0, 1e6]. Default is 16.
+   */
+  vtkSetClampMacro(NearFieldBudget, double, 0.0, 1e6);
+  vtkGetMacro(NearFieldBudget, double);
+  ///@}
+
   enum ShadingModes
   {
     SHADING_CLUSTERED = 0,  ///< walk the fragment's cluster lists
@@ -214,14 +293,15 @@ public:
     DEBUG_HEAT_MAP = 2,        ///< lights evaluated per pixel, colour map up to HeatMapMaximum
     DEBUG_EVALUATED_COUNT = 3, ///< lights evaluated (R + 256 G), lights reaching (B, saturates)
     DEBUG_REACHED_COUNT = 4,   ///< lights that reach the fragment (R + 256 G)
-    DEBUG_NON_FINITE = 5       ///< red where the lit colour is NaN or Inf
+    DEBUG_NON_FINITE = 5,      ///< red where the lit colour is NaN or Inf
+    DEBUG_NORMAL = 6           ///< the shading normal (view coordinates) as 0.5 + 0.5 N
   };
   ///@{
   /**
    * Debug view replacing the shaded colour of lit surfaces (compiled in only when set).
    * Default is DEBUG_NONE.
    */
-  vtkSetClampMacro(DebugView, int, DEBUG_NONE, DEBUG_NON_FINITE);
+  vtkSetClampMacro(DebugView, int, DEBUG_NONE, DEBUG_NORMAL);
   vtkGetMacro(DebugView, int);
   ///@}
 
@@ -299,12 +379,29 @@ public:
   vtkGetMacro(NumberOfAlwaysOnLights, int);    ///< lights that never fall off
   vtkGetMacro(NumberOfLightsBelowCutoff, int); ///< below the cutoff everywhere
   vtkGetMacro(NumberOfSpotLights, int);
-  vtkGetMacro(NumberOfAssignedLights, int); ///< lights drawn in the list pass (visible)
-  vtkGetMacro(LastAssignmentTime, double);  ///< ms, view records + list + master passes
-  vtkGetMacro(LastLightUpdateTime, double); ///< ms, reading, preparing and uploading lights
-  vtkGetMacro(LastShadingTime, double);     ///< ms, delegate render (MeasureTimings)
+  vtkGetMacro(NumberOfAssignedLights, int);    ///< lights drawn in the list pass (visible)
+  vtkGetMacro(LastAssignmentTime, double);     ///< ms, view records + list + master passes
+  vtkGetMacro(LastLightUpdateTime, double);    ///< ms, reading, preparing and uploading lights
+  vtkGetMacro(LastShadingTime, double);        ///< ms, delegate render (MeasureTimings)
+  vtkGetMacro(NumberOfFarFieldLights, int);    ///< lights split into near and far parts
+  vtkGetMacro(LastFarFieldBuildTime, double);  ///< ms, the last far-field build
+  vtkGetMacro(FarFieldGridSpacing, double);    ///< world units, 0 without a far field
+  vtkGetMacro(NearRadiusCap, double);          ///< near radius of bright and always-on lights
+  vtkGetVector3Macro(FarFieldDimensions, int); ///< nodes per axis
+  vtkGetMacro(FarFieldTextureBytes, vtkTypeUInt64);
   vtkGetMacro(LastAssignmentUpdated, bool); ///< whether the last render reassigned lights
   ///@}
+
+  /**
+   * The far field's stated error bound (docs/far-field.md) for the last frame's lights, in
+   * 8-bit steps of a white, fully diffuse surface: the largest over probe points spread
+   * through the far field's region (each with the 6 axis normals) and over the renderers
+   * the pass renders. Computed on request on the CPU (milliseconds for thousands of
+   * lights, about a second for 500,000), never during a render. 0 without a far field.
+   * The bound at a pixel depends on its position, normal and material; the tests check it
+   * pixel by pixel against brute force.
+   */
+  double ComputeFarFieldErrorBound();
 
   ///@{
   /**
@@ -373,6 +470,12 @@ protected:
   bool PerClusterCulling = true;
   int MaximumTextureSize = 0;
   bool MeasureTimings = false;
+  bool FarField = true;
+  int FarFieldResolution = 32768;
+  double FarFieldCellsPerRadius = 2.0;
+  double FarFieldTolerance = 2.0 / 255.0;
+  double FarFieldGrouping = 1.0;
+  double NearFieldBudget = 16.0;
 
   int NumberOfClusteredLights = 0;
   int NumberOfRejectedLights = 0;
@@ -382,6 +485,12 @@ protected:
   int NumberOfAssignedLights = 0;
   double LastAssignmentTime = 0.0;
   double LastLightUpdateTime = 0.0;
+  int NumberOfFarFieldLights = 0;
+  double LastFarFieldBuildTime = 0.0;
+  double FarFieldGridSpacing = 0.0;
+  double NearRadiusCap = 0.0;
+  int FarFieldDimensions[3] = { 0, 0, 0 };
+  vtkTypeUInt64 FarFieldTextureBytes = 0;
   double LastShadingTime = 0.0;
   bool LastAssignmentUpdated = false;
   int NumberOfLightUploads = 0;

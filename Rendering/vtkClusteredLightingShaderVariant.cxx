@@ -14,7 +14,7 @@ bool vtkClusteredLightingShaderVariant::SameGlobalPart(
   const vtkClusteredLightingShaderVariant& o) const
 {
   return this->Enabled == o.Enabled && this->Clustered == o.Clustered && this->Spot == o.Spot &&
-    this->Window == o.Window && this->Explicit == o.Explicit &&
+    this->Window == o.Window && this->Explicit == o.Explicit && this->FarField == o.FarField &&
     this->LinearSlices == o.LinearSlices && this->MasterTexels == o.MasterTexels &&
     this->DebugView == o.DebugView;
 }
@@ -30,6 +30,10 @@ std::set<std::string> vtkClusteredLightingShaderVariant::GetFlags() const
     if (this->LinearSlices)
     {
       f.insert("LINEAR_SLICES");
+    }
+    if (this->FarField)
+    {
+      f.insert("FAR_FIELD");
     }
   }
   // The light model: brute force stops at explicit radii and windows only there.
@@ -77,6 +81,9 @@ std::set<std::string> vtkClusteredLightingShaderVariant::GetFlags() const
       break;
     case Debug::NonFinite:
       f.insert("NON_FINITE");
+      break;
+    case Debug::Normal:
+      f.insert("NORMAL");
       break;
     case Debug::None:
       break;

@@ -13,8 +13,9 @@
  * Flags: CLUSTERED or BRUTE_FORCE, CUTOFF (the culling-radius test, clustered only),
  * MODEL_RADIUS (the explicit radius of the light model is read: brute force stops there,
  * windows end there), VIEW1 (the second view texel is read: spot axis, explicit radius),
- * PHONG or PBR, SPECULAR, SPOT, WINDOW, LINEAR_SLICES, COUNT, CLUSTER_INDEX, HEAT_MAP,
- * EVALUATED_COUNT, REACHED_COUNT, NON_FINITE.
+ * FAR_FIELD (clustered only: split lights' near parts are windowed and the far field is
+ * added), PHONG or PBR, SPECULAR, SPOT, WINDOW, LINEAR_SLICES, COUNT, CLUSTER_INDEX, HEAT_MAP,
+ * EVALUATED_COUNT, REACHED_COUNT, NON_FINITE, NORMAL.
  *
  * Brute force evaluates the same light model as clustered shading (explicit radius,
  * windowed falloff, spot cone) and differs only in not culling: lights without an explicit
@@ -35,6 +36,7 @@ public:
   bool Spot = false;
   bool Window = false;   ///< windowed falloff (FALLOFF_WINDOWED)
   bool Explicit = false; ///< some light has an explicit radius (its model's range)
+  bool FarField = false; ///< lights have far parts: window their near parts, add the far field
   bool LinearSlices = false;
   int MasterTexels = 1;
 
@@ -46,7 +48,8 @@ public:
     HeatMap,
     EvaluatedCount,
     ReachedCount,
-    NonFinite
+    NonFinite,
+    Normal
   };
   Debug DebugView = Debug::None;
 

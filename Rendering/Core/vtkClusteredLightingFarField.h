@@ -29,7 +29,7 @@
  *   E(N) = S/4 + (V.N)/2 + (5/16) (3 N^T T N - S) / 2
  *
  * and Phong specular, sum g_j max(0, L_j.R)^n for the reflected view direction R, uses the
- * Legendre coefficients of max(0, t)^n the same way (ComputeSpecularKernel). A node's
+ * Legendre coefficients of max(0, t)^n the same way (ComputeLobeKernel). A node's
  * moments are interpolated trilinearly to the shaded point, then the kernels are applied.
  *
  * What the far field holds. Lights without an explicit radius (VTK's inverse-square and
@@ -38,13 +38,13 @@
  * is cut. Spot lights are left out as well (their hard cone edge does not interpolate);
  * they are cut at their cutoff radius as before, with the per-light bound of the cutoff.
  *
- * Error. Three sources, each bounded in the accompanying functions and checked per pixel
- * against brute force by the tests: the angular truncation (order 2 of the kernel: the
- * pointwise error of the diffuse kernel lies in [-0.040, +0.094] per unit g, far less when
- * the far light comes from many directions), the trilinear interpolation between nodes
- * (it grows as (h / r)^2 for grid spacing h and near radius r), and, for a grid built with
- * a light hierarchy, the aggregation of far groups (relative error below (s / D)^2 for a
- * group of size s seen from distance D).
+ * Error. Three sources: the angular truncation (order 2 of the kernel: the pointwise
+ * error of the diffuse kernel lies in [-0.040, +0.094] per unit g, far less when the far
+ * light comes from many directions), the trilinear interpolation between nodes (it grows
+ * as (h / r)^2 for grid spacing h and near radius r), and the aggregation of far groups of
+ * lights in the build (vtkClusteredLightingFarFieldTree.h). Their stated bound, computed
+ * per shaded point, is in vtkClusteredLightingFarFieldBound.h; the tests check it per
+ * pixel against brute force.
  *
  * Units: world coordinates. Everything here is double precision on the CPU; the GPU gets
  * the node moments as floats.
@@ -59,7 +59,9 @@
 #include <cmath>     // for std::floor
 #include <cstdint>   // for std::int64_t
 #include <glm/glm.hpp>
-#include <vector> // for std::vector
+#include <glm/gtc/constants.hpp> // for glm::pi
+#include <limits>                // for std::numeric_limits
+#include <vector>                // for std::vector
 
 namespace vtkClusteredLighting
 {
@@ -119,6 +121,27 @@ struct FarFieldGrid
   }
 };
 
+/// Options of the far field (vtkClusteredLightingPass's FarField* options).
+struct FarFieldOptions
+{
+  bool Enabled = true;
+  double CellsPerRadius = 2.0;      ///< grid cells per near radius (accuracy of the grid)
+  std::int64_t TargetNodes = 32768; ///< nodes over the region (the grid's resolution)
+  double Grouping = 1.0;    ///< light-tree aggregation: extent / distance below it (0: exact)
+  double NearBudget = 16.0; ///< lights per point the near field may evaluate, on average
+};
+
+/// What PlanFarField decided.
+struct FarFieldPlan
+{
+  bool Active = false; ///< some light has a far part
+  FarFieldGrid Grid;
+  double NearRadiusCap = std::numeric_limits<double>::infinity(); ///< see PlanFarField
+  std::size_t NumberOfFarFieldLights = 0;
+  double Grouping = 1.0;           ///< FarFieldOptions::Grouping
+  double NearLightsPerPoint = 0.0; ///< estimated mean near lights per point of the region
+};
+
 /**
  * A grid of at most maxNodes nodes with spacing at most `spacing` covering the box [lo,
  * hi] (grown by one node on every side, so trilinear interpolation never reads outside).
@@ -141,14 +164,168 @@ inline FarFieldGrid ComputeFarFieldGrid(
     {
       break;
     }
-    h *= std::cbrt(static_cast<double>(g.GetNumberOfNodes()) / maxNodes) * 1.0001;
+    h *=
+      std::cbrt(static_cast<double>(g.GetNumberOfNodes()) / static_cast<double>(maxNodes)) * 1.0001;
   }
   g.Spacing = h;
   const glm::dvec3 center = 0.5 * (lo + hi);
-  const glm::dvec3 half =
-    0.5 * h * glm::dvec3(g.Dims[0] - 1, g.Dims[1] - 1, g.Dims[2] - 1);
+  const glm::dvec3 half = 0.5 * h * glm::dvec3(g.Dims[0] - 1, g.Dims[1] - 1, g.Dims[2] - 1);
   g.Origin = center - half;
   return g;
+}
+
+/**
+ * Decides the far field for a set of prepared lights and a region (the world box of the
+ * geometry to be shaded). The grid comes first: its spacing h gives `TargetNodes` nodes
+ * over the region (each axis counted at least 1/16 of the longest, so that flat regions
+ * keep a sensible spacing). Then every far-field light (IsFarFieldLight: no explicit
+ * radius, not a spot) gets its near radius:
+ *
+ *   r_j = min(cutoff radius_j, max(CellsPerRadius * h, R))
+ *
+ * CellsPerRadius * h is the smallest near radius the grid resolves (the study,
+ * docs/far-field.md, found the error flat once h <= r / 2). R shares out the near field's
+ * budget: the largest radius for which the lights' near spheres hold, on average over the
+ * region, at most NearBudget lights per point (sum_j 4/3 pi r_j^3 <= NearBudget x region
+ * volume, a light counting at most the region's volume). When all lights fit, every one
+ * keeps its cutoff radius and the far field holds only the tails past it (none for a
+ * light whose sphere holds the whole region: a handful of vtkLights need no far field at
+ * all). Otherwise a few bright lights among many keep theirs, highlights included, while
+ * thousands get the grid's radius and leave their tails to the far field. Always-on
+ * lights have no cutoff radius: they get max(CellsPerRadius * h, R) (or keep it when all
+ * fit). Lights below the cutoff everywhere (radius 0) go to the far field whole. Their
+ * PreparedLight::Radius (the culling radius) becomes the near radius and
+ * PreparedLight::FarField is set. Does nothing when disabled, when no light qualifies or
+ * when every qualifying light's sphere holds the whole region within the budget.
+ */
+inline FarFieldPlan PlanFarField(
+  std::vector<PreparedLight>& lights, glm::dvec3 lo, glm::dvec3 hi, const FarFieldOptions& options)
+{
+  FarFieldPlan plan;
+  for (const PreparedLight& l : lights)
+  {
+    plan.NumberOfFarFieldLights += IsFarFieldLight(l) ? 1 : 0;
+  }
+  if (!options.Enabled || plan.NumberOfFarFieldLights == 0)
+  {
+    plan.NumberOfFarFieldLights = 0;
+    return plan;
+  }
+  if (!(lo.x <= hi.x && lo.y <= hi.y && lo.z <= hi.z) || !std::isfinite(lo.x + lo.y + lo.z) ||
+    !std::isfinite(hi.x + hi.y + hi.z))
+  {
+    // No usable region: the lights' own box.
+    lo = glm::dvec3(std::numeric_limits<double>::max());
+    hi = -lo;
+    for (const PreparedLight& l : lights)
+    {
+      lo = glm::min(lo, l.PositionWC);
+      hi = glm::max(hi, l.PositionWC);
+    }
+  }
+  const glm::dvec3 size = hi - lo;
+  const double longest = std::max(size.x, std::max(size.y, size.z));
+  if (!(longest > 0.0) || !std::isfinite(longest))
+  {
+    plan.NumberOfFarFieldLights = 0;
+    return plan;
+  }
+  const glm::dvec3 counted = glm::max(size, glm::dvec3(longest / 16.0));
+  const std::int64_t target = std::max<std::int64_t>(options.TargetNodes, 64);
+  const double h = std::cbrt(counted.x * counted.y * counted.z / static_cast<double>(target));
+  plan.Grid = ComputeFarFieldGrid(lo, hi, h, 8 * target);
+  const double smallest = std::max(options.CellsPerRadius, 1.0) * plan.Grid.Spacing;
+  plan.Grouping = std::max(options.Grouping, 0.0);
+  plan.Active = true;
+
+  // The near field's budget: sum_j min(rc_j, max(smallest, R))^3 <= budget, R by bisection
+  // (the sum grows with R). One light counts at most the region's volume (a sphere larger
+  // than the region covers each of its points once). When every light fits whole (at most
+  // NearBudget lights reaching everywhere, or more with short radii) there is no far field:
+  // exact shading costs no more than the budget.
+  const double volume = counted.x * counted.y * counted.z;
+  const double unit = volume / (4.0 / 3.0 * glm::pi<double>());
+  const double budget = std::max(options.NearBudget, 0.0) * unit;
+  const double diagonal = glm::length(size);
+  auto cubes = [&](double R)
+  {
+    double sum = 0.0;
+    for (const PreparedLight& l : lights)
+    {
+      if (IsFarFieldLight(l))
+      {
+        const double r = std::min(l.Radius, std::max(smallest, R));
+        sum += std::min(r * r * r, unit);
+      }
+    }
+    return sum;
+  };
+  const double whole = cubes(std::numeric_limits<double>::infinity());
+  if (whole <= budget)
+  {
+    // Every light keeps its cutoff radius; the far field holds only the tails past it, of
+    // the lights whose sphere does not hold the whole region.
+    plan.NumberOfFarFieldLights = 0;
+    plan.NearRadiusCap = std::numeric_limits<double>::infinity();
+    plan.NearLightsPerPoint = whole / unit;
+    for (PreparedLight& l : lights)
+    {
+      if (IsFarFieldLight(l))
+      {
+        const glm::dvec3 corner =
+          glm::max(glm::abs(lo - l.PositionWC), glm::abs(hi - l.PositionWC));
+        if (!(l.Radius >= glm::length(corner)))
+        {
+          l.FarField = true;
+          ++plan.NumberOfFarFieldLights;
+        }
+      }
+    }
+    if (plan.NumberOfFarFieldLights == 0)
+    {
+      FarFieldPlan none;
+      none.NearLightsPerPoint = plan.NearLightsPerPoint;
+      return none;
+    }
+    return plan;
+  }
+  double R = smallest;
+  if (cubes(smallest) < budget)
+  {
+    double a = smallest, b = diagonal;
+    for (int i = 0; i < 50; ++i)
+    {
+      const double m = 0.5 * (a + b);
+      (cubes(m) <= budget ? a : b) = m;
+    }
+    R = a;
+  }
+  plan.NearRadiusCap = std::max(smallest, R);
+  plan.NearLightsPerPoint = cubes(R) / unit;
+  for (PreparedLight& l : lights)
+  {
+    if (IsFarFieldLight(l))
+    {
+      l.Radius = std::min(l.Radius, plan.NearRadiusCap);
+      l.FarField = true;
+    }
+  }
+  return plan;
+}
+
+/// Near radii of the lights for the far-field builders: the culling radius of far-field
+/// lights, infinity (no far part) for the others.
+inline std::vector<double> GetFarFieldNearRadii(const std::vector<PreparedLight>& lights)
+{
+  std::vector<double> r(lights.size(), std::numeric_limits<double>::infinity());
+  for (std::size_t i = 0; i < lights.size(); ++i)
+  {
+    if (lights[i].FarField)
+    {
+      r[i] = lights[i].Radius;
+    }
+  }
+  return r;
 }
 
 /// The far moments of one light of channel colours c (3) seen from a node: adds g L L^T etc.
@@ -157,12 +334,11 @@ inline void AccumulateFarMoments(
 {
   // toLight is unit; far is the far part per unit colour.
   const double xx = toLight.x * toLight.x, yy = toLight.y * toLight.y;
-  const double xy = toLight.x * toLight.y, xz = toLight.x * toLight.z,
-               yz = toLight.y * toLight.z;
+  const double xy = toLight.x * toLight.y, xz = toLight.x * toLight.z, yz = toLight.y * toLight.z;
   for (int c = 0; c < 3; ++c)
   {
     const double g = far * color[c];
-    double* o = m + c * FarFieldMomentsPerChannel;
+    double* o = m + static_cast<std::ptrdiff_t>(c) * FarFieldMomentsPerChannel;
     o[0] += g;
     o[1] += g * toLight.x;
     o[2] += g * toLight.y;
@@ -193,13 +369,14 @@ inline bool ComputeFarContribution(
 /**
  * Exact node moments: every light's far part summed at every node (O(nodes x lights)).
  * nearRadii[i] is light i's near radius (inf: no far part). Returns FarFieldFloatsPerNode
- * doubles per node, node index order (FarFieldGrid::NodeIndex).
+ * doubles per node (the 27 moments, channel-major), node index order
+ * (FarFieldGrid::NodeIndex). The reference for the tree build (vtkClusteredLightingFarFieldTree.h).
  */
 inline std::vector<double> ComputeFarFieldMomentsExact(const FarFieldGrid& grid,
   const std::vector<PreparedLight>& lights, const std::vector<double>& nearRadii)
 {
-  std::vector<double> m(static_cast<std::size_t>(grid.GetNumberOfNodes()) * FarFieldFloatsPerNode,
-    0.0);
+  std::vector<double> m(
+    static_cast<std::size_t>(grid.GetNumberOfNodes()) * FarFieldFloatsPerNode, 0.0);
   for (int k = 0; k < grid.Dims[2]; ++k)
   {
     for (int j = 0; j < grid.Dims[1]; ++j)
@@ -212,8 +389,7 @@ inline std::vector<double> ComputeFarFieldMomentsExact(const FarFieldGrid& grid,
         {
           double far;
           glm::dvec3 toLight;
-          if (IsFarFieldLight(lights[l]) &&
-            ComputeFarContribution(lights[l], nearRadii[l], p, far, toLight))
+          if (ComputeFarContribution(lights[l], nearRadii[l], p, far, toLight))
           {
             AccumulateFarMoments(lights[l].Color, far, toLight, o);
           }
@@ -224,9 +400,10 @@ inline std::vector<double> ComputeFarFieldMomentsExact(const FarFieldGrid& grid,
   return m;
 }
 
-/// Trilinear interpolation of the node moments at p (clamped to the grid).
+/// Trilinear interpolation of the node moments (FarFieldFloatsPerNode each) at p (clamped
+/// to the grid), as the shader's texture reads do.
 inline std::array<double, FarFieldFloatsPerNode> InterpolateFarMoments(
-  const FarFieldGrid& grid, const std::vector<double>& moments, const glm::dvec3& p)
+  const FarFieldGrid& grid, const std::vector<double>& values, const glm::dvec3& p)
 {
   std::array<double, FarFieldFloatsPerNode> out{};
   const glm::dvec3 u = (p - grid.Origin) / grid.Spacing;
@@ -250,7 +427,7 @@ inline std::array<double, FarFieldFloatsPerNode> InterpolateFarMoments(
     const int jj = std::min(base[1] + dj, grid.Dims[1] - 1);
     const int kk = std::min(base[2] + dk, grid.Dims[2] - 1);
     const double* m =
-      &moments[static_cast<std::size_t>(grid.NodeIndex(ii, jj, kk)) * FarFieldFloatsPerNode];
+      &values[static_cast<std::size_t>(grid.NodeIndex(ii, jj, kk)) * FarFieldFloatsPerNode];
     for (int q = 0; q < FarFieldFloatsPerNode; ++q)
     {
       out[q] += w * m[q];
@@ -265,15 +442,49 @@ inline glm::dvec3 ComputeLobeKernel(double n)
   return glm::dvec3(0.5 / (n + 1.0), 1.5 / (n + 2.0), 2.5 * (1.5 / (n + 3.0) - 0.5 / (n + 1.0)));
 }
 
-/// Applies a kernel (k0, k1, k2) in direction D to one channel's moments.
-inline double ApplyMomentKernel(const double* m, const glm::dvec3& k, const glm::dvec3& D)
+/**
+ * Applies a kernel (k0, k1, k2) in direction D to one channel's moments, and clamps the
+ * result into the interval the moments prove the true value lies in. For the clamped
+ * cosine (diffuse) E = sum g max(0, t), t = D.u, with S, V.D and D^T T D the sums of g,
+ * g t and g t^2, every quadratic below max(0, t) on [-1, 1] gives a lower bound and every
+ * one above it an upper bound:
+ *   E >= max(0, V.D, (V.D + D^T T D) / 2)          (0, t and (t + t^2) / 2 lie below)
+ *   E <= (S + 2 V.D + D^T T D) / 4                 ((1 + t)^2 / 4 lies above)
+ *   E <= (V.D + sqrt(S D^T T D)) / 2               (max(0, t) = (t + |t|) / 2 and
+ *                                                  sum g |t| <= sqrt(sum g sum g t^2))
+ * and for a Phong lobe (specular, n >= 1) 0 <= sum g max(0, t)^n <= min(D^T T D, the
+ * diffuse upper bounds). Clamping an estimate into an interval that holds the truth never
+ * increases its error; it removes the order-2 kernel's ringing where it matters most: a
+ * surface facing away from most of the far light gets no phantom light (the kernel's
+ * value at t = -1 is 1/16). `lower` and `upper` receive the interval.
+ */
+inline double ApplyMomentKernel(const double* m, const glm::dvec3& k, const glm::dvec3& D,
+  bool lobe = false, double* lowerOut = nullptr, double* upperOut = nullptr)
 {
   const double S = m[0];
   const double VD = m[1] * D.x + m[2] * D.y + m[3] * D.z;
   const double Tzz = S - m[4] - m[5];
   const double DTD = m[4] * D.x * D.x + m[5] * D.y * D.y + Tzz * D.z * D.z +
     2.0 * (m[6] * D.x * D.y + m[7] * D.x * D.z + m[8] * D.y * D.z);
-  return k.x * S + k.y * VD + k.z * 0.5 * (3.0 * DTD - S);
+  const double estimate = k.x * S + k.y * VD + k.z * 0.5 * (3.0 * DTD - S);
+  double upper =
+    std::min(0.5 * (VD + std::sqrt(std::max(S * DTD, 0.0))), 0.25 * (S + 2.0 * VD + DTD));
+  double lower = std::max(std::max(VD, 0.0), 0.5 * (VD + DTD));
+  if (lobe)
+  {
+    upper = std::min(upper, DTD);
+    lower = 0.0;
+  }
+  upper = std::max(upper, lower);
+  if (lowerOut)
+  {
+    *lowerOut = lower;
+  }
+  if (upperOut)
+  {
+    *upperOut = upper;
+  }
+  return std::min(std::max(estimate, lower), upper);
 }
 
 /// Diffuse far irradiance (per unit colour, per channel) for normal N.
@@ -283,7 +494,7 @@ inline glm::dvec3 EvaluateFarDiffuse(
   const glm::dvec3 k = ComputeLobeKernel(1.0); // max(0, t): 1/4, 1/2, 5/16
   return glm::dvec3(ApplyMomentKernel(&m[0], k, N),
     ApplyMomentKernel(&m[FarFieldMomentsPerChannel], k, N),
-    ApplyMomentKernel(&m[2 * FarFieldMomentsPerChannel], k, N));
+    ApplyMomentKernel(&m[std::size_t{ 2 } * FarFieldMomentsPerChannel], k, N));
 }
 
 /// Phong far specular (per channel) for the reflected view direction R and power n.
@@ -291,9 +502,58 @@ inline glm::dvec3 EvaluateFarSpecular(
   const std::array<double, FarFieldFloatsPerNode>& m, const glm::dvec3& R, double n)
 {
   const glm::dvec3 k = ComputeLobeKernel(n);
-  return glm::dvec3(ApplyMomentKernel(&m[0], k, R),
-    ApplyMomentKernel(&m[FarFieldMomentsPerChannel], k, R),
-    ApplyMomentKernel(&m[2 * FarFieldMomentsPerChannel], k, R));
+  return glm::dvec3(ApplyMomentKernel(&m[0], k, R, true),
+    ApplyMomentKernel(&m[FarFieldMomentsPerChannel], k, R, true),
+    ApplyMomentKernel(&m[std::size_t{ 2 } * FarFieldMomentsPerChannel], k, R, true));
+}
+
+/**
+ * The node moments as the shading code reads them: 7 RGBA32F 3D textures of the grid's
+ * dimensions, texel (i, j, k) of texture q holding moments 4q..4q+3 in moment-major order
+ * (moment m of channel c at 3 m + c: S, Vx, Vy, Vz, Txx, Tyy, Txy, Txz, Tyz, each as RGB;
+ * the 28th float is 0). Returns 7 arrays of 4 floats per node, node index order.
+ */
+constexpr int FarFieldTextures = 7;
+inline std::array<std::vector<float>, FarFieldTextures> PackFarFieldTexels(
+  const std::vector<double>& moments)
+{
+  std::array<std::vector<float>, FarFieldTextures> out;
+  const std::size_t nodes = moments.size() / FarFieldFloatsPerNode;
+  for (auto& t : out)
+  {
+    t.assign(4 * nodes, 0.0f);
+  }
+  for (std::size_t n = 0; n < nodes; ++n)
+  {
+    const double* m = &moments[n * FarFieldFloatsPerNode];
+    for (int moment = 0; moment < FarFieldMomentsPerChannel; ++moment)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        const int q = 3 * moment + c;
+        out[static_cast<std::size_t>(q / 4)][4 * n + static_cast<std::size_t>(q % 4)] =
+          static_cast<float>(m[c * FarFieldMomentsPerChannel + moment]);
+      }
+    }
+  }
+  return out;
+}
+
+/**
+ * VC -> far-field texture coordinates (column-major 4x4): the world position of a point
+ * in view coordinates, then its place in the grid with node (i, j, k) at the centre of
+ * texel (i, j, k). Composed in double precision (the eye-relative part stays exact).
+ */
+inline glm::dmat4 ComputeFarFieldTextureFromVC(const FarFieldGrid& g, const glm::dmat4& wcvc)
+{
+  glm::dmat4 gridFromWC(1.0);
+  for (int a = 0; a < 3; ++a)
+  {
+    const double scale = 1.0 / (g.Spacing * g.Dims[a]);
+    gridFromWC[a][a] = scale;
+    gridFromWC[3][a] = -g.Origin[a] * scale + 0.5 / g.Dims[a];
+  }
+  return gridFromWC * glm::inverse(wcvc);
 }
 
 } // namespace vtkClusteredLighting

@@ -76,6 +76,9 @@ struct PreparedLight
   glm::dvec3 DirectionWC;    ///< unit spot axis (0 for point lights)
   std::uint32_t SourceIndex; ///< index into the LightSource array
   double ExplicitRadius;     ///< the user's radius cap (+inf when none)
+  /// Split at Radius into a windowed near part and a far part that the far field holds
+  /// (vtkClusteredLightingFarField.h); set by PlanFarField.
+  bool FarField = false;
 };
 
 struct LightPreparationOptions
@@ -359,9 +362,9 @@ inline glm::dvec3 ComputeCutoffTailBound(const glm::dvec3& pointVC,
   for (std::size_t i = 0; i < lights.size(); ++i)
   {
     const PreparedLight& l = lights[i];
-    if (l.Radius >= l.ExplicitRadius)
+    if (l.Radius >= l.ExplicitRadius || l.FarField)
     {
-      continue; // culled where the model ends: nothing is cut
+      continue; // culled where the model ends, or the far field adds the rest back
     }
     const double d = glm::length(pointVC - centersVC[i]);
     const double a = EvaluateAttenuation(d, l.Attenuation);

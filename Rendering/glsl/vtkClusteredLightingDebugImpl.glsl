@@ -21,3 +21,7 @@
   // exact count of lights that reach the fragment, red+green (16 bits)
   gl_FragData[0] = vec4(float(clReached & 255) / 255.0, float((clReached >> 8) & 255) / 255.0, 0.0, 1.0);
 //CL_ENDIF
+//CL_IF(NORMAL)
+  // the shading normal in view coordinates (flipped towards the viewer), 0.5 + 0.5 N
+  gl_FragData[0] = vec4(0.5 + 0.5 * normalVCVSOutput, 1.0);
+//CL_ENDIF

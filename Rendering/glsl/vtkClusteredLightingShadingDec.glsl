@@ -71,6 +71,73 @@ ivec2 clMasterTexel(ivec3 c, int m)
 //CL_IF(BRUTE_FORCE)
 uniform int clLightCount;
 //CL_ENDIF
+//CL_IF(FAR_FIELD)
+// The far field (Rendering/Core/vtkClusteredLightingFarField.h): per node of a world
+// grid, the order-2 moments of the far light's directions, S, V and T (trace T = S), RGB
+// each, in 7 RGBA32F 3D textures (moment-major: S, Vx, Vy, Vz, Txx, Tyy, Txy, Txz, Tyz).
+uniform sampler3D clFarField0;
+uniform sampler3D clFarField1;
+uniform sampler3D clFarField2;
+uniform sampler3D clFarField3;
+uniform sampler3D clFarField4;
+uniform sampler3D clFarField5;
+uniform sampler3D clFarField6;
+uniform mat4 clFarFieldFromVC; // VC -> texture coordinates of the grid
+uniform mat3 clWorldFromVC;    // VC -> world directions (the moments' axes)
+
+// Mirrors vtkClusteredLighting::ApplyMomentKernel for RGB: the kernel with Legendre
+// coefficients k applied in world direction D (ComputeLobeKernel gives k), clamped into
+// the interval the moments prove the true value lies in (lobe: a Phong lobe, else the
+// clamped cosine).
+vec3 clApplyFarKernel(vec3 k, vec3 D, vec3 S, vec3 Vx, vec3 Vy, vec3 Vz, vec3 Txx, vec3 Tyy,
+  vec3 Txy, vec3 Txz, vec3 Tyz, bool lobe, out vec3 lower, out vec3 upper)
+{
+  vec3 VD = Vx * D.x + Vy * D.y + Vz * D.z;
+  vec3 Tzz = S - Txx - Tyy;
+  vec3 DTD = Txx * (D.x * D.x) + Tyy * (D.y * D.y) + Tzz * (D.z * D.z) +
+    2.0 * (Txy * (D.x * D.y) + Txz * (D.x * D.z) + Tyz * (D.y * D.z));
+  vec3 estimate = k.x * S + k.y * VD + k.z * 0.5 * (3.0 * DTD - S);
+  upper = min(0.5 * (VD + sqrt(max(S * DTD, vec3(0.0)))), 0.25 * (S + 2.0 * VD + DTD));
+  lower = max(max(VD, vec3(0.0)), 0.5 * (VD + DTD));
+  if (lobe)
+  {
+    upper = min(upper, DTD);
+    lower = vec3(0.0);
+  }
+  upper = max(upper, lower);
+  return min(max(estimate, lower), upper);
+}
+
+uniform int clLightCount;         // for the exact far parts
+uniform float clFarFieldTolerance; // see the far-field block of the shading code
+
+// Light i's far part at P when it is split (its exponent slot holds -1): VTK's attenuation
+// times (1 - window(d / near radius)). Returns false for other lights.
+bool clFarLight(int i, vec3 P, out vec3 L, out float att, out vec3 color)
+{
+  vec4 data0 = texelFetch(clLightData, 2 * i);
+  if (!(data0.w < 0.0))
+  {
+    return false;
+  }
+  vec4 view0 = texelFetch(clLightView, 2 * i);
+  vec3 toP = P - view0.xyz;
+  float d = length(toP);
+  L = d > 0.0 ? toP / d : vec3(0.0, 0.0, -1.0);
+  vec4 data1 = texelFetch(clLightData, 2 * i + 1);
+  float x2 = d * d / max(view0.w * view0.w, 1e-30);
+  float window = clamp(1.0 - x2 * x2, 0.0, 1.0);
+  att = (1.0 - window * window) / max(data1.x + data1.y * d + data1.z * d * d, 1e-30);
+  color = data0.rgb;
+  return true;
+}
+
+// Mirrors ComputeLobeKernel(n): Legendre coefficients of max(0, t)^n.
+vec3 clLobeKernel(float n)
+{
+  return vec3(0.5 / (n + 1.0), 1.5 / (n + 2.0), 2.5 * (1.5 / (n + 3.0) - 0.5 / (n + 1.0)));
+}
+//CL_ENDIF
 //CL_IF(HEAT_MAP)
 uniform float clHeatMapMaximum;
 vec3 clHeatColor(float t)
@@ -121,6 +188,16 @@ bool clLightAttenuation(int i, vec3 P, out vec3 L, out float att, out vec3 color
       return false;
     }
     att *= pow(coneDot, data0.w);
+  }
+//CL_ENDIF
+//CL_IF(FAR_FIELD)
+  // A light split into near and far parts (its exponent slot holds -1): the near part is
+  // windowed at the near radius, the far field holds the rest.
+  if (data0.w < 0.0)
+  {
+    float x2 = d * d / (view0.w * view0.w);
+    float window = clamp(1.0 - x2 * x2, 0.0, 1.0);
+    att *= window * window;
   }
 //CL_ENDIF
 //CL_IF(WINDOW)

@@ -49,6 +49,109 @@
       }
     }
   }
+//CL_IF(FAR_FIELD)
+  {
+    // The far field: the moments at the fragment (trilinear), then the diffuse kernel in
+    // the normal's direction and the Phong lobe in the mirrored view's direction.
+    vec3 clUVW = (clFarFieldFromVC * vertexVC).xyz;
+    vec4 clT0 = texture(clFarField0, clUVW);
+    vec4 clT1 = texture(clFarField1, clUVW);
+    vec4 clT2 = texture(clFarField2, clUVW);
+    vec4 clT3 = texture(clFarField3, clUVW);
+    vec4 clT4 = texture(clFarField4, clUVW);
+    vec4 clT5 = texture(clFarField5, clUVW);
+    vec4 clT6 = texture(clFarField6, clUVW);
+    vec3 clS = clT0.xyz;
+    vec3 clVx = vec3(clT0.w, clT1.xy);
+    vec3 clVy = vec3(clT1.zw, clT2.x);
+    vec3 clVz = clT2.yzw;
+    vec3 clTxx = clT3.xyz;
+    vec3 clTyy = vec3(clT3.w, clT4.xy);
+    vec3 clTxy = vec3(clT4.zw, clT5.x);
+    vec3 clTxz = clT5.yzw;
+    vec3 clTyz = clT6.xyz;
+//CL_IF(PHONG)
+    vec3 clN = normalVCVSOutput;
+//CL_ENDIF
+//CL_IF(PBR)
+    vec3 clN = N;
+//CL_ENDIF
+    vec3 clDiffuseLow, clDiffuseHigh;
+    vec3 clFarDiffuse = clApplyFarKernel(vec3(0.25, 0.5, 0.3125), clWorldFromVC * clN, clS,
+      clVx, clVy, clVz, clTxx, clTyy, clTxy, clTxz, clTyz, false, clDiffuseLow, clDiffuseHigh);
+    vec3 clV = normalize(-vertexVC.xyz);
+    vec3 clFarSpecular = vec3(0.0);
+    vec3 clSpecularLow = vec3(0.0), clSpecularHigh = vec3(0.0);
+//CL_IF(PHONG)
+    vec3 clDiffuseScale = diffuseColor;
+//CL_IF(SPECULAR)
+    vec3 clR = 2.0 * dot(clN, clV) * clN - clV;
+    clFarSpecular = clApplyFarKernel(clLobeKernel(specularPower), clWorldFromVC * clR, clS, clVx,
+      clVy, clVz, clTxx, clTyy, clTxy, clTxz, clTyz, true, clSpecularLow, clSpecularHigh);
+//CL_ENDIF
+    // What this fragment shows at least, and how uncertain the far field leaves it.
+    vec3 clLowest = gl_FragData[0].rgb + clDiffuse * diffuseColor + clSpecular * specularColor +
+      clDiffuseLow * diffuseColor + clSpecularLow * specularColor;
+    vec3 clUncertain =
+      (clDiffuseHigh - clDiffuseLow) * diffuseColor + (clSpecularHigh - clSpecularLow) * specularColor;
+//CL_ENDIF
+//CL_IF(PBR)
+    // Lambert diffuse with the view's Fresnel (VTK's PBR terms at N.V); the far field's
+    // PBR specular is left out (docs/far-field.md).
+    vec3 clF = F0 + (F90 - F0) * pow(1.0 - NdV, 5.0);
+    vec3 clDiffuseScale = (1.0 - metallic) * (1.0 - clF) * DiffuseLambert(albedo);
+    // No saturation test before PBR's tone mapping: exact wherever uncertain by more
+    // than the tolerance.
+    vec3 clLowest = vec3(0.0);
+    vec3 clUncertain = (clDiffuseHigh - clDiffuseLow) * clDiffuseScale;
+//CL_ENDIF
+    // Where the moments cannot tell whether the fragment saturates (its lowest value is
+    // below 1, its highest above) and leave it uncertain by more than the tolerance, the
+    // far parts are summed exactly, light by light: bright far fields need it on a few
+    // fragments, faint ones (highest value below 1) never.
+    vec3 clHighest = clLowest + clUncertain;
+//CL_IF(PBR)
+    clHighest = vec3(2.0);
+//CL_ENDIF
+    bvec3 clBelow = lessThan(clLowest, vec3(1.0));
+    bvec3 clAbove = greaterThan(clHighest, vec3(1.0));
+    if (clFarFieldTolerance < 1.0 &&
+      ((clBelow.r && clAbove.r) || (clBelow.g && clAbove.g) || (clBelow.b && clAbove.b)) &&
+      max(max(clUncertain.r, clUncertain.g), clUncertain.b) > clFarFieldTolerance)
+    {
+      clFarDiffuse = vec3(0.0);
+      clFarSpecular = vec3(0.0);
+      for (int clI = 0; clI < clLightCount; ++clI)
+      {
+        vec3 clL;
+        float clAtt;
+        vec3 clColor;
+        if (clFarLight(clI, vertexVC.xyz, clL, clAtt, clColor))
+        {
+          float clDf = max(0.0, clAtt * dot(clN, -clL));
+          clFarDiffuse += clDf * clColor;
+//CL_IF(PHONG)
+//CL_IF(SPECULAR)
+          float clRv = max(0.0, dot(reflect(clL, clN), clV));
+          clFarSpecular +=
+            sign(clDf) * clAtt * (clRv > 0.0 ? pow(clRv, specularPower) : 0.0) * clColor;
+//CL_ENDIF
+//CL_ENDIF
+        }
+//CL_IF(COUNT)
+        ++clEvaluated;
+//CL_ENDIF
+      }
+    }
+//CL_IF(PHONG)
+    clDiffuse += clFarDiffuse;
+    clSpecular += clFarSpecular;
+//CL_ENDIF
+//CL_IF(PBR)
+    clLo += clDiffuseScale * clFarDiffuse;
+//CL_ENDIF
+  }
+//CL_ENDIF
 //CL_IF(PHONG)
   gl_FragData[0].rgb += clDiffuse * diffuseColor + clSpecular * specularColor;
 //CL_ENDIF

@@ -138,7 +138,7 @@ std::vector<Step> MakePlan(const PlanOptions& options)
         s.Sweep = "lights";
         s.Value = "animated";
         s.AnimateLights = true;
-        s.Counts = false;
+        s.Counts = true; // measured with the lights back where the reference was rendered
         s.Reference = n <= 16384;
         s.Frames = n > 16384 ? 3 : base.Frames;
         plan.push_back(s);

@@ -10,17 +10,22 @@
 // differences in 8-bit steps (after rounding both to 8 bits, as images are) with the cost
 // proxies: lights evaluated exactly per point (the near lights) and far-field nodes.
 //
-//   ClusteredLightingFarFieldStudy [--scene bunny|house|dense] [--lights N] [--samples S]
+//   ClusteredLightingFarFieldStudy [--scene bunny|house|user|dense] [--always-on]
+//     [--lights N] [--samples S] [--cutoffs 1024,4096] [--nodes 32768] [--cells 2]
+//     [--grouping 0.05] [--hierarchy 0.02,0.1] [--bounds]
 //
-// Candidates: "cut" (today: every light cut at its cutoff radius), "far field" (near part
-// windowed at the near radius plus the far field on a grid of spacing h, order-2 moments,
-// trilinear), with and without the far specular, for several near radii and spacings; and
-// "hierarchy" (design 2: the far part of groups of lights from an octree, chosen per point
-// by an error bound, evaluated like lights), whose cost is the number of groups per point.
+// Rows: "cut at 1/c" (before the far field: every light cut at its cutoff radius); "far
+// field" (design 1, the product's core code: PlanFarField, ComputeFarFieldMoments, the
+// interpolated moments and clamped kernels) for each node budget, near radius in cells
+// and grouping, with its build time and sources summed per node, and with --bounds the
+// stated bound (ComputeFarFieldErrorBound) at every sample and channel against the actual
+// error; "hierarchy per point" (design 2: the light tree walked at each point, groups
+// taken by their aggregation bound, each shaded exactly; the cost is the lights and groups
+// evaluated per point, in the near/pt column). List options take comma-separated values.
 #include "BenchmarkMeasure.h"
 #include "BenchmarkPlan.h"
 #include "ClusteredLightingScenes.h"
-#include "vtkClusteredLightingFarField.h"
+#include "vtkClusteredLightingFarFieldBound.h"
 
 #include "vtkActor.h"
 #include "vtkActorCollection.h"
@@ -36,6 +41,7 @@
 #include "vtkProperty.h"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -177,6 +183,13 @@ glm::dvec2 Shade(const Sample& s, const glm::dvec3& toLight)
   return glm::dvec2(df, s.Ks > 0.0 && rv > 0.0 ? std::pow(rv, s.Power) : 0.0);
 }
 
+/// The shaded value of one light (unit colour, unit attenuation) per channel.
+glm::dvec3 ShadeValue(const Sample& s, const glm::dvec3& toLight)
+{
+  const glm::dvec2 sh = Shade(s, toLight);
+  return sh.x * s.Kd + glm::dvec3(sh.y * s.Ks);
+}
+
 int Quantize(double v)
 {
   return static_cast<int>(std::lround(255.0 * std::min(1.0, std::max(0.0, v))));
@@ -185,7 +198,7 @@ int Quantize(double v)
 struct Errors
 {
   double Max = 0, Mean = 0, RMSE = 0, ContinuousMean = 0;
-  std::size_t Count = 0;
+  std::size_t Count = 0, OverTwo = 0;
   void Add(const glm::dvec3& exact, const glm::dvec3& approx)
   {
     for (int c = 0; c < 3; ++c)
@@ -194,6 +207,7 @@ struct Errors
       const double clampedExact = std::min(1.0, std::max(0.0, exact[c]));
       const double clampedApprox = std::min(1.0, std::max(0.0, approx[c]));
       this->Max = std::max(this->Max, q);
+      this->OverTwo += q > 2.0 ? 1 : 0;
       this->Mean += q;
       this->RMSE += q * q;
       this->ContinuousMean += 255.0 * std::abs(clampedExact - clampedApprox);
@@ -203,9 +217,10 @@ struct Errors
   void Print(const char* name, double nearPerPoint, long long nodes, double extra = 0.0,
     const char* extraName = nullptr) const
   {
-    std::printf("%-44s max %5.0f  mean %6.3f  RMSE %6.3f  (continuous mean %6.3f)  near/pt %7.2f",
-      name, this->Max, this->Mean / this->Count, std::sqrt(this->RMSE / this->Count),
-      this->ContinuousMean / this->Count, nearPerPoint);
+    std::printf("%-44s max %5.0f (>2: %zu)  mean %6.3f  RMSE %6.3f  (continuous mean %6.3f)  "
+                "near/pt %7.2f",
+      name, this->Max, this->OverTwo, this->Mean / this->Count,
+      std::sqrt(this->RMSE / this->Count), this->ContinuousMean / this->Count, nearPerPoint);
     if (nodes > 0)
     {
       std::printf("  nodes %lld", nodes);
@@ -241,86 +256,90 @@ void ParallelFor(std::size_t n, F f)
   }
 }
 
-std::vector<double> NodeMomentsParallel(const FarFieldGrid& grid,
-  const std::vector<PreparedLight>& lights, const std::vector<double>& nearRadii)
-{
-  std::vector<double> m(
-    static_cast<std::size_t>(grid.GetNumberOfNodes()) * FarFieldFloatsPerNode, 0.0);
-  ParallelFor(static_cast<std::size_t>(grid.Dims[2]),
-    [&](std::size_t k)
-    {
-      for (int j = 0; j < grid.Dims[1]; ++j)
-      {
-        for (int i = 0; i < grid.Dims[0]; ++i)
-        {
-          const glm::dvec3 p = grid.NodePosition(i, j, static_cast<int>(k));
-          double* o = &m[static_cast<std::size_t>(grid.NodeIndex(i, j, static_cast<int>(k))) *
-            FarFieldFloatsPerNode];
-          for (std::size_t l = 0; l < lights.size(); ++l)
-          {
-            double far;
-            glm::dvec3 toLight;
-            if (IsFarFieldLight(lights[l]) &&
-              ComputeFarContribution(lights[l], nearRadii[l], p, far, toLight))
-            {
-              AccumulateFarMoments(lights[l].Color, far, toLight, o);
-            }
-          }
-        }
-      }
-    });
-  return m;
-}
 }
 
 int main(int argc, char* argv[])
 {
   std::string sceneName = "bunny";
   int lightsCount = 4096, samplesCount = 20000;
-  std::vector<double> cutoffs = { 1.0 / 256, 1.0 / 1024, 1.0 / 4096 };
-  std::vector<double> cellsPerRadius = { 2.0, 3.0, 4.0, 6.0 };
+  std::vector<double> cutoffs = { 1.0 / 1024, 1.0 / 4096 };
+  std::vector<double> nodeTargets = { 32768 };
+  std::vector<double> cellsPerRadius = { 2.0 };
+  std::vector<double> groupings = { 0.05 };
+  std::vector<double> hierarchyEpsilons;
+  bool bounds = false;
+  auto parseList = [](const char* text, double (*f)(double))
+  {
+    std::vector<double> out;
+    for (const char* c = text; *c; ++c)
+    {
+      out.push_back(f(std::strtod(c, const_cast<char**>(&c))));
+      if (!*c)
+      {
+        break;
+      }
+    }
+    return out;
+  };
+  auto same = [](double v) { return v; };
   for (int i = 1; i < argc; ++i)
   {
     const std::string a = argv[i];
-    if (a == "--scene" && i + 1 < argc)
+    const bool value = i + 1 < argc;
+    if (a == "--scene" && value)
     {
       sceneName = argv[++i];
     }
-    else if (a == "--lights" && i + 1 < argc)
+    else if (a == "--lights" && value)
     {
       lightsCount = std::atoi(argv[++i]);
     }
-    else if (a == "--samples" && i + 1 < argc)
+    else if (a == "--samples" && value)
     {
       samplesCount = std::atoi(argv[++i]);
     }
-    else if (a == "--cutoffs" && i + 1 < argc)
+    else if (a == "--cutoffs" && value)
     {
-      cutoffs.clear();
-      for (const char* c = argv[++i]; *c; ++c)
-      {
-        cutoffs.push_back(1.0 / std::strtod(c, const_cast<char**>(&c)));
-        if (!*c)
-        {
-          break;
-        }
-      }
+      cutoffs = parseList(argv[++i], [](double v) { return 1.0 / v; });
     }
-    else if (a == "--cells" && i + 1 < argc)
+    else if (a == "--nodes" && value)
     {
-      cellsPerRadius.clear();
-      for (const char* c = argv[++i]; *c; ++c)
-      {
-        cellsPerRadius.push_back(std::strtod(c, const_cast<char**>(&c)));
-        if (!*c)
-        {
-          break;
-        }
-      }
+      nodeTargets = parseList(argv[++i], same);
+    }
+    else if (a == "--cells" && value)
+    {
+      cellsPerRadius = parseList(argv[++i], same);
+    }
+    else if (a == "--grouping" && value)
+    {
+      groupings = parseList(argv[++i], same);
+    }
+    else if (a == "--hierarchy" && value)
+    {
+      hierarchyEpsilons = parseList(argv[++i], same);
+    }
+    else if (a == "--always-on")
+    {
+      // 300 of VTK's default lights: attenuation (1, 0, 0), intensity 1, white.
+      sceneName += "+always-on";
+    }
+    else if (a == "--bounds")
+    {
+      bounds = true;
+    }
+    else
+    {
+      std::fprintf(stderr, "unknown or incomplete option %s\n", a.c_str());
+      return EXIT_FAILURE;
     }
   }
+  if (cutoffs.empty() || nodeTargets.empty() || cellsPerRadius.empty())
+  {
+    std::fprintf(stderr, "--cutoffs, --nodes and --cells need at least one value\n");
+    return EXIT_FAILURE;
+  }
   Context ctx(1024, 768);
-  const Scene& scene = sceneName == "house" ? HouseScene() : BunnyScene();
+  const Scene& scene = sceneName.rfind("house", 0) == 0 ? HouseScene() : BunnyScene();
   if (ctx.LoadScene(scene, true) < 0)
   {
     std::fprintf(stderr, "scene data missing\n");
@@ -328,7 +347,18 @@ int main(int argc, char* argv[])
   }
   ctx.MakeLights(lightsCount, "uniform");
   vtkClusteredLightSet* set = ctx.GetLights();
-  if (sceneName == "dense")
+  if (sceneName.rfind("user", 0) == 0)
+  {
+    // 4,096 lights as a new user writes them: attenuation (0, 0, 20), intensity 0.02.
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> U(0.0, 1.0);
+    for (vtkIdType i = 0; i < set->GetNumberOfLights(); ++i)
+    {
+      set->SetIntensity(i, 0.02);
+      set->SetAttenuation(i, 0.0, 0.0, 20.0);
+    }
+  }
+  if (sceneName.rfind("dense", 0) == 0)
   {
     // 2,000 lights as a new user writes them: attenuation (1, 0, 8), intensity 1, no radius.
     std::mt19937 rng(5);
@@ -340,6 +370,19 @@ int main(int argc, char* argv[])
       set->SetColor(i, U(rng), U(rng), U(rng));
       set->SetIntensity(i, 1.0);
       set->SetAttenuation(i, 1.0, 0.0, 8.0);
+    }
+  }
+  if (sceneName.find("+always-on") != std::string::npos)
+  {
+    std::mt19937 rng(9);
+    std::uniform_real_distribution<double> U(0.0, 1.0);
+    set->SetNumberOfLights(300);
+    for (vtkIdType i = 0; i < 300; ++i)
+    {
+      set->SetPosition(i, -3 + 6 * U(rng), -0.98 + 2.0 * U(rng), -3 + 6 * U(rng));
+      set->SetColor(i, 1, 1, 1);
+      set->SetIntensity(i, 1.0);
+      set->SetAttenuation(i, 1.0, 0.0, 0.0);
     }
   }
   ctx.SetView();
@@ -385,84 +428,202 @@ int main(int argc, char* argv[])
     hi = glm::max(hi, s.P);
   }
 
+  // Today: every light cut at its cutoff radius.
   for (double cutoff : cutoffs)
   {
-    const PreparedLights prepared =
-      PrepareLights(sources, LightPreparationOptions{ cutoff, false });
-    std::vector<double> radii(prepared.Lights.size());
-    double meanRadius = 0.0;
-    for (std::size_t l = 0; l < radii.size(); ++l)
+    const PreparedLights prepared = PrepareLights(sources, LightPreparationOptions{ cutoff, false });
+    Errors e;
+    double near = 0.0;
+    for (std::size_t i = 0; i < samples.size(); ++i)
     {
-      radii[l] = prepared.Lights[l].Radius;
-      meanRadius += std::min(radii[l], 1e6);
-    }
-    meanRadius /= std::max<std::size_t>(radii.size(), 1);
-    // Today: cut at the radius.
-    {
-      Errors e;
-      double near = 0.0;
-      for (std::size_t i = 0; i < samples.size(); ++i)
+      glm::dvec3 sum(0.0);
+      for (const PreparedLight& l : prepared.Lights)
       {
-        const Sample& s = samples[i];
-        glm::dvec3 sum(0.0);
-        for (const PreparedLight& l : prepared.Lights)
+        const glm::dvec3 v = l.PositionWC - samples[i].P;
+        const double d = glm::length(v);
+        if (d < l.Radius)
         {
-          const glm::dvec3 v = l.PositionWC - s.P;
-          const double d = glm::length(v);
-          if (d < l.Radius)
-          {
-            const glm::dvec2 sh = Shade(s, v / d);
-            sum += l.Color * EvaluateAttenuation(d, l.Attenuation) * (sh.x * s.Kd + sh.y * s.Ks);
-            near += 1.0;
-          }
+          sum += l.Color * EvaluateAttenuation(d, l.Attenuation) * ShadeValue(samples[i], v / d);
+          near += 1.0;
         }
-        e.Add(exact[i], sum);
       }
-      char name[128];
-      std::snprintf(name, sizeof(name), "cutoff 1/%g (r %.3f): cut", 1.0 / cutoff, meanRadius);
-      e.Print(name, near / samples.size(), 0);
+      e.Add(exact[i], sum);
     }
+    char name[128];
+    std::snprintf(name, sizeof(name), "cut at 1/%g", 1.0 / cutoff);
+    e.Print(name, near / samples.size(), 0);
+  }
+
+  // Design 1 (the product): near part exact, far field on the grid (PlanFarField,
+  // ComputeFarFieldMoments), at the first cutoff.
+  const PreparedLights base = PrepareLights(sources, LightPreparationOptions{ cutoffs[0], false });
+  for (double target : nodeTargets)
+  {
     for (double cells : cellsPerRadius)
     {
-      const double h = meanRadius / cells;
-      const FarFieldGrid grid = ComputeFarFieldGrid(lo, hi, h, 4000000);
-      const auto t0 = std::chrono::steady_clock::now();
-      const std::vector<double> moments = NodeMomentsParallel(grid, prepared.Lights, radii);
-      const double buildMs =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-      Errors withSpec, noSpec;
-      double near = 0.0;
-      for (std::size_t i = 0; i < samples.size(); ++i)
+      for (double grouping : groupings)
       {
-        const Sample& s = samples[i];
-        glm::dvec3 sum(0.0);
-        for (const PreparedLight& l : prepared.Lights)
+        std::vector<PreparedLight> lights = base.Lights;
+        const FarFieldPlan plan = PlanFarField(lights, lo, hi,
+          FarFieldOptions{ true, cells, static_cast<std::int64_t>(target), grouping });
+        const std::vector<double> radii = GetFarFieldNearRadii(lights);
+        const FarFieldGrid& grid = plan.Grid;
+        const auto t0 = std::chrono::steady_clock::now();
+        const FarFieldLightTree tree = BuildFarFieldLightTree(lights, radii);
+        std::vector<double> values(
+          static_cast<std::size_t>(grid.GetNumberOfNodes()) * FarFieldFloatsPerNode);
+        const std::array<int, 3> blocks = GetFarFieldBlocks(grid);
+        const std::int64_t slab = static_cast<std::int64_t>(blocks[0]) * blocks[1];
+        std::atomic<std::int64_t> pairs(0);
+        ParallelFor(static_cast<std::size_t>(blocks[2]),
+          [&](std::size_t k)
+          {
+            pairs += ComputeFarFieldMoments(grid, lights, radii, tree, grouping,
+              static_cast<std::int64_t>(k) * slab, static_cast<std::int64_t>(k + 1) * slab, values);
+          });
+        const double ms =
+          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+        Errors e;
+        double near = 0.0, sumBound = 0.0, maxBound = 0.0, maxRatio = 0.0;
+        std::size_t violations = 0;
+        for (std::size_t i = 0; i < samples.size(); ++i)
         {
-          const glm::dvec3 v = l.PositionWC - s.P;
+          const Sample& smp = samples[i];
+          glm::dvec3 sum(0.0);
+          for (const PreparedLight& l : lights)
+          {
+            const glm::dvec3 v = l.PositionWC - smp.P;
+            const double d = glm::length(v);
+            if (d < l.Radius)
+            {
+              const double w = l.FarField ? EvaluateSplitWindow(d / l.Radius) : 1.0;
+              sum += l.Color * EvaluateAttenuation(d, l.Attenuation) * w * ShadeValue(smp, v / d);
+              near += 1.0;
+            }
+          }
+          if (plan.Active)
+          {
+            const auto m = InterpolateFarMoments(grid, values, smp.P);
+            const glm::dvec3 R = 2.0 * glm::dot(smp.N, smp.V) * smp.N - smp.V;
+            sum += EvaluateFarDiffuse(m, smp.N) * smp.Kd +
+              (smp.Ks > 0.0 ? EvaluateFarSpecular(m, R, smp.Power) * smp.Ks : glm::dvec3(0.0));
+            if (bounds)
+            {
+              // The stated bound per channel, against the actual (unrounded) error.
+              FarFieldShadingPoint sp;
+              sp.P = smp.P;
+              sp.N = smp.N;
+              sp.R = R;
+              sp.Kd = smp.Kd;
+              sp.Ks = glm::dvec3(smp.Ks);
+              sp.Power = smp.Power;
+              const glm::dvec3 b = ComputeFarFieldErrorBound(
+                sp, FarFieldBuildInputs{ &grid, &lights, &radii, &tree, grouping });
+              for (int c = 0; c < 3; ++c)
+              {
+                const double err = std::abs(sum[c] - exact[i][c]);
+                violations += err > b[c] * (1.0 + 1e-9) + 1e-12 ? 1 : 0;
+                maxRatio = std::max(maxRatio, b[c] > 0.0 ? err / b[c] : 0.0);
+                sumBound += 255.0 * b[c];
+                maxBound = std::max(maxBound, 255.0 * b[c]);
+              }
+            }
+          }
+          e.Add(exact[i], sum);
+        }
+        char name[160];
+        std::snprintf(name, sizeof(name), "far field: %g nodes, h %.3g, r <= %g h, grouping %g",
+          target, grid.Spacing, cells, grouping);
+        e.Print(name, near / samples.size(), grid.GetNumberOfNodes(), ms, "build ms");
+        std::printf("    sources per node %.1f", static_cast<double>(pairs.load()) /
+            std::max<std::int64_t>(grid.GetNumberOfNodes(), 1));
+        if (bounds)
+        {
+          std::printf("; bound per point and channel: mean %.3f, max %.3f steps; error / bound "
+                      "<= %.3f; %zu above the bound",
+            sumBound / (3.0 * samples.size()), maxBound, maxRatio, violations);
+        }
+        std::printf("\n");
+      }
+    }
+  }
+
+  // Design 2 (a light hierarchy evaluated per point, Lightcuts-style): the same near parts;
+  // the far parts from the light tree walked at each point, a group taken as one light when
+  // AcceptFarFieldGroup takes it with grouping `epsilon` (extent / distance), each taken
+  // light shaded exactly. Its cost is the lights and groups evaluated per point.
+  for (double epsilon : hierarchyEpsilons)
+  {
+    std::vector<PreparedLight> lights = base.Lights;
+    PlanFarField(lights, lo, hi,
+      FarFieldOptions{ true, cellsPerRadius[0], static_cast<std::int64_t>(nodeTargets[0]), 0.0 });
+    const std::vector<double> radii = GetFarFieldNearRadii(lights);
+    const FarFieldLightTree tree = BuildFarFieldLightTree(lights, radii);
+    Errors e;
+    std::atomic<std::int64_t> evaluations(0);
+    std::vector<glm::dvec3> values(samples.size());
+    ParallelFor(samples.size(),
+      [&](std::size_t i)
+      {
+        const Sample& smp = samples[i];
+        glm::dvec3 sum(0.0);
+        std::int64_t count = 0;
+        for (const PreparedLight& l : lights)
+        {
+          const glm::dvec3 v = l.PositionWC - smp.P;
           const double d = glm::length(v);
           if (d < l.Radius)
           {
-            const glm::dvec2 sh = Shade(s, v / d);
-            sum += l.Color * EvaluateAttenuation(d, l.Attenuation) *
-              EvaluateSplitWindow(d / l.Radius) * (sh.x * s.Kd + sh.y * s.Ks);
-            near += 1.0;
+            const double w = l.FarField ? EvaluateSplitWindow(d / l.Radius) : 1.0;
+            sum += l.Color * EvaluateAttenuation(d, l.Attenuation) * w * ShadeValue(smp, v / d);
+            ++count;
           }
         }
-        const auto m = InterpolateFarMoments(grid, moments, s.P);
-        const glm::dvec3 diffuse = EvaluateFarDiffuse(m, s.N) * s.Kd;
-        const glm::dvec3 R = 2.0 * glm::dot(s.N, s.V) * s.N - s.V;
-        const glm::dvec3 specular =
-          s.Ks > 0.0 ? EvaluateFarSpecular(m, R, s.Power) * s.Ks : glm::dvec3(0.0);
-        noSpec.Add(exact[i], sum + diffuse);
-        withSpec.Add(exact[i], sum + diffuse + specular);
-      }
-      char name[128];
-      std::snprintf(name, sizeof(name), "cutoff 1/%g: far field h = r/%g", 1.0 / cutoff, cells);
-      withSpec.Print(name, near / samples.size(), grid.GetNumberOfNodes(), buildMs, "build ms");
-      std::snprintf(
-        name, sizeof(name), "cutoff 1/%g: far field h = r/%g, no far spec", 1.0 / cutoff, cells);
-      noSpec.Print(name, near / samples.size(), grid.GetNumberOfNodes());
+        std::vector<int> stack;
+        if (!tree.Nodes.empty())
+        {
+          stack.push_back(0);
+        }
+        while (!stack.empty())
+        {
+          const FarFieldLightTree::Node& n = tree.Nodes[static_cast<std::size_t>(stack.back())];
+          stack.pop_back();
+          const glm::dvec3 v = n.Centroid - smp.P;
+          const double d = glm::length(v);
+          if (AcceptFarFieldGroup(n, smp.P, smp.P, epsilon))
+          {
+            sum += n.Color * EvaluateAttenuation(d, n.Attenuation) * ShadeValue(smp, v / d);
+            ++count;
+            continue;
+          }
+          if (n.Left < 0)
+          {
+            for (int q = n.First; q < n.First + n.Count; ++q)
+            {
+              const std::size_t l = static_cast<std::size_t>(tree.Order[static_cast<std::size_t>(q)]);
+              double far;
+              glm::dvec3 u;
+              if (ComputeFarContribution(lights[l], radii[l], smp.P, far, u))
+              {
+                sum += lights[l].Color * far * ShadeValue(smp, u);
+              }
+              ++count;
+            }
+            continue;
+          }
+          stack.push_back(n.Left);
+          stack.push_back(n.Right);
+        }
+        values[i] = sum;
+        evaluations += count;
+      });
+    for (std::size_t i = 0; i < samples.size(); ++i)
+    {
+      e.Add(exact[i], values[i]);
     }
+    char name[160];
+    std::snprintf(name, sizeof(name), "hierarchy per point: epsilon %g", epsilon);
+    e.Print(name, static_cast<double>(evaluations.load()) / samples.size(), 0);
   }
   return EXIT_SUCCESS;
 }

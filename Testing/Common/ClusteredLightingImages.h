@@ -53,6 +53,23 @@ inline void WritePNG(vtkRenderWindow* rw, const std::string& path)
   writer->SetFileName(path.c_str());
   writer->Write();
 }
+/// Writes RGB floats in [0, 1] (row-major from the bottom, as CaptureRGB) to a PNG file.
+inline void WriteRGBPNG(const std::vector<float>& rgb, int width, int height, const std::string& path)
+{
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(width, height, 1);
+  image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+  unsigned char* out = static_cast<unsigned char*>(image->GetScalarPointer());
+  for (std::size_t i = 0; i < rgb.size() && i < 3 * static_cast<std::size_t>(width) * height; ++i)
+  {
+    const float v = rgb[i] < 0.0f ? 0.0f : (rgb[i] > 1.0f ? 1.0f : rgb[i]);
+    out[i] = static_cast<unsigned char>(v * 255.0f + 0.5f);
+  }
+  vtkNew<vtkPNGWriter> writer;
+  writer->SetInputData(image);
+  writer->SetFileName(path.c_str());
+  writer->Write();
+}
 } // namespace ClusteredLightingImages
 
 #endif

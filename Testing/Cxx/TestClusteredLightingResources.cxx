@@ -49,6 +49,9 @@ int TestClusteredLightingResources(int, char*[])
 
   vtkSmartPointer<vtkClusteredLightingPass> pass = vtkSmartPointer<vtkClusteredLightingPass>::New();
   pass->AddLightSet(lights);
+  // A small near-field budget gives these lights a far field, so that its textures are
+  // part of every census below.
+  pass->SetNearFieldBudget(1.0);
   vtkNew<MessageCollector> messages;
   messages->Watch(pass);
 
@@ -62,10 +65,13 @@ int TestClusteredLightingResources(int, char*[])
   renWin->Render();
   const GLNames own = PassGLNames(pass);
   Check(pass->GetNumberOfClusteredLights() == 303, "303 clustered lights");
-  // LightData, LightView, Quads (texture + buffer each), list, master, FBO, VAO.
-  Check(pass->GetNumberOfGLObjects() == 10 && own.size() == 10,
-    "the pass holds 10 GL objects: count " + std::to_string(pass->GetNumberOfGLObjects()) +
-      ", names " + Describe(own));
+  // LightData, LightView, Quads (texture + buffer each), list, master, FBO, VAO, and the
+  // far field's moment textures (the scene's lights are inverse-square).
+  const int per = GLObjectsPerRenderer(pass);
+  Check(per == AssignmentGLObjects + FarFieldGLObjects, "the lights have a far field");
+  Check(pass->GetNumberOfGLObjects() == per && own.size() == static_cast<std::size_t>(per),
+    "the pass holds " + std::to_string(per) + " GL objects: count " +
+      std::to_string(pass->GetNumberOfGLObjects()) + ", names " + Describe(own));
   bool allLive = true;
   for (const auto& n : own)
   {
@@ -91,7 +97,7 @@ int TestClusteredLightingResources(int, char*[])
 
   // 3. Works again: same image, exact assignment, brute-force bound.
   renWin->Render();
-  Check(pass->GetNumberOfGLObjects() == 10, "10 GL objects again after rendering");
+  Check(pass->GetNumberOfGLObjects() == per, "as many GL objects again after rendering");
   const ImageComparison again = CompareImages(first, CapturePixels(renWin));
   PrintComparison("after release vs before", again);
   Check(again.MaxAbsError == 0.0, "the image after the release is identical");
@@ -136,7 +142,7 @@ int TestClusteredLightingResources(int, char*[])
   Check(pass->GetNumberOfGLObjects() == 0, "removing the renderer releases the pass's objects");
   renWin->AddRenderer(ren);
   renWin->Render();
-  Check(pass->GetNumberOfGLObjects() == 10, "the pass works again once the renderer is back");
+  Check(pass->GetNumberOfGLObjects() == per, "the pass works again once the renderer is back");
   Check(CompareImages(first, CapturePixels(renWin)).MaxAbsError == 0.0,
     "same image once the renderer is back");
 
@@ -145,7 +151,8 @@ int TestClusteredLightingResources(int, char*[])
   renWin->Render(); // stock rendering: the scene's own objects stay
   const GLNames withPass = TakeGLNameCensus(renWin);
   const GLNames passNames = PassGLNames(pass);
-  Check(passNames.size() == 10, "the pass still holds its objects before it is deleted");
+  Check(passNames.size() == static_cast<std::size_t>(per),
+    "the pass still holds its objects before it is deleted");
   pass = nullptr;
   CheckSameGLObjects(TakeGLNameCensus(renWin), Minus(withPass, passNames),
     "deleting the pass frees exactly its GL objects");

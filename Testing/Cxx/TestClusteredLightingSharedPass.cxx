@@ -114,7 +114,8 @@ int TestClusteredLightingSharedPass(int, char*[])
     winB->Render();
   }
   Check(shared->GetNumberOfClusteredLights() == 202, "202 clustered lights per renderer");
-  Check(shared->GetNumberOfGLObjects() == 20, "10 GL objects per renderer");
+  const int per = GLObjectsPerRenderer(shared);
+  Check(shared->GetNumberOfGLObjects() == 2 * per, "the same GL objects for each renderer");
   const std::vector<float> imageA = CapturePixels(winA), imageB = CapturePixels(winB);
   CheckRenderer(shared, winA, renA, "window A, shared pass");
   CheckRenderer(shared, winB, renB, "window B, shared pass");
@@ -148,9 +149,9 @@ int TestClusteredLightingSharedPass(int, char*[])
     const ImageComparison own = CompareImages(both, CapturePixels(winC));
     PrintComparison("window C (two renderers): shared pass vs own passes", own);
     Check(own.MaxAbsError == 0.0, "two renderers sharing a pass render as with their own");
-    Check(shared->GetNumberOfGLObjects() == 40, "10 GL objects for each of 4 renderers");
+    Check(shared->GetNumberOfGLObjects() == 4 * per, "the same GL objects for each of 4 renderers");
   }
-  Check(shared->GetNumberOfGLObjects() == 20, "window C's objects went with it");
+  Check(shared->GetNumberOfGLObjects() == 2 * per, "window C's objects went with it");
 
   // 3. Releasing window B's objects while window A's context is current.
   shared->ReleaseGraphicsResources(nullptr);
@@ -165,10 +166,11 @@ int TestClusteredLightingSharedPass(int, char*[])
   const GLNames censusA = TakeGLNameCensus(winA);
   winB->Render();
   const GLNames censusB = TakeGLNameCensus(winB);
-  Check(shared->GetNumberOfGLObjects() == 20, "20 GL objects after rendering both windows");
+  Check(shared->GetNumberOfGLObjects() == 2 * per,
+    "both renderers' GL objects after rendering both windows");
   winA->MakeCurrent();
   shared->ReleaseGraphicsResources(winB);
-  Check(shared->GetNumberOfGLObjects() == 10, "release for window B: window A's 10 remain");
+  Check(shared->GetNumberOfGLObjects() == per, "release for window B: window A's objects remain");
   CheckSameGLObjects(
     TakeGLNameCensus(winA), censusA, "window A's GL objects are untouched by window B's release");
   CheckSameGLObjects(
@@ -185,7 +187,7 @@ int TestClusteredLightingSharedPass(int, char*[])
   // 4. Renderer B deleted while window B lives; window A renders a new view.
   winB->RemoveRenderer(renB);
   renB = nullptr;
-  Check(shared->GetNumberOfGLObjects() == 10, "removing renderer B released its objects");
+  Check(shared->GetNumberOfGLObjects() == per, "removing renderer B released its objects");
   renA->GetActiveCamera()->Azimuth(25.0);
   renA->ResetCameraClippingRange();
   winA->Render();

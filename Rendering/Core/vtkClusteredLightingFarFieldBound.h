@@ -1,0 +1,398 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @file vtkClusteredLightingFarFieldBound.h
+ * @brief GL-free stated bound of the far field's error at a shaded point.
+ *
+ * The far field (vtkClusteredLightingFarField.h) shades a point from moments interpolated
+ * between grid nodes that were built with a light tree (vtkClusteredLightingFarFieldTree.h).
+ * ComputeFarFieldErrorBound gives, for one point, normal, view and material, a number the
+ * error of the far field's diffuse and Phong specular provably does not exceed. Its terms:
+ *
+ *  1. Angular truncation, light by light: sum_j g_j |q(t_j) - k(t_j)|, where g_j is light
+ *     j's far part at the point, t_j the cosine to the normal (diffuse) or to the mirrored
+ *     view (specular), k the true kernel (max(0, t), the Phong lobe with no light from
+ *     behind the surface) and q its order-2 approximation.
+ *  2. Interpolation and aggregation, source by source: the grid's value at the point is
+ *     sum_c w_c (sum of the sources of corner c), the trilinear weights w_c of the 8
+ *     corners and each corner's sources from the tree walk of its block. Grouping the
+ *     lights into "atoms" (the largest groups taken whole at any corner, and the lights
+ *     taken alone at every corner) splits the difference from the exact sum into one term
+ *     per atom, each computed exactly: | sum_c w_c value_c(atom) - exact(atom) |. Their sum
+ *     bounds the error of the interpolated moments whatever the lights' arrangement (the
+ *     triangle inequality), and it keeps the centroid's cancellation inside each group.
+ *  3. Clamping. The shading clamps its estimate into the interval the moments prove the
+ *     true value lies in (ApplyMomentKernel). With exact moments that never adds error;
+ *     with interpolated ones the interval itself moves, by at most what term 2 gives for
+ *     the moments it is made of (S, V.D, D^T T D for D = N and D = R), so the bound takes
+ *     the larger of the unclamped bound and that shift.
+ *  4. Single precision: a relative 1e-3 of the far light (1.25 (kd + ks) sum g), which
+ *     covers the node sums (up to 16,000 sources at 2^-24 each), the textures and the
+ *     shader's arithmetic with float filtering weights. GPUs that filter with 8-bit
+ *     weights add up to 3/512 of the spread of the 8 corner values (docs/far-field.md).
+ *
+ * The bound is for the Phong model (VTK's default lighting). With PBR the far field
+ * carries the diffuse part only and the bound does not cover the far lights' PBR specular.
+ * The refinement of the shading (the exact far sum where a pixel straddles saturation) only
+ * makes the error smaller.
+ */
+#ifndef vtkClusteredLightingFarFieldBound_h
+#define vtkClusteredLightingFarFieldBound_h
+
+#include "vtkClusteredLightingFarFieldTree.h"
+
+#include <algorithm> // for std::max
+#include <array>     // for std::array
+#include <cmath>     // for std::abs
+#include <cstdint>   // for std::int64_t
+#include <glm/glm.hpp>
+#include <unordered_map> // for the atoms
+#include <vector>        // for std::vector
+
+namespace vtkClusteredLighting
+{
+
+/// A shaded point: where, how it faces, and its Phong material per colour channel.
+struct FarFieldShadingPoint
+{
+  glm::dvec3 P = glm::dvec3(0.0);           ///< world position
+  glm::dvec3 N = glm::dvec3(0.0, 0.0, 1.0); ///< unit normal (towards the viewer)
+  glm::dvec3 R = glm::dvec3(0.0, 0.0, 1.0); ///< unit mirrored view direction
+  glm::dvec3 Kd = glm::dvec3(1.0);          ///< diffuse colour x Diffuse
+  glm::dvec3 Ks = glm::dvec3(0.0);          ///< specular colour x Specular
+  double Power = 1.0;                       ///< specular power
+};
+
+/// What a far field was built from (the arguments of ComputeFarFieldMoments).
+struct FarFieldBuildInputs
+{
+  const FarFieldGrid* Grid = nullptr;
+  const std::vector<PreparedLight>* Lights = nullptr;
+  const std::vector<double>* NearRadii = nullptr;
+  const FarFieldLightTree* Tree = nullptr;
+  double Grouping = 0.0;
+};
+
+namespace Detail
+{
+/// A source of a block's list: a tree node taken whole, or a light taken alone.
+struct BoundSource
+{
+  int Group; ///< tree node, or -1
+  int Light; ///< light index when Group is -1
+};
+} // namespace Detail
+
+/// Block source lists kept between calls of ComputeFarFieldErrorBound for one build
+/// (neighbouring points share blocks). Not thread-safe: one per thread.
+struct FarFieldBoundCache
+{
+  std::unordered_map<std::int64_t, std::vector<Detail::BoundSource>> Lists;
+};
+
+namespace Detail
+{
+/// The quantities whose errors the bound needs, for one light's far part g (per unit
+/// colour) from unit direction u: S, V.N, N^T T N, q_1(N.u), V.R, R^T T R, q_n(R.u).
+constexpr int BoundQuantities = 7;
+inline void AddBoundQuantities(const FarFieldShadingPoint& s, const glm::dvec3& qd,
+  const glm::dvec3& qn, const glm::dvec3& color, double g, const glm::dvec3& u, double* out)
+{
+  const double tn = glm::dot(s.N, u), tr = glm::dot(s.R, u);
+  const double v[BoundQuantities] = { 1.0, tn, tn * tn,
+    qd.x + qd.y * tn + qd.z * 0.5 * (3.0 * tn * tn - 1.0), tr, tr * tr,
+    qn.x + qn.y * tr + qn.z * 0.5 * (3.0 * tr * tr - 1.0) };
+  for (int c = 0; c < 3; ++c)
+  {
+    for (int k = 0; k < BoundQuantities; ++k)
+    {
+      out[c * BoundQuantities + k] += color[c] * g * v[k];
+    }
+  }
+}
+} // namespace Detail
+
+/**
+ * The stated bound (see the file description) of the far field's error at the shaded
+ * point s, per colour channel, in the units of the light colours (multiply by 255 for
+ * 8-bit steps). `cache` (optional) keeps the blocks' source lists for further calls on
+ * the same build.
+ */
+inline glm::dvec3 ComputeFarFieldErrorBound(
+  const FarFieldShadingPoint& s, const FarFieldBuildInputs& in, FarFieldBoundCache* cache = nullptr)
+{
+  const FarFieldGrid& g = *in.Grid;
+  const std::vector<PreparedLight>& lights = *in.Lights;
+  const std::vector<double>& radii = *in.NearRadii;
+  const FarFieldLightTree& tree = *in.Tree;
+  const glm::dvec3 qd = ComputeLobeKernel(1.0), qn = ComputeLobeKernel(s.Power);
+  constexpr int Q = Detail::BoundQuantities;
+
+  // The cell and weights, as InterpolateFarMoments.
+  const glm::dvec3 u0 = (s.P - g.Origin) / g.Spacing;
+  int base[3];
+  double t[3];
+  for (int a = 0; a < 3; ++a)
+  {
+    const double c = std::min(std::max(u0[a], 0.0), static_cast<double>(g.Dims[a] - 1));
+    base[a] = std::min(static_cast<int>(std::floor(c)), std::max(g.Dims[a] - 2, 0));
+    t[a] = c - base[a];
+  }
+
+  // Each corner's sources, by block (corners of one block share them).
+  using Source = Detail::BoundSource;
+  struct Corner
+  {
+    glm::dvec3 Position;
+    double Weight;
+    const std::vector<Source>* List;
+  };
+  FarFieldBoundCache local;
+  FarFieldBoundCache& lists = cache ? *cache : local;
+  std::vector<Corner> corners;
+  std::vector<int> stack;
+  const std::array<int, 3> blocks = GetFarFieldBlocks(g);
+  for (int corner = 0; corner < 8; ++corner)
+  {
+    const int di = corner & 1, dj = (corner >> 1) & 1, dk = (corner >> 2) & 1;
+    const double w = (di ? t[0] : 1 - t[0]) * (dj ? t[1] : 1 - t[1]) * (dk ? t[2] : 1 - t[2]);
+    if (!(w > 0.0))
+    {
+      continue;
+    }
+    const int i = std::min(base[0] + di, g.Dims[0] - 1);
+    const int j = std::min(base[1] + dj, g.Dims[1] - 1);
+    const int k = std::min(base[2] + dk, g.Dims[2] - 1);
+    const std::int64_t key =
+      (static_cast<std::int64_t>(k / FarFieldBlockSize) * blocks[1] + j / FarFieldBlockSize) *
+        blocks[0] +
+      i / FarFieldBlockSize;
+    auto it = lists.Lists.find(key);
+    if (it == lists.Lists.end())
+    {
+      glm::dvec3 lo, hi;
+      GetFarFieldBlockBox(g, glm::ivec3(i, j, k), lo, hi);
+      std::vector<Source> sources;
+      CollectFarFieldSources(
+        tree, lights, radii, in.Grouping, lo, hi, stack,
+        [&](int node) {
+          sources.push_back(Source{ node, -1 });
+        },
+        [&](int light, bool) {
+          sources.push_back(Source{ -1, light });
+        });
+      it = lists.Lists.emplace(key, std::move(sources)).first;
+    }
+    corners.push_back(Corner{ g.NodePosition(i, j, k), w, &it->second });
+  }
+
+  // Atoms: the topmost groups taken whole at some corner; lights under none are alone.
+  std::vector<int> groups;
+  for (const Corner& c : corners)
+  {
+    for (const Source& src : *c.List)
+    {
+      if (src.Group >= 0)
+      {
+        groups.push_back(src.Group);
+      }
+    }
+  }
+  std::sort(groups.begin(), groups.end());
+  groups.erase(std::unique(groups.begin(), groups.end()), groups.end());
+  auto topmost = [&](int node)
+  {
+    int atom = -1;
+    for (; node >= 0; node = tree.Nodes[static_cast<std::size_t>(node)].Parent)
+    {
+      atom = std::binary_search(groups.begin(), groups.end(), node) ? node : atom;
+    }
+    return atom;
+  };
+  // Atom key: tree node >= 0, or -1 - light.
+  auto atomOfLight = [&](int light)
+  {
+    const int atom = topmost(tree.LeafOf[static_cast<std::size_t>(light)]);
+    return atom >= 0 ? atom : -1 - light;
+  };
+  std::unordered_map<int, std::size_t> atomIndex;
+  std::vector<double> interpolated;
+  auto slot = [&](int key)
+  {
+    auto it = atomIndex.find(key);
+    if (it == atomIndex.end())
+    {
+      it = atomIndex.emplace(key, atomIndex.size()).first;
+      interpolated.resize(std::size_t{ 3 } * Q * atomIndex.size(), 0.0);
+    }
+    return &interpolated[std::size_t{ 3 } * Q * it->second];
+  };
+
+  // The interpolated grid value, atom by atom, and the float term's far light.
+  glm::dvec3 farLightAtCorners(0.0);
+  for (const Corner& c : corners)
+  {
+    for (const Source& src : *c.List)
+    {
+      glm::dvec3 color, u;
+      double far;
+      int key;
+      if (src.Group >= 0)
+      {
+        const FarFieldLightTree::Node& n = tree.Nodes[static_cast<std::size_t>(src.Group)];
+        const glm::dvec3 v = n.Centroid - c.Position;
+        const double d = glm::length(v);
+        if (!(d > 0.0))
+        {
+          continue;
+        }
+        color = n.Color;
+        far = EvaluateAttenuation(d, n.Attenuation);
+        u = v / d;
+        key = topmost(src.Group);
+      }
+      else
+      {
+        const std::size_t l = static_cast<std::size_t>(src.Light);
+        if (!ComputeFarContribution(lights[l], radii[l], c.Position, far, u))
+        {
+          continue;
+        }
+        color = lights[l].Color;
+        key = atomOfLight(src.Light);
+      }
+      double scratch[3 * Q] = {};
+      Detail::AddBoundQuantities(s, qd, qn, color, far, u, scratch);
+      double* o = slot(key);
+      for (int q = 0; q < 3 * Q; ++q)
+      {
+        o[q] += c.Weight * scratch[q];
+      }
+      farLightAtCorners += c.Weight * color * far;
+    }
+  }
+
+  // The exact values at the point, atom by atom; the angular term light by light. Every
+  // light of the tree is in every corner's list, so its atom has a slot already.
+  std::vector<double> exact(interpolated.size(), 0.0);
+  glm::dvec3 angularDiffuse(0.0), angularSpecular(0.0), farLight(0.0);
+  glm::dvec3 exactS(0.0), exactNN(0.0), exactRR(0.0);
+  for (int l : tree.Order)
+  {
+    const std::size_t li = static_cast<std::size_t>(l);
+    double far;
+    glm::dvec3 u;
+    if (!ComputeFarContribution(lights[li], radii[li], s.P, far, u))
+    {
+      continue;
+    }
+    slot(atomOfLight(l));
+    exact.resize(interpolated.size(), 0.0);
+    double* o = &exact[std::size_t{ 3 } * Q * atomIndex[atomOfLight(l)]];
+    Detail::AddBoundQuantities(s, qd, qn, lights[li].Color, far, u, o);
+    const double tn = glm::dot(s.N, u), tr = glm::dot(s.R, u);
+    const double lobe = tn > 0.0 && tr > 0.0 ? std::pow(tr, s.Power) : 0.0;
+    const glm::dvec3 g = lights[li].Color * far;
+    angularDiffuse +=
+      g * std::abs(qd.x + qd.y * tn + qd.z * 0.5 * (3 * tn * tn - 1) - std::max(0.0, tn));
+    angularSpecular += g * std::abs(qn.x + qn.y * tr + qn.z * 0.5 * (3 * tr * tr - 1) - lobe);
+    farLight += g;
+    exactS += g;
+    exactNN += g * tn * tn;
+    exactRR += g * tr * tr;
+  }
+
+  glm::dvec3 bound(0.0);
+  for (int ch = 0; ch < 3; ++ch)
+  {
+    double delta[Q] = {};
+    for (std::size_t a = 0; a < atomIndex.size(); ++a)
+    {
+      for (int q = 0; q < Q; ++q)
+      {
+        const std::size_t at = std::size_t{ 3 } * Q * a + static_cast<std::size_t>(ch * Q + q);
+        delta[q] += std::abs(interpolated[at] - exact[at]);
+      }
+    }
+    const double dS = delta[0], dVN = delta[1], dNN = delta[2], dQd = delta[3];
+    const double dVR = delta[4], dRR = delta[5], dQn = delta[6];
+    // How far the clamp interval of ApplyMomentKernel can move.
+    auto upperShift = [&](double dV, double dD, double D)
+    {
+      const double product = exactS[ch] * dD + D * dS + dS * dD;
+      return std::max(0.5 * (dV + std::sqrt(std::max(product, 0.0))), 0.25 * (dS + 2.0 * dV + dD));
+    };
+    const double lowerShiftN = std::max(dVN, 0.5 * (dVN + dNN));
+    const double diffuse =
+      std::max(angularDiffuse[ch] + dQd, std::max(lowerShiftN, upperShift(dVN, dNN, exactNN[ch])));
+    const double specular =
+      std::max(angularSpecular[ch] + dQn, std::max(dRR, upperShift(dVR, dRR, exactRR[ch])));
+    const double precision =
+      1e-3 * 1.25 * (s.Kd[ch] + s.Ks[ch]) * std::max(farLight[ch], farLightAtCorners[ch]);
+    bound[ch] = s.Kd[ch] * diffuse + s.Ks[ch] * specular + precision;
+  }
+  return bound;
+}
+
+/// ComputeFarFieldErrorBound summarized over probe points (SummarizeFarFieldErrorBound).
+struct FarFieldBoundSummary
+{
+  double Max = 0.0;  ///< largest bound, 8-bit steps
+  double Mean = 0.0; ///< mean bound, 8-bit steps
+  int Probes = 0;    ///< points probed (each with 6 normals)
+};
+
+/**
+ * The stated bound for a white, fully diffuse surface (Kd 1, Ks 0) at probe points spread
+ * through the grid's interior (a Halton sequence, deterministic), each with the 6 axis
+ * normals, largest channel, in 8-bit steps. The number of probes keeps the work near
+ * `lightEvaluations` light evaluations (8 to 256 probes). A summary, not a supremum: the
+ * bound at a pixel depends on its position and normal (ComputeFarFieldErrorBound).
+ */
+inline FarFieldBoundSummary SummarizeFarFieldErrorBound(
+  const FarFieldBuildInputs& in, double lightEvaluations = 16777216.0)
+{
+  FarFieldBoundSummary summary;
+  if (!in.Grid || !in.Lights || !in.Tree || in.Tree->Nodes.empty())
+  {
+    return summary;
+  }
+  const FarFieldGrid& g = *in.Grid;
+  const double perProbe = 6.0 * (static_cast<double>(in.Tree->Order.size()) + 1.0);
+  summary.Probes =
+    static_cast<int>(std::min(256.0, std::max(8.0, std::floor(lightEvaluations / perProbe))));
+  auto halton = [](int i, int b)
+  {
+    double f = 1.0, r = 0.0;
+    for (; i > 0; i /= b)
+    {
+      f /= b;
+      r += f * (i % b);
+    }
+    return r;
+  };
+  const glm::dvec3 lo = g.Origin + g.Spacing;
+  const glm::dvec3 size = g.Spacing *
+    glm::dvec3(std::max(g.Dims[0] - 3, 0), std::max(g.Dims[1] - 3, 0), std::max(g.Dims[2] - 3, 0));
+  double sum = 0.0;
+  for (int i = 0; i < summary.Probes; ++i)
+  {
+    FarFieldShadingPoint s;
+    s.P = lo + size * glm::dvec3(halton(i + 1, 2), halton(i + 1, 3), halton(i + 1, 5));
+    for (int axis = 0; axis < 6; ++axis)
+    {
+      s.N = glm::dvec3(0.0);
+      s.N[axis % 3] = axis < 3 ? 1.0 : -1.0;
+      s.R = s.N;
+      const glm::dvec3 b = 255.0 * ComputeFarFieldErrorBound(s, in);
+      const double largest = std::max(b.x, std::max(b.y, b.z));
+      summary.Max = std::max(summary.Max, largest);
+      sum += largest;
+    }
+  }
+  summary.Mean = sum / (6.0 * summary.Probes);
+  return summary;
+}
+
+} // namespace vtkClusteredLighting
+
+#endif

@@ -1,0 +1,394 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @file vtkClusteredLightingFarFieldTree.h
+ * @brief GL-free far-field build: a light tree (Barnes-Hut) and the blocked node sums.
+ *
+ * The far field's grid nodes hold sums over every far-field light (vtkClusteredLightingFarField.h).
+ * Summed one by one that is nodes x lights terms (46,000 nodes x 4,096 lights: 190 million);
+ * the build here cuts it with a light tree and makes each term cheap.
+ *
+ * Light tree. A binary tree over the far-field lights (median split on the longest axis,
+ * leaves of up to 8 lights). Each node knows its lights' box, summed colour, centroid
+ * (weighted by summed colour), largest near radius and whether its lights share one
+ * attenuation.
+ *
+ * Aggregation (Barnes-Hut). Seen from far enough, a group of lights is one light of the
+ * summed colour at the centroid: for inverse-square lights the error of a group of extent
+ * s seen from distance D falls as (s / D)^2 (the centroid cancels the first-order term). A
+ * group is taken whole for a block of nodes when (AcceptFarFieldGroup)
+ *  - its lights share one attenuation,
+ *  - the block lies beyond every near radius in the group (so each light contributes its
+ *    whole light there, no window), and
+ *  - its extent (box diagonal) is below `grouping` times the distance from its centroid to
+ *    the block.
+ * The error this makes is part of the stated bound (vtkClusteredLightingFarFieldBound.h),
+ * computed group by group, so `grouping` trades build time for accuracy without ever
+ * making the bound false. Grouping 0 sums every light one by one.
+ *
+ * Blocks. The tree is walked once per block of 4 x 4 x 4 nodes (CollectFarFieldSources),
+ * giving one list of sources (groups and single lights, windowed where a node of the block
+ * may lie inside the light's near radius) for all 64 nodes, which are then summed in single
+ * precision in a loop the compiler vectorizes across the nodes. Positions are taken
+ * relative to the block's centre before they become floats, so a scene far from the
+ * origin keeps its precision. Blocks are independent: the caller splits them between
+ * threads.
+ */
+#ifndef vtkClusteredLightingFarFieldTree_h
+#define vtkClusteredLightingFarFieldTree_h
+
+#include "vtkClusteredLightingFarField.h"
+
+#include <algorithm> // for std::nth_element
+#include <array>     // for std::array
+#include <cstdint>   // for std::int64_t
+#include <glm/glm.hpp>
+#include <limits> // for std::numeric_limits
+#include <vector> // for std::vector
+
+namespace vtkClusteredLighting
+{
+
+/// The light tree of the far-field build (see the file description).
+struct FarFieldLightTree
+{
+  struct Node
+  {
+    glm::dvec3 Lo = glm::dvec3(0.0), Hi = glm::dvec3(0.0);
+    glm::dvec3 Centroid = glm::dvec3(0.0);
+    glm::dvec3 Color = glm::dvec3(0.0);
+    glm::dvec3 Attenuation = glm::dvec3(0.0); ///< shared by its lights, if Uniform
+    double MaxNearRadius = 0.0;
+    bool Uniform = true;
+    int First = 0, Count = 0; ///< range of Order
+    int Left = -1, Right = -1, Parent = -1;
+  };
+  std::vector<Node> Nodes; ///< Nodes[0] is the root
+  std::vector<int> Order;  ///< light indices, each node's lights contiguous
+  std::vector<int> LeafOf; ///< per light: its leaf node, -1 for lights not in the tree
+  int LeafSize = 8;
+};
+
+namespace Detail
+{
+inline int BuildTreeNode(FarFieldLightTree& t, const std::vector<PreparedLight>& lights,
+  const std::vector<double>& nearRadii, int first, int count, int parent)
+{
+  const int index = static_cast<int>(t.Nodes.size());
+  t.Nodes.emplace_back();
+  FarFieldLightTree::Node n;
+  n.First = first;
+  n.Count = count;
+  n.Parent = parent;
+  n.Lo = glm::dvec3(std::numeric_limits<double>::max());
+  n.Hi = glm::dvec3(-std::numeric_limits<double>::max());
+  double weight = 0.0;
+  const glm::dvec3 att0 = lights[static_cast<std::size_t>(t.Order[first])].Attenuation;
+  for (int i = first; i < first + count; ++i)
+  {
+    const PreparedLight& l = lights[static_cast<std::size_t>(t.Order[i])];
+    n.Lo = glm::min(n.Lo, l.PositionWC);
+    n.Hi = glm::max(n.Hi, l.PositionWC);
+    n.Color += l.Color;
+    const double w = l.Color.x + l.Color.y + l.Color.z;
+    n.Centroid += w * l.PositionWC;
+    weight += w;
+    n.MaxNearRadius = std::max(n.MaxNearRadius, nearRadii[static_cast<std::size_t>(t.Order[i])]);
+    n.Uniform = n.Uniform && l.Attenuation == att0;
+  }
+  n.Centroid = weight > 0.0 ? n.Centroid / weight : 0.5 * (n.Lo + n.Hi);
+  n.Attenuation = att0;
+  if (count > t.LeafSize)
+  {
+    const glm::dvec3 extent = n.Hi - n.Lo;
+    const int axis =
+      extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
+    const int half = count / 2;
+    std::nth_element(t.Order.begin() + first, t.Order.begin() + first + half,
+      t.Order.begin() + first + count,
+      [&](int a, int b)
+      {
+        return lights[static_cast<std::size_t>(a)].PositionWC[axis] <
+          lights[static_cast<std::size_t>(b)].PositionWC[axis];
+      });
+    n.Left = BuildTreeNode(t, lights, nearRadii, first, half, index);
+    n.Right = BuildTreeNode(t, lights, nearRadii, first + half, count - half, index);
+  }
+  else
+  {
+    for (int i = first; i < first + count; ++i)
+    {
+      t.LeafOf[static_cast<std::size_t>(t.Order[i])] = index;
+    }
+  }
+  t.Nodes[static_cast<std::size_t>(index)] = n;
+  return index;
+}
+} // namespace Detail
+
+/// The light tree over the lights with a far part (finite near radius) among `lights`.
+inline FarFieldLightTree BuildFarFieldLightTree(
+  const std::vector<PreparedLight>& lights, const std::vector<double>& nearRadii, int leafSize = 8)
+{
+  FarFieldLightTree t;
+  t.LeafSize = std::max(1, leafSize);
+  t.LeafOf.assign(lights.size(), -1);
+  for (std::size_t i = 0; i < lights.size(); ++i)
+  {
+    if (!std::isinf(nearRadii[i]))
+    {
+      t.Order.push_back(static_cast<int>(i));
+    }
+  }
+  if (!t.Order.empty())
+  {
+    t.Nodes.reserve(4 * t.Order.size() / static_cast<std::size_t>(t.LeafSize) + 2);
+    Detail::BuildTreeNode(t, lights, nearRadii, 0, static_cast<int>(t.Order.size()), -1);
+  }
+  return t;
+}
+
+/// Whether tree node n is taken as one light for every point of the box [lo, hi] (see
+/// the file description).
+inline bool AcceptFarFieldGroup(
+  const FarFieldLightTree::Node& n, const glm::dvec3& lo, const glm::dvec3& hi, double grouping)
+{
+  if (n.Count < 2 || !n.Uniform || !(grouping > 0.0))
+  {
+    return false;
+  }
+  const double boxDistance = glm::length(glm::max(glm::max(n.Lo - hi, lo - n.Hi), glm::dvec3(0.0)));
+  const double centroidDistance =
+    glm::length(glm::max(glm::max(lo - n.Centroid, n.Centroid - hi), glm::dvec3(0.0)));
+  return boxDistance > 0.0 && boxDistance >= n.MaxNearRadius &&
+    glm::length(n.Hi - n.Lo) < grouping * centroidDistance;
+}
+
+/**
+ * The sources of the far field for the nodes in the box [lo, hi]: walks the tree and
+ * calls onGroup(node index) for each group taken whole (AcceptFarFieldGroup) and
+ * onLight(light index, windowed) for each light taken alone, windowed when some point of
+ * the box may lie inside its near radius. `stack` is scratch space.
+ */
+template <typename OnGroup, typename OnLight>
+void CollectFarFieldSources(const FarFieldLightTree& tree, const std::vector<PreparedLight>& lights,
+  const std::vector<double>& nearRadii, double grouping, const glm::dvec3& lo, const glm::dvec3& hi,
+  std::vector<int>& stack, OnGroup onGroup, OnLight onLight)
+{
+  stack.clear();
+  if (!tree.Nodes.empty())
+  {
+    stack.push_back(0);
+  }
+  while (!stack.empty())
+  {
+    const int index = stack.back();
+    stack.pop_back();
+    const FarFieldLightTree::Node& n = tree.Nodes[static_cast<std::size_t>(index)];
+    if (AcceptFarFieldGroup(n, lo, hi, grouping))
+    {
+      onGroup(index);
+      continue;
+    }
+    if (n.Left < 0)
+    {
+      for (int q = n.First; q < n.First + n.Count; ++q)
+      {
+        const int l = tree.Order[static_cast<std::size_t>(q)];
+        const glm::dvec3& x = lights[static_cast<std::size_t>(l)].PositionWC;
+        const double r = nearRadii[static_cast<std::size_t>(l)];
+        const double d = glm::length(glm::max(glm::max(lo - x, x - hi), glm::dvec3(0.0)));
+        onLight(l, r > 0.0 && d < r);
+      }
+      continue;
+    }
+    stack.push_back(n.Left);
+    stack.push_back(n.Right);
+  }
+}
+
+/// Nodes per axis of a block of the builder (ComputeFarFieldMoments).
+constexpr int FarFieldBlockSize = 4;
+constexpr int FarFieldBlockNodes = FarFieldBlockSize * FarFieldBlockSize * FarFieldBlockSize;
+
+/// Blocks per axis of a grid.
+inline std::array<int, 3> GetFarFieldBlocks(const FarFieldGrid& grid)
+{
+  std::array<int, 3> b;
+  for (int a = 0; a < 3; ++a)
+  {
+    b[a] = (grid.Dims[a] + FarFieldBlockSize - 1) / FarFieldBlockSize;
+  }
+  return b;
+}
+
+/// The world box of the nodes of the block holding node (i, j, k).
+inline void GetFarFieldBlockBox(
+  const FarFieldGrid& grid, const glm::ivec3& node, glm::dvec3& lo, glm::dvec3& hi)
+{
+  const int i0 = node.x - node.x % FarFieldBlockSize, j0 = node.y - node.y % FarFieldBlockSize,
+            k0 = node.z - node.z % FarFieldBlockSize;
+  lo = grid.NodePosition(i0, j0, k0);
+  hi = grid.NodePosition(std::min(i0 + FarFieldBlockSize, grid.Dims[0]) - 1,
+    std::min(j0 + FarFieldBlockSize, grid.Dims[1]) - 1,
+    std::min(k0 + FarFieldBlockSize, grid.Dims[2]) - 1);
+}
+
+namespace Detail
+{
+/// Sources of one block, structure of arrays, positions relative to the block's centre.
+struct FarFieldSources
+{
+  std::vector<float> X, Y, Z, R, G, B, A0, A1, A2, InverseNearRadius;
+  void Clear()
+  {
+    for (std::vector<float>* v : { &X, &Y, &Z, &R, &G, &B, &A0, &A1, &A2, &InverseNearRadius })
+    {
+      v->clear();
+    }
+  }
+  void Add(const glm::dvec3& relative, const glm::dvec3& color, const glm::dvec3& att,
+    double inverseNearRadius)
+  {
+    X.push_back(static_cast<float>(relative.x));
+    Y.push_back(static_cast<float>(relative.y));
+    Z.push_back(static_cast<float>(relative.z));
+    R.push_back(static_cast<float>(color.x));
+    G.push_back(static_cast<float>(color.y));
+    B.push_back(static_cast<float>(color.z));
+    A0.push_back(static_cast<float>(att.x));
+    A1.push_back(static_cast<float>(att.y));
+    A2.push_back(static_cast<float>(att.z));
+    InverseNearRadius.push_back(static_cast<float>(inverseNearRadius));
+  }
+  std::size_t Size() const { return X.size(); }
+};
+
+/// Adds sources into the 27 moments of the block's nodes (node positions px, py, pz
+/// relative to the block's centre). Windowed: each source's far part 1 - W(d / r);
+/// otherwise the whole light. Branch-free so that the compiler vectorizes it across nodes
+/// (given -fno-math-errno -fno-trapping-math, see CMakeLists.txt).
+template <bool Windowed>
+inline void AccumulateBlock(const FarFieldSources& s, const float* px, const float* py,
+  const float* pz, float (*acc)[FarFieldBlockNodes])
+{
+  for (std::size_t q = 0; q < s.Size(); ++q)
+  {
+    const float sx = s.X[q], sy = s.Y[q], sz = s.Z[q];
+    const float cr = s.R[q], cg = s.G[q], cb = s.B[q];
+    const float a0 = s.A0[q], a1 = s.A1[q], a2 = s.A2[q], ir = s.InverseNearRadius[q];
+    for (int i = 0; i < FarFieldBlockNodes; ++i)
+    {
+      const float dx = sx - px[i], dy = sy - py[i], dz = sz - pz[i];
+      const float d = std::sqrt(dx * dx + dy * dy + dz * dz);
+      // A light on the node (d = 0) adds nothing, as in ComputeFarContribution.
+      const float inv = 1.0f / (d + 1e-30f);
+      const float notOnNode = std::min(d * 1e30f, 1.0f);
+      float g = notOnNode / (a0 + d * (a1 + d * a2) + 1e-30f);
+      if (Windowed)
+      {
+        const float x = d * ir, x2 = x * x;
+        const float w = std::max(0.0f, 1.0f - x2 * x2);
+        g *= 1.0f - w * w;
+      }
+      const float ux = dx * inv, uy = dy * inv, uz = dz * inv;
+      const float basis[FarFieldMomentsPerChannel] = { 1.0f, ux, uy, uz, ux * ux, uy * uy, ux * uy,
+        ux * uz, uy * uz };
+      const float gr = g * cr, gg = g * cg, gb = g * cb;
+      for (int m = 0; m < FarFieldMomentsPerChannel; ++m)
+      {
+        acc[m][i] += gr * basis[m];
+        acc[FarFieldMomentsPerChannel + m][i] += gg * basis[m];
+        acc[2 * FarFieldMomentsPerChannel + m][i] += gb * basis[m];
+      }
+    }
+  }
+}
+} // namespace Detail
+
+/**
+ * The grid's node moments (FarFieldFloatsPerNode per node, channel-major, as
+ * ComputeFarFieldMomentsExact gives them) with the light tree, a block at a time (see the
+ * file description). Fills blocks [b0, b1) (block index x fastest, GetFarFieldBlocks);
+ * `moments` must hold every node. Returns the number of (node, source) pairs summed: the
+ * cost.
+ */
+inline std::int64_t ComputeFarFieldMoments(const FarFieldGrid& grid,
+  const std::vector<PreparedLight>& lights, const std::vector<double>& nearRadii,
+  const FarFieldLightTree& tree, double grouping, std::int64_t b0, std::int64_t b1,
+  std::vector<double>& moments)
+{
+  const std::array<int, 3> blocks = GetFarFieldBlocks(grid);
+  Detail::FarFieldSources whole, windowed;
+  std::vector<int> stack;
+  float px[FarFieldBlockNodes], py[FarFieldBlockNodes], pz[FarFieldBlockNodes];
+  float acc[FarFieldFloatsPerNode][FarFieldBlockNodes];
+  std::int64_t pairs = 0;
+  for (std::int64_t b = b0; b < b1; ++b)
+  {
+    const int i0 = static_cast<int>(b % blocks[0]) * FarFieldBlockSize;
+    const int j0 = static_cast<int>((b / blocks[0]) % blocks[1]) * FarFieldBlockSize;
+    const int k0 =
+      static_cast<int>(b / (static_cast<std::int64_t>(blocks[0]) * blocks[1])) * FarFieldBlockSize;
+    const int ni = std::min(FarFieldBlockSize, grid.Dims[0] - i0);
+    const int nj = std::min(FarFieldBlockSize, grid.Dims[1] - j0);
+    const int nk = std::min(FarFieldBlockSize, grid.Dims[2] - k0);
+    glm::dvec3 lo, hi;
+    GetFarFieldBlockBox(grid, glm::ivec3(i0, j0, k0), lo, hi);
+    const glm::dvec3 center = 0.5 * (lo + hi);
+    for (int n = 0; n < FarFieldBlockNodes; ++n)
+    {
+      // Nodes past the grid's end repeat the last one (summed, not stored).
+      const int di = std::min(n % FarFieldBlockSize, ni - 1);
+      const int dj = std::min((n / FarFieldBlockSize) % FarFieldBlockSize, nj - 1);
+      const int dk = std::min(n / (FarFieldBlockSize * FarFieldBlockSize), nk - 1);
+      const glm::dvec3 p = grid.NodePosition(i0 + di, j0 + dj, k0 + dk) - center;
+      px[n] = static_cast<float>(p.x);
+      py[n] = static_cast<float>(p.y);
+      pz[n] = static_cast<float>(p.z);
+    }
+    whole.Clear();
+    windowed.Clear();
+    CollectFarFieldSources(
+      tree, lights, nearRadii, grouping, lo, hi, stack,
+      [&](int node)
+      {
+        const FarFieldLightTree::Node& n = tree.Nodes[static_cast<std::size_t>(node)];
+        whole.Add(n.Centroid - center, n.Color, n.Attenuation, 0.0);
+      },
+      [&](int light, bool isWindowed)
+      {
+        const PreparedLight& l = lights[static_cast<std::size_t>(light)];
+        (isWindowed ? windowed : whole)
+          .Add(l.PositionWC - center, l.Color, l.Attenuation,
+            isWindowed ? 1.0 / nearRadii[static_cast<std::size_t>(light)] : 0.0);
+      });
+    for (auto& row : acc)
+    {
+      std::fill(row, row + FarFieldBlockNodes, 0.0f);
+    }
+    Detail::AccumulateBlock<false>(whole, px, py, pz, acc);
+    Detail::AccumulateBlock<true>(windowed, px, py, pz, acc);
+    pairs += static_cast<std::int64_t>(whole.Size() + windowed.Size()) * ni * nj * nk;
+    for (int dk = 0; dk < nk; ++dk)
+    {
+      for (int dj = 0; dj < nj; ++dj)
+      {
+        for (int di = 0; di < ni; ++di)
+        {
+          const int n = (dk * FarFieldBlockSize + dj) * FarFieldBlockSize + di;
+          double* o = &moments[static_cast<std::size_t>(grid.NodeIndex(i0 + di, j0 + dj, k0 + dk)) *
+            FarFieldFloatsPerNode];
+          for (int q = 0; q < FarFieldFloatsPerNode; ++q)
+          {
+            o[q] = acc[q][n];
+          }
+        }
+      }
+    }
+  }
+  return pairs;
+}
+
+} // namespace vtkClusteredLighting
+
+#endif

@@ -1,0 +1,156 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "vtkClusteredLightingFarFieldTextures.h"
+
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkSMPTools.h"
+#include "vtkTextureObject.h"
+#include "vtk_glew.h" // for GL enums
+
+#include <algorithm> // for std::max
+#include <atomic>    // for the pair count
+#include <chrono>    // for timings
+
+using namespace vtkClusteredLighting;
+
+//------------------------------------------------------------------------------
+vtkClusteredLightingFarFieldTextures::~vtkClusteredLightingFarFieldTextures()
+{
+  this->Release(nullptr);
+}
+
+//------------------------------------------------------------------------------
+bool vtkClusteredLightingFarFieldTextures::Build(
+  vtkOpenGLRenderWindow* rw, const FarFieldPlan& plan, const std::vector<PreparedLight>& lights)
+{
+  const auto t0 = std::chrono::steady_clock::now();
+  const FarFieldGrid& grid = plan.Grid;
+  this->NearRadii = GetFarFieldNearRadii(lights);
+  this->Tree = BuildFarFieldLightTree(lights, this->NearRadii);
+  const std::vector<double>& nearRadii = this->NearRadii;
+  const FarFieldLightTree& tree = this->Tree;
+  this->Moments.assign(
+    static_cast<std::size_t>(grid.GetNumberOfNodes()) * FarFieldFloatsPerNode, 0.0);
+  const std::array<int, 3> blocks = GetFarFieldBlocks(grid);
+  std::atomic<std::int64_t> pairs(0);
+  vtkSMPTools::For(0, static_cast<vtkIdType>(blocks[0]) * blocks[1] * blocks[2], 1,
+    [&](vtkIdType b0, vtkIdType b1)
+    {
+      pairs += ComputeFarFieldMoments(grid, lights, nearRadii, tree, plan.Grouping, b0, b1,
+        this->Moments);
+    });
+  this->SourcesPerNode = static_cast<double>(pairs.load()) / std::max<std::int64_t>(grid.GetNumberOfNodes(), 1);
+  const std::array<std::vector<float>, FarFieldTextures> texels = PackFarFieldTexels(this->Moments);
+
+  bool ok = true;
+  const bool resize = grid.Dims != this->Dims;
+  for (int q = 0; q < FarFieldTextures && ok; ++q)
+  {
+    vtkTextureObject*& tex = this->Textures[static_cast<std::size_t>(q)];
+    if (tex && resize)
+    {
+      tex->ReleaseGraphicsResources(rw);
+      tex->Delete();
+      tex = nullptr;
+    }
+    if (!tex)
+    {
+      tex = vtkTextureObject::New();
+      tex->SetContext(rw);
+      tex->SetInternalFormat(GL_RGBA32F);
+      tex->SetFormat(GL_RGBA);
+      tex->SetDataType(GL_FLOAT);
+      tex->SetMinificationFilter(vtkTextureObject::Linear);
+      tex->SetMagnificationFilter(vtkTextureObject::Linear);
+      tex->SetWrapS(vtkTextureObject::ClampToEdge);
+      tex->SetWrapT(vtkTextureObject::ClampToEdge);
+      tex->SetWrapR(vtkTextureObject::ClampToEdge);
+    }
+    // Create3DFromRaw re-specifies the image (same size: new contents).
+    ok = tex->Create3DFromRaw(static_cast<unsigned int>(grid.Dims[0]),
+      static_cast<unsigned int>(grid.Dims[1]), static_cast<unsigned int>(grid.Dims[2]), 4,
+      VTK_FLOAT, const_cast<float*>(texels[static_cast<std::size_t>(q)].data()));
+  }
+  this->Dims = ok ? grid.Dims : std::array<int, 3>{ { 0, 0, 0 } };
+  this->BuildTime =
+    std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  return ok;
+}
+
+//------------------------------------------------------------------------------
+void vtkClusteredLightingFarFieldTextures::Activate()
+{
+  for (vtkTextureObject* tex : this->Textures)
+  {
+    if (tex && tex->GetHandle())
+    {
+      tex->Activate();
+    }
+  }
+}
+
+void vtkClusteredLightingFarFieldTextures::Deactivate()
+{
+  for (vtkTextureObject* tex : this->Textures)
+  {
+    if (tex && tex->GetTextureUnit() >= 0)
+    {
+      tex->Deactivate();
+    }
+  }
+}
+
+std::array<int, FarFieldTextures> vtkClusteredLightingFarFieldTextures::GetUnits() const
+{
+  std::array<int, FarFieldTextures> units;
+  for (std::size_t q = 0; q < units.size(); ++q)
+  {
+    units[q] = this->Textures[q] ? this->Textures[q]->GetTextureUnit() : -1;
+  }
+  return units;
+}
+
+//------------------------------------------------------------------------------
+std::uint64_t vtkClusteredLightingFarFieldTextures::GetBytes() const
+{
+  return 16ull * FarFieldTextures * static_cast<std::uint64_t>(this->Dims[0]) * this->Dims[1] *
+    this->Dims[2];
+}
+
+int vtkClusteredLightingFarFieldTextures::GetNumberOfGLObjects() const
+{
+  int n = 0;
+  for (vtkTextureObject* tex : this->Textures)
+  {
+    n += (tex && tex->GetHandle()) ? 1 : 0;
+  }
+  return n;
+}
+
+void vtkClusteredLightingFarFieldTextures::GetGLObjectNames(
+  std::vector<std::pair<unsigned int, unsigned int>>& names) const
+{
+  for (vtkTextureObject* tex : this->Textures)
+  {
+    if (tex && tex->GetHandle())
+    {
+      names.emplace_back(GL_TEXTURE, tex->GetHandle());
+    }
+  }
+}
+
+void vtkClusteredLightingFarFieldTextures::Release(vtkWindow* w)
+{
+  for (vtkTextureObject*& tex : this->Textures)
+  {
+    if (tex)
+    {
+      if (w)
+      {
+        tex->ReleaseGraphicsResources(w);
+      }
+      tex->Delete();
+      tex = nullptr;
+    }
+  }
+  this->Dims = { { 0, 0, 0 } };
+}

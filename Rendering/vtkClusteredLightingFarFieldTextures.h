@@ -1,0 +1,83 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @class   vtkClusteredLightingFarFieldTextures
+ * @brief   the far field of one renderer's lights: build on the CPU, 3D textures for shading
+ *
+ * Private to the module; owned by vtkClusteredLightingAssigner next to the light records.
+ * What the far field is, why, and its error bound: Rendering/Core/vtkClusteredLightingFarField.h
+ * and docs/far-field.md.
+ *
+ * Build (only when the lights, the far-field options or the region change; a moving camera
+ * never rebuilds it, the far field lives in world space): the node values are summed on
+ * the CPU with the light tree (ComputeFarFieldMoments: blocks of 4 x 4 x 4 nodes, single
+ * precision, vectorized), the blocks split between threads with vtkSMPTools, then packed
+ * and uploaded.
+ *
+ * GL objects: 7 3D textures, RGBA32F, of the grid's dimensions (27 moments per node, 112
+ * bytes with the padding), linear filtering (the shading code's trilinear interpolation),
+ * clamped to edge.
+ *
+ * @sa vtkClusteredLightingAssigner
+ */
+#ifndef vtkClusteredLightingFarFieldTextures_h
+#define vtkClusteredLightingFarFieldTextures_h
+
+#include "vtkClusteredLightingFarFieldTree.h" // for FarFieldPlan, the light tree (Rendering/Core)
+
+#include <array>   // for std::array
+#include <cstdint> // for std::uint64_t
+#include <utility> // for std::pair
+#include <vector>  // for std::vector
+
+class vtkOpenGLRenderWindow;
+class vtkTextureObject;
+class vtkWindow;
+
+class vtkClusteredLightingFarFieldTextures
+{
+public:
+  vtkClusteredLightingFarFieldTextures() = default;
+  ~vtkClusteredLightingFarFieldTextures();
+
+  /**
+   * Sums the far field of `lights` (PreparedLight::FarField ones) on the plan's grid and
+   * uploads it. Returns false on a GL failure. BuildTime (ms) covers the sums and upload.
+   */
+  bool Build(vtkOpenGLRenderWindow* rw, const vtkClusteredLighting::FarFieldPlan& plan,
+    const std::vector<vtkClusteredLighting::PreparedLight>& lights);
+
+  /// The node moments of the last build (FarFieldFloatsPerNode per node; kept for tests).
+  const std::vector<double>& GetMoments() const { return this->Moments; }
+  double GetBuildTime() const { return this->BuildTime; }
+  /// Sources (lights and groups) summed per node in the last build: its cost.
+  double GetSourcesPerNode() const { return this->SourcesPerNode; }
+  /// The light tree and near radii of the last build (for its error bound).
+  const vtkClusteredLighting::FarFieldLightTree& GetTree() const { return this->Tree; }
+  const std::vector<double>& GetNearRadii() const { return this->NearRadii; }
+
+  ///@{
+  /// Bind the textures for the shading pass; units (-1 when not bound) in texture order.
+  void Activate();
+  void Deactivate();
+  std::array<int, vtkClusteredLighting::FarFieldTextures> GetUnits() const;
+  ///@}
+
+  std::uint64_t GetBytes() const;
+  int GetNumberOfGLObjects() const;
+  void GetGLObjectNames(std::vector<std::pair<unsigned int, unsigned int>>& names) const;
+  void Release(vtkWindow* w);
+
+private:
+  vtkClusteredLightingFarFieldTextures(const vtkClusteredLightingFarFieldTextures&) = delete;
+  void operator=(const vtkClusteredLightingFarFieldTextures&) = delete;
+
+  std::array<vtkTextureObject*, vtkClusteredLighting::FarFieldTextures> Textures{};
+  std::array<int, 3> Dims = { { 0, 0, 0 } };
+  std::vector<double> Moments;
+  std::vector<double> NearRadii;
+  vtkClusteredLighting::FarFieldLightTree Tree;
+  double BuildTime = 0.0;
+  double SourcesPerNode = 0.0;
+};
+
+#endif

@@ -186,8 +186,8 @@ public:
    * array is scaled from [0, 255] to [0, 1], as for an input's color array); 1 for
    * intensities, radii, cone angles (degrees) and exponents. A negative radius means "no
    * explicit radius" (as DefaultRadius); GetRadii() gives -1 for such lights. A null
-   * array, one of another kind, a wrong number of components or of tuples is an error
-   * that changes nothing; the setters return false then.
+   * array or a wrong number of components or of tuples is an error (vtkErrorMacro
+   * naming the method) that changes nothing; the setters return false then.
    * The getters resize the given vtkDoubleArray to GetNumberOfLights() tuples and fill
    * it; intensities are given as set, without IntensityScale.
    */

@@ -1,18 +1,25 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkClusteredLightSet.h"
 
+#include "vtkAlgorithmOutput.h"
+#include "vtkCommand.h"
 #include "vtkDataArray.h"
+#include "vtkDataObject.h"
 #include "vtkDemandDrivenPipeline.h"
+#include "vtkDoubleArray.h"
 #include "vtkExecutive.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
+#include "vtkWeakPointer.h"
 
-#include <sstream> // for std::ostringstream
-#include <string>  // for std::string
-#include <vector>  // for std::vector
+#include <algorithm> // for std::copy
+#include <cmath>     // for std::isnan
+#include <sstream>   // for std::ostringstream
+#include <string>    // for std::string
+#include <vector>    // for std::vector
 
 vtkStandardNewMacro(vtkClusteredLightSet);
 
@@ -28,6 +35,14 @@ struct vtkClusteredLightSet::vtkInternals
   std::vector<double> Direction;
   std::vector<double> ConeAngle;
   std::vector<double> Exponent;
+
+  // The input connection a per-light setter was last warned about (item: the input
+  // defines the lights); a new connection warns again.
+  vtkWeakPointer<vtkAlgorithmOutput> WarnedConnection;
+  // The input-type error last reported and the connection it was about, so that it is
+  // given once while it persists.
+  std::string ReportedInputError;
+  vtkWeakPointer<vtkAlgorithmOutput> ReportedInputConnection;
 
   void Resize(std::size_t n)
   {
@@ -77,8 +92,29 @@ vtkClusteredLightSet::~vtkClusteredLightSet()
 }
 
 //------------------------------------------------------------------------------
+void vtkClusteredLightSet::WarnIfInputDefinesLights(const char* setter)
+{
+  vtkAlgorithmOutput* connection =
+    this->GetNumberOfInputConnections(0) > 0 ? this->GetInputConnection(0, 0) : nullptr;
+  if (!connection || connection == this->Internals->WarnedConnection.GetPointer())
+  {
+    return;
+  }
+  this->Internals->WarnedConnection = connection;
+  vtkAlgorithm* producer = connection->GetProducer();
+  vtkWarningMacro(<< setter << "() changes the lights of a light set that has an input ("
+                  << (producer ? producer->GetClassName() : "a pipeline")
+                  << "): the input defines the lights, and the change is replaced when the "
+                     "set reads its input again (at the next render, or UpdateLights()). "
+                     "Give the parameters as point-data arrays of the input, or disconnect "
+                     "it (SetInputConnection(nullptr)) to set lights one by one. Not "
+                     "reported again while this input stays connected.");
+}
+
+//------------------------------------------------------------------------------
 void vtkClusteredLightSet::SetNumberOfLights(vtkIdType n)
 {
+  this->WarnIfInputDefinesLights("SetNumberOfLights");
   if (n < 0)
   {
     vtkErrorMacro("Negative number of lights " << n << " ignored.");
@@ -100,6 +136,7 @@ vtkIdType vtkClusteredLightSet::GetNumberOfLights() const
 //------------------------------------------------------------------------------
 vtkIdType vtkClusteredLightSet::AddLight(double x, double y, double z)
 {
+  this->WarnIfInputDefinesLights("AddLight");
   const vtkIdType i = this->GetNumberOfLights();
   this->Internals->Resize(static_cast<std::size_t>(i + 1));
   this->Internals->Position[3 * i] = x;
@@ -112,7 +149,12 @@ vtkIdType vtkClusteredLightSet::AddLight(double x, double y, double z)
 //------------------------------------------------------------------------------
 void vtkClusteredLightSet::RemoveAllLights()
 {
-  this->SetNumberOfLights(0);
+  this->WarnIfInputDefinesLights("RemoveAllLights");
+  if (this->GetNumberOfLights() > 0)
+  {
+    this->Internals->Resize(0);
+    this->Modified();
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -129,6 +171,9 @@ bool vtkClusteredLightSet::CheckIndex(vtkIdType i) const
 
 namespace
 {
+// What the value getters return for an index out of range (after the error).
+const double NoValue[3] = { 0.0, 0.0, 0.0 };
+
 void Set3(std::vector<double>& v, vtkIdType i, double a, double b, double c)
 {
   v[3 * i] = a;
@@ -146,6 +191,7 @@ void Get3(const std::vector<double>& v, vtkIdType i, double out[3])
 //------------------------------------------------------------------------------
 void vtkClusteredLightSet::SetPosition(vtkIdType i, double x, double y, double z)
 {
+  this->WarnIfInputDefinesLights("SetPosition");
   if (this->CheckIndex(i))
   {
     Set3(this->Internals->Position, i, x, y, z);
@@ -164,6 +210,7 @@ void vtkClusteredLightSet::GetPosition(vtkIdType i, double position[3]) const
 //------------------------------------------------------------------------------
 void vtkClusteredLightSet::SetColor(vtkIdType i, double r, double g, double b)
 {
+  this->WarnIfInputDefinesLights("SetColor");
   if (this->CheckIndex(i))
   {
     Set3(this->Internals->Color, i, r, g, b);
@@ -182,6 +229,7 @@ void vtkClusteredLightSet::GetColor(vtkIdType i, double color[3]) const
 //------------------------------------------------------------------------------
 void vtkClusteredLightSet::SetIntensity(vtkIdType i, double intensity)
 {
+  this->WarnIfInputDefinesLights("SetIntensity");
   if (this->CheckIndex(i))
   {
     this->Internals->Intensity[i] = intensity;
@@ -198,6 +246,7 @@ double vtkClusteredLightSet::GetIntensity(vtkIdType i) const
 void vtkClusteredLightSet::SetAttenuation(
   vtkIdType i, double constant, double linear, double quadratic)
 {
+  this->WarnIfInputDefinesLights("SetAttenuation");
   if (this->CheckIndex(i))
   {
     Set3(this->Internals->Attenuation, i, constant, linear, quadratic);
@@ -216,6 +265,7 @@ void vtkClusteredLightSet::GetAttenuation(vtkIdType i, double attenuation[3]) co
 //------------------------------------------------------------------------------
 void vtkClusteredLightSet::SetRadius(vtkIdType i, double radius)
 {
+  this->WarnIfInputDefinesLights("SetRadius");
   if (this->CheckIndex(i))
   {
     this->Internals->Radius[i] = radius;
@@ -226,6 +276,7 @@ void vtkClusteredLightSet::SetRadius(vtkIdType i, double radius)
 
 void vtkClusteredLightSet::UnsetRadius(vtkIdType i)
 {
+  this->WarnIfInputDefinesLights("UnsetRadius");
   if (this->CheckIndex(i))
   {
     this->Internals->HasRadius[i] = 0;
@@ -247,6 +298,7 @@ double vtkClusteredLightSet::GetRadius(vtkIdType i) const
 void vtkClusteredLightSet::SetSpot(
   vtkIdType i, double dx, double dy, double dz, double coneAngle, double exponent)
 {
+  this->WarnIfInputDefinesLights("SetSpot");
   if (this->CheckIndex(i))
   {
     Set3(this->Internals->Direction, i, dx, dy, dz);
@@ -258,6 +310,7 @@ void vtkClusteredLightSet::SetSpot(
 
 void vtkClusteredLightSet::SetPointLight(vtkIdType i)
 {
+  this->WarnIfInputDefinesLights("SetPointLight");
   if (this->CheckIndex(i))
   {
     this->Internals->ConeAngle[i] = 180.0;
@@ -281,6 +334,286 @@ double vtkClusteredLightSet::GetConeAngle(vtkIdType i) const
 double vtkClusteredLightSet::GetExponent(vtkIdType i) const
 {
   return this->CheckIndex(i) ? this->Internals->Exponent[i] : 1.0;
+}
+
+//------------------------------------------------------------------------------
+const double* vtkClusteredLightSet::GetPosition(vtkIdType i) const
+{
+  return this->CheckIndex(i) ? &this->Internals->Position[3 * i] : NoValue;
+}
+
+const double* vtkClusteredLightSet::GetColor(vtkIdType i) const
+{
+  return this->CheckIndex(i) ? &this->Internals->Color[3 * i] : NoValue;
+}
+
+const double* vtkClusteredLightSet::GetAttenuation(vtkIdType i) const
+{
+  return this->CheckIndex(i) ? &this->Internals->Attenuation[3 * i] : NoValue;
+}
+
+const double* vtkClusteredLightSet::GetSpotDirection(vtkIdType i) const
+{
+  return this->CheckIndex(i) ? &this->Internals->Direction[3 * i] : NoValue;
+}
+
+//------------------------------------------------------------------------------
+void vtkClusteredLightSet::SetIntensityScale(double scale)
+{
+  if (std::isnan(scale))
+  {
+    vtkErrorMacro("IntensityScale NaN ignored.");
+    return;
+  }
+  const double clamped =
+    scale < 0.0 ? 0.0 : (scale > VTK_FLOAT_MAX ? static_cast<double>(VTK_FLOAT_MAX) : scale);
+  if (clamped != this->IntensityScale)
+  {
+    this->IntensityScale = clamped;
+    this->Modified();
+  }
+}
+
+double vtkClusteredLightSet::GetScaledIntensity(vtkIdType i) const
+{
+  return this->GetIntensity(i) * this->IntensityScale;
+}
+
+//------------------------------------------------------------------------------
+void vtkClusteredLightSet::ReportProblem(const char* message)
+{
+  if (!message || !vtkObject::GetGlobalWarningDisplay() ||
+    !this->HasObserver(vtkCommand::WarningEvent))
+  {
+    return;
+  }
+  std::ostringstream os;
+  os << "Warning: " << this->GetClassName() << " (" << this << "): " << message << "\n";
+  std::string text = os.str();
+  this->InvokeEvent(vtkCommand::WarningEvent, &text[0]);
+}
+
+//------------------------------------------------------------------------------
+// Bulk access: one tuple per light.
+namespace
+{
+// Copies `array` into `values` (`components` per light) after checking it: `tuples` tuples
+// (any number when negative) of `components` (or `other`) components. Reports what is
+// wrong on `self` and returns false, changing nothing.
+bool CopyFromArray(vtkClusteredLightSet* self, const char* method, vtkDataArray* array,
+  vtkIdType tuples, int components, int other, std::vector<double>& values, double scale = 1.0)
+{
+  std::ostringstream os;
+  const int nc = array ? array->GetNumberOfComponents() : 0;
+  if (!array)
+  {
+    os << method << "(): the array is null";
+  }
+  else if (nc != components && (other == 0 || nc != other))
+  {
+    os << method << "(): the " << array->GetClassName() << " has " << nc << " component"
+       << (nc == 1 ? "" : "s") << "; it must have " << components;
+    if (other)
+    {
+      os << " or " << other;
+    }
+  }
+  else if (tuples >= 0 && array->GetNumberOfTuples() != tuples)
+  {
+    os << method << "(): the array has " << array->GetNumberOfTuples() << " tuples for " << tuples
+       << " lights (SetPositions() sets the number of lights)";
+  }
+  if (!os.str().empty())
+  {
+    vtkErrorWithObjectMacro(self, << os.str() << ". Nothing was changed.");
+    return false;
+  }
+  const vtkIdType n = array->GetNumberOfTuples();
+  values.resize(static_cast<std::size_t>(components * n));
+  std::vector<double> tuple(static_cast<std::size_t>(nc));
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    array->GetTuple(i, tuple.data());
+    for (int c = 0; c < components; ++c)
+    {
+      values[static_cast<std::size_t>(components * i + c)] =
+        scale * tuple[static_cast<std::size_t>(c)];
+    }
+  }
+  return true;
+}
+
+void CopyToArray(const std::vector<double>& values, int components, vtkDoubleArray* array)
+{
+  if (!array)
+  {
+    return;
+  }
+  array->SetNumberOfComponents(components);
+  array->SetNumberOfTuples(static_cast<vtkIdType>(values.size() / components));
+  std::copy(values.begin(), values.end(), array->GetPointer(0));
+  array->Modified();
+}
+} // namespace
+
+//------------------------------------------------------------------------------
+bool vtkClusteredLightSet::SetPositions(vtkDataArray* positions)
+{
+  this->WarnIfInputDefinesLights("SetPositions");
+  std::vector<double> values;
+  if (!CopyFromArray(this, "SetPositions", positions, -1, 3, 0, values))
+  {
+    return false;
+  }
+  this->Internals->Resize(values.size() / 3);
+  this->Internals->Position.swap(values);
+  this->Modified();
+  return true;
+}
+
+void vtkClusteredLightSet::GetPositions(vtkDoubleArray* positions) const
+{
+  CopyToArray(this->Internals->Position, 3, positions);
+}
+
+//------------------------------------------------------------------------------
+bool vtkClusteredLightSet::SetColors(vtkDataArray* colors)
+{
+  this->WarnIfInputDefinesLights("SetColors");
+  const double scale = colors && colors->GetDataType() == VTK_UNSIGNED_CHAR ? 1.0 / 255.0 : 1.0;
+  if (!CopyFromArray(
+        this, "SetColors", colors, this->GetNumberOfLights(), 3, 4, this->Internals->Color, scale))
+  {
+    return false;
+  }
+  this->Modified();
+  return true;
+}
+
+void vtkClusteredLightSet::GetColors(vtkDoubleArray* colors) const
+{
+  CopyToArray(this->Internals->Color, 3, colors);
+}
+
+//------------------------------------------------------------------------------
+bool vtkClusteredLightSet::SetIntensities(vtkDataArray* intensities)
+{
+  this->WarnIfInputDefinesLights("SetIntensities");
+  if (!CopyFromArray(this, "SetIntensities", intensities, this->GetNumberOfLights(), 1, 0,
+        this->Internals->Intensity))
+  {
+    return false;
+  }
+  this->Modified();
+  return true;
+}
+
+void vtkClusteredLightSet::GetIntensities(vtkDoubleArray* intensities) const
+{
+  CopyToArray(this->Internals->Intensity, 1, intensities);
+}
+
+//------------------------------------------------------------------------------
+bool vtkClusteredLightSet::SetAttenuations(vtkDataArray* attenuations)
+{
+  this->WarnIfInputDefinesLights("SetAttenuations");
+  if (!CopyFromArray(this, "SetAttenuations", attenuations, this->GetNumberOfLights(), 3, 0,
+        this->Internals->Attenuation))
+  {
+    return false;
+  }
+  this->Modified();
+  return true;
+}
+
+void vtkClusteredLightSet::GetAttenuations(vtkDoubleArray* attenuations) const
+{
+  CopyToArray(this->Internals->Attenuation, 3, attenuations);
+}
+
+//------------------------------------------------------------------------------
+bool vtkClusteredLightSet::SetRadii(vtkDataArray* radii)
+{
+  this->WarnIfInputDefinesLights("SetRadii");
+  std::vector<double> values;
+  if (!CopyFromArray(this, "SetRadii", radii, this->GetNumberOfLights(), 1, 0, values))
+  {
+    return false;
+  }
+  vtkInternals& in = *this->Internals;
+  for (std::size_t i = 0; i < values.size(); ++i)
+  {
+    // Negative: no explicit radius. NaN is kept (and rejected when lights are prepared).
+    in.HasRadius[i] = values[i] < 0.0 ? 0 : 1;
+    in.Radius[i] = values[i] < 0.0 ? 0.0 : values[i];
+  }
+  this->Modified();
+  return true;
+}
+
+void vtkClusteredLightSet::GetRadii(vtkDoubleArray* radii) const
+{
+  const vtkInternals& in = *this->Internals;
+  std::vector<double> values(in.Radius.size());
+  for (std::size_t i = 0; i < values.size(); ++i)
+  {
+    values[i] = in.HasRadius[i] ? in.Radius[i] : -1.0;
+  }
+  CopyToArray(values, 1, radii);
+}
+
+//------------------------------------------------------------------------------
+bool vtkClusteredLightSet::SetSpotDirections(vtkDataArray* directions)
+{
+  this->WarnIfInputDefinesLights("SetSpotDirections");
+  if (!CopyFromArray(this, "SetSpotDirections", directions, this->GetNumberOfLights(), 3, 0,
+        this->Internals->Direction))
+  {
+    return false;
+  }
+  this->Modified();
+  return true;
+}
+
+void vtkClusteredLightSet::GetSpotDirections(vtkDoubleArray* directions) const
+{
+  CopyToArray(this->Internals->Direction, 3, directions);
+}
+
+//------------------------------------------------------------------------------
+bool vtkClusteredLightSet::SetConeAngles(vtkDataArray* coneAngles)
+{
+  this->WarnIfInputDefinesLights("SetConeAngles");
+  if (!CopyFromArray(this, "SetConeAngles", coneAngles, this->GetNumberOfLights(), 1, 0,
+        this->Internals->ConeAngle))
+  {
+    return false;
+  }
+  this->Modified();
+  return true;
+}
+
+void vtkClusteredLightSet::GetConeAngles(vtkDoubleArray* coneAngles) const
+{
+  CopyToArray(this->Internals->ConeAngle, 1, coneAngles);
+}
+
+//------------------------------------------------------------------------------
+bool vtkClusteredLightSet::SetExponents(vtkDataArray* exponents)
+{
+  this->WarnIfInputDefinesLights("SetExponents");
+  if (!CopyFromArray(this, "SetExponents", exponents, this->GetNumberOfLights(), 1, 0,
+        this->Internals->Exponent))
+  {
+    return false;
+  }
+  this->Modified();
+  return true;
+}
+
+void vtkClusteredLightSet::GetExponents(vtkDoubleArray* exponents) const
+{
+  CopyToArray(this->Internals->Exponent, 1, exponents);
 }
 
 //------------------------------------------------------------------------------
@@ -320,7 +653,10 @@ int vtkClusteredLightSet::FillInputPortInformation(int port, vtkInformation* inf
   {
     return 0;
   }
-  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+  // Any data object: RequestData() reports an input that is not a vtkPolyData itself, on
+  // the set (where observers look), once while it persists. With "vtkPolyData" here the
+  // executive reported it on every update, and only on the executive.
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataObject");
   info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
   return 1;
 }
@@ -399,11 +735,37 @@ bool FindInputArray(vtkPointData* pd, vtkIdType numberOfPoints, InputArray& a, s
 int vtkClusteredLightSet::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
 {
-  vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
-  if (!input)
+  vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
+  vtkDataObject* object = inInfo ? inInfo->Get(vtkDataObject::DATA_OBJECT()) : nullptr;
+  if (!object)
   {
     return 1; // no input: the lights are the ones set through the per-light API
   }
+  vtkInternals& in = *this->Internals;
+  vtkPolyData* input = vtkPolyData::SafeDownCast(object);
+  if (!input)
+  {
+    std::ostringstream os;
+    os << "The input is a " << object->GetClassName()
+       << "; a light set needs a vtkPolyData (every point is a light, its parameters come "
+          "from point-data arrays). The light set holds no lights until this is fixed.";
+    // Once while it persists: the same message for the same connection is not repeated
+    // when the input is modified or the pipeline updates again.
+    vtkAlgorithmOutput* connection = this->GetInputConnection(0, 0);
+    if (os.str() != in.ReportedInputError || connection != in.ReportedInputConnection)
+    {
+      in.ReportedInputError = os.str();
+      in.ReportedInputConnection = connection;
+      vtkErrorMacro(<< in.ReportedInputError);
+    }
+    if (this->GetNumberOfLights() > 0)
+    {
+      in.Resize(0);
+      this->Modified();
+    }
+    return 1;
+  }
+  in.ReportedInputError.clear();
   const vtkIdType n = input->GetNumberOfPoints();
   vtkPointData* pd = input->GetPointData();
   InputArray color{ "ColorArrayName", this->ColorArrayName, 3, 4, true };
@@ -417,7 +779,6 @@ int vtkClusteredLightSet::RequestData(
     &exponent };
 
   ++this->NumberOfInputReads;
-  vtkInternals& in = *this->Internals;
   for (InputArray* a : arrays)
   {
     std::string error;
@@ -492,5 +853,6 @@ void vtkClusteredLightSet::PrintSelf(ostream& os, vtkIndent indent)
      << this->DefaultSpotDirection[1] << ", " << this->DefaultSpotDirection[2] << ")\n";
   os << indent << "DefaultConeAngle: " << this->DefaultConeAngle << "\n";
   os << indent << "DefaultExponent: " << this->DefaultExponent << "\n";
+  os << indent << "IntensityScale: " << this->IntensityScale << "\n";
   os << indent << "NumberOfInputReads: " << this->NumberOfInputReads << "\n";
 }

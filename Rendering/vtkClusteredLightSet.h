@@ -23,6 +23,17 @@
  * Values are validated by the pass when it prepares lights: a light with a NaN/Inf
  * value, a negative intensity, color or radius, or an invalid attenuation is skipped
  * with a warning naming the set and the light index; all other lights are unaffected.
+ * The pass gives these warnings to the set's own WarningEvent observers too (see
+ * ReportProblem()).
+ *
+ * All lights at once: SetPositions(), SetColors(), SetIntensities(), ... take a
+ * vtkDataArray of one tuple per light, and GetPositions(), GetColors(), ... fill a
+ * vtkDoubleArray; from Python, clusteredlighting.light_set_from_numpy() and
+ * light_set_to_numpy() wrap them for numpy arrays.
+ *
+ * Exposure: IntensityScale multiplies the intensity of every light of the set (thousands
+ * of lights of intensity 1 wash a scene out; a scale of 0.1 brings it back without
+ * touching each light). vtkToneMappingPass around the pass is the other remedy.
  *
  * Add the set to a pass with vtkClusteredLightingPass::AddLightSet(). Every setter marks
  * the set modified, so the pass re-uploads light data on the next render only when a
@@ -48,16 +59,18 @@
  * matching Default* value (DefaultColor, DefaultIntensity, ...). An array of another
  * kind (e.g. a vtkStringArray), with the wrong number of components or with fewer tuples
  * than points is an error (vtkErrorMacro naming the array), and so is an input that is
- * not a vtkPolyData (reported by the executive): the set then holds no lights until the
- * input, the array names or the defaults change.
+ * not a vtkPolyData (an error of the set naming the type, given once while that input
+ * stays): the set then holds no lights until the input, the array names or the defaults
+ * change.
  *
  * vtkClusteredLightingPass calls UpdateLights() before it reads the lights, which
  * updates the upstream pipeline and re-reads the arrays only when the input, the array
  * names or the defaults changed; the set's MTime then changes, and the pass re-uploads
  * the light data. An animated source therefore moves the lights each frame; the shaders
  * are not rebuilt for it. While an input is connected the input defines the lights:
- * changes made with the per-light setters are replaced at the next update. After the
- * input is disconnected the set keeps the lights it read last.
+ * changes made with the per-light setters are replaced at the next update, and the first
+ * such call warns (once while the same input stays connected). After the input is
+ * disconnected the set keeps the lights it read last, and the setters work again.
  *
  * @sa vtkClusteredLightingPass vtkLight
  */
@@ -66,9 +79,12 @@
 
 #include "vtkAlgorithm.h"
 #include "vtkRenderingClusteredModule.h" // For export macro
+#include "vtkWrappingHints.h"            // For VTK_SIZEHINT
 
 #include <memory> // for std::unique_ptr
 
+class vtkDataArray;
+class vtkDoubleArray;
 class vtkPolyData;
 
 class VTKRENDERINGCLUSTERED_EXPORT vtkClusteredLightSet : public vtkAlgorithm
@@ -81,7 +97,10 @@ public:
   ///@{
   /**
    * Number of lights. Growing the set gives the new lights the default parameters
-   * (vtkLight's defaults, at the origin).
+   * (vtkLight's defaults, at the origin). SetNumberOfLights(), AddLight(),
+   * RemoveAllLights() and every per-light or bulk setter below warn when the set has an
+   * input (the input defines the lights and replaces the change at the next update);
+   * the warning is given once while the same input stays connected.
    */
   void SetNumberOfLights(vtkIdType n);
   vtkIdType GetNumberOfLights() const;
@@ -100,7 +119,8 @@ public:
   ///@{
   /**
    * Per-light parameters. Indices outside [0, GetNumberOfLights()) are reported with
-   * vtkErrorMacro and ignored.
+   * vtkErrorMacro and ignored. GetIntensity() returns the intensity as set, without
+   * IntensityScale (see GetScaledIntensity()).
    */
   void SetPosition(vtkIdType i, double x, double y, double z);
   void GetPosition(vtkIdType i, double position[3]) const;
@@ -110,6 +130,24 @@ public:
   double GetIntensity(vtkIdType i) const;
   void SetAttenuation(vtkIdType i, double constant, double linear, double quadratic);
   void GetAttenuation(vtkIdType i, double attenuation[3]) const;
+  ///@}
+
+  ///@{
+  /**
+   * The same getters returning the value (from Python: a tuple, e.g.
+   * `lights.GetPosition(3)`). The pointer is to the set's own storage of light i: it
+   * stays valid until the number of lights changes or the set reads its input, and must
+   * not be written through (use the setters, which mark the set modified). An index out
+   * of range is an error and returns (0, 0, 0); from Python it raises ValueError.
+   */
+  const double* GetPosition(vtkIdType i) const VTK_EXPECTS(0 <= i && i < GetNumberOfLights())
+    VTK_SIZEHINT(3);
+  const double* GetColor(vtkIdType i) const VTK_EXPECTS(0 <= i && i < GetNumberOfLights())
+    VTK_SIZEHINT(3);
+  const double* GetAttenuation(vtkIdType i) const VTK_EXPECTS(0 <= i && i < GetNumberOfLights())
+    VTK_SIZEHINT(3);
+  const double* GetSpotDirection(vtkIdType i) const VTK_EXPECTS(0 <= i && i < GetNumberOfLights())
+    VTK_SIZEHINT(3);
   ///@}
 
   ///@{
@@ -136,6 +174,67 @@ public:
   double GetConeAngle(vtkIdType i) const;
   double GetExponent(vtkIdType i) const;
   ///@}
+
+  ///@{
+  /**
+   * All lights at once, one tuple per light (any numeric vtkDataArray; from Python, any
+   * numpy array through vtkmodules.util.numpy_support, or the package's
+   * light_set_from_numpy()). SetPositions() sets the number of lights to the array's
+   * number of tuples (lights it adds get the default parameters); the other setters need
+   * exactly GetNumberOfLights() tuples. Components: 3 for positions, attenuations
+   * (a0, a1, a2) and spot directions; 3 or 4 for colors (alpha ignored; an unsigned char
+   * array is scaled from [0, 255] to [0, 1], as for an input's color array); 1 for
+   * intensities, radii, cone angles (degrees) and exponents. A negative radius means "no
+   * explicit radius" (as DefaultRadius); GetRadii() gives -1 for such lights. A null
+   * array or a wrong number of components or of tuples is an error (vtkErrorMacro
+   * naming the method) that changes nothing; the setters return false then.
+   * The getters resize the given vtkDoubleArray to GetNumberOfLights() tuples and fill
+   * it; intensities are given as set, without IntensityScale.
+   */
+  bool SetPositions(vtkDataArray* positions);
+  void GetPositions(vtkDoubleArray* positions) const;
+  bool SetColors(vtkDataArray* colors);
+  void GetColors(vtkDoubleArray* colors) const;
+  bool SetIntensities(vtkDataArray* intensities);
+  void GetIntensities(vtkDoubleArray* intensities) const;
+  bool SetAttenuations(vtkDataArray* attenuations);
+  void GetAttenuations(vtkDoubleArray* attenuations) const;
+  bool SetRadii(vtkDataArray* radii);
+  void GetRadii(vtkDoubleArray* radii) const;
+  bool SetSpotDirections(vtkDataArray* directions);
+  void GetSpotDirections(vtkDoubleArray* directions) const;
+  bool SetConeAngles(vtkDataArray* coneAngles);
+  void GetConeAngles(vtkDoubleArray* coneAngles) const;
+  bool SetExponents(vtkDataArray* exponents);
+  void GetExponents(vtkDoubleArray* exponents) const;
+  ///@}
+
+  ///@{
+  /**
+   * Exposure: a factor applied to the intensity of every light of the set when the pass
+   * reads it (GetScaledIntensity()), whether the lights were set one by one, in bulk or
+   * read from an input. The per-light intensities are left as they are. Clamped to
+   * [0, VTK_FLOAT_MAX]; NaN is an error and ignored. Default is 1.
+   */
+  virtual void SetIntensityScale(double scale);
+  vtkGetMacro(IntensityScale, double);
+  ///@}
+
+  /**
+   * The intensity light i is shaded with: GetIntensity(i) * GetIntensityScale().
+   */
+  double GetScaledIntensity(vtkIdType i) const;
+
+  /**
+   * Raises a problem found in this set's lights on the set itself: the set's WarningEvent
+   * observers receive "Warning: vtkClusteredLightSet (<address>): <message>".
+   * vtkClusteredLightingPass calls it for each warning it gives about the set's lights
+   * (an invalid light is skipped; many are summarized in one line), so that an
+   * application can observe its own sets. Nothing is printed (the pass prints its own
+   * copy, or gives it to the pass's observers), and nothing happens without an observer
+   * or when vtkObject's global warning display is off.
+   */
+  void ReportProblem(const char* message);
 
   ///@{
   /**
@@ -316,6 +415,12 @@ protected:
 
   bool CheckIndex(vtkIdType i) const;
 
+  /**
+   * Warns (once while the same input stays connected) that `setter` changes lights that
+   * the connected input defines. Does nothing without an input.
+   */
+  void WarnIfInputDefinesLights(const char* setter);
+
   bool Enabled = true;
   char* ColorArrayName = nullptr;
   char* IntensityArrayName = nullptr;
@@ -331,6 +436,7 @@ protected:
   double DefaultSpotDirection[3] = { 0.0, 0.0, -1.0 };
   double DefaultConeAngle = 180.0;
   double DefaultExponent = 1.0;
+  double IntensityScale = 1.0;
   int NumberOfInputReads = 0;
 
 private:

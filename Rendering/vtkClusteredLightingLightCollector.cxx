@@ -162,7 +162,7 @@ void vtkClusteredLightingLightCollector::ReadLightSets(vtkClusteredLightingLight
       src.PositionWC = glm::dvec3(v[0], v[1], v[2]);
       set->GetColor(i, v);
       src.Color = glm::dvec3(v[0], v[1], v[2]);
-      src.Intensity = set->GetIntensity(i);
+      src.Intensity = set->GetScaledIntensity(i); // with the set's IntensityScale
       set->GetAttenuation(i, v);
       src.Attenuation = glm::dvec3(v[0], v[1], v[2]);
       src.HasRadius = set->HasRadius(i);

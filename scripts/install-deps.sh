@@ -6,6 +6,7 @@ set -euo pipefail
 pkgs=(
   build-essential cmake ninja-build pkg-config
   libvtk9-dev python3-vtk9          # VTK 9.1 (X11/GLX build) and its Python
+  python3-numpy                     # clusteredlighting.light_set_from_numpy / _to_numpy
   libpython3-dev                    # Python wrapping (headers; also pulled in by libvtk9-dev)
   libglm-dev                        # GL-free math core
   libgtest-dev googletest           # core unit tests

@@ -8,6 +8,7 @@
 #include "vtkClusteredLightingGrid.h"
 #include "vtkClusteredLightingLayout.h"
 #include "vtkClusteredLightingLights.h"
+#include "vtkClusteredLightingMessages.h"
 #include "vtkClusteredLightingMorton.h"
 #include "vtkClusteredLightingReference.h"
 #include "vtkClusteredLightingShaderCode.h"

@@ -2,15 +2,23 @@
 #include "vtkClusteredLightsRepresentation.h"
 
 #include "vtkAlgorithmOutput.h"
+#include "vtkAppendPolyData.h"
 #include "vtkClusteredLightSet.h"
+#include "vtkCompositeDataIterator.h"
+#include "vtkCompositeDataSet.h"
 #include "vtkDataObject.h"
+#include "vtkDataSetAttributes.h"
+#include "vtkIdList.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkObjectFactory.h"
 #include "vtkPVClusteredLightingView.h"
 #include "vtkPVRenderView.h"
 #include "vtkPointData.h"
+#include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
+#include "vtkUnsignedCharArray.h"
 #include "vtkView.h"
 
 #include <cstring>
@@ -49,23 +57,88 @@ int vtkClusteredLightsRepresentation::RequestData(
   {
     vtkDataObject* input = vtkDataObject::GetData(inputVector[0], 0);
     vtkPolyData* polyData = vtkPolyData::SafeDownCast(input);
+    vtkCompositeDataSet* composite = vtkCompositeDataSet::SafeDownCast(input);
     if (polyData)
     {
-      // Only the points and their arrays become lights: the cells are not delivered.
-      if (polyData->GetPoints())
+      CopyOwnedPoints(polyData, this->Points);
+    }
+    else if (composite)
+    {
+      // Every block's points, with the point arrays that all blocks have.
+      vtkNew<vtkAppendPolyData> append;
+      vtkSmartPointer<vtkCompositeDataIterator> blocks;
+      blocks.TakeReference(composite->NewIterator());
+      for (blocks->InitTraversal(); !blocks->IsDoneWithTraversal(); blocks->GoToNextItem())
       {
-        this->Points->SetPoints(polyData->GetPoints());
+        vtkPolyData* block = vtkPolyData::SafeDownCast(blocks->GetCurrentDataObject());
+        if (!block)
+        {
+          vtkErrorMacro("Clustered Lights needs polygonal blocks (vtkPolyData), not "
+            << blocks->GetCurrentDataObject()->GetClassName()
+            << ": no lights. Apply Extract Surface first.");
+          append->RemoveAllInputs();
+          break;
+        }
+        vtkNew<vtkPolyData> points;
+        CopyOwnedPoints(block, points);
+        append->AddInputData(points);
       }
-      this->Points->GetPointData()->ShallowCopy(polyData->GetPointData());
+      if (append->GetNumberOfInputConnections(0) > 0)
+      {
+        append->Update();
+        this->Points->ShallowCopy(append->GetOutput());
+      }
     }
     else if (input)
     {
-      vtkErrorMacro("Clustered Lights needs polygonal data (vtkPolyData) as input, not "
-        << input->GetClassName()
-        << ": no lights. Extract the points first (e.g. Merge Blocks, then Extract Surface).");
+      vtkErrorMacro("Clustered Lights needs polygonal data (vtkPolyData), not "
+        << input->GetClassName() << ": no lights. Apply Extract Surface first.");
     }
   }
   return this->Superclass::RequestData(request, inputVector, outputVector);
+}
+
+//------------------------------------------------------------------------------
+void vtkClusteredLightsRepresentation::CopyOwnedPoints(vtkPolyData* input, vtkPolyData* output)
+{
+  // Only the points and their arrays become lights: the cells are not delivered.
+  vtkPoints* points = input->GetPoints();
+  vtkPointData* pointData = input->GetPointData();
+  vtkUnsignedCharArray* ghosts = input->GetPointGhostArray();
+  vtkIdType n = points ? points->GetNumberOfPoints() : 0;
+  vtkNew<vtkIdList> owned;
+  if (ghosts && ghosts->GetNumberOfTuples() == n)
+  {
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      if (!(ghosts->GetValue(i) & vtkDataSetAttributes::DUPLICATEPOINT))
+      {
+        owned->InsertNextId(i);
+      }
+    }
+  }
+  if (!ghosts || owned->GetNumberOfIds() == n)
+  {
+    if (points)
+    {
+      output->SetPoints(points);
+    }
+    output->GetPointData()->ShallowCopy(pointData);
+    return;
+  }
+  // A point that another piece owns too (ParaView's ghost points) is one light, not one
+  // per piece: keep the owned points only.
+  vtkNew<vtkPoints> ownedPoints;
+  ownedPoints->SetDataType(points->GetDataType());
+  points->GetPoints(owned, ownedPoints);
+  output->SetPoints(ownedPoints);
+  vtkPointData* out = output->GetPointData();
+  out->CopyAllocate(pointData, owned->GetNumberOfIds());
+  for (vtkIdType i = 0; i < owned->GetNumberOfIds(); ++i)
+  {
+    out->CopyData(pointData, owned->GetId(i), i);
+  }
+  out->RemoveArray(vtkDataSetAttributes::GhostArrayName());
 }
 
 //------------------------------------------------------------------------------
@@ -78,6 +151,13 @@ int vtkClusteredLightsRepresentation::ProcessViewRequest(
   }
   if (requestType == vtkPVView::REQUEST_UPDATE())
   {
+    if (!this->LightingView && !this->WarnedAboutView)
+    {
+      vtkWarningMacro("Clustered Lights light only a Clustered Lighting view, not a "
+        << (this->GetView() ? this->GetView()->GetClassName() : "null view")
+        << ": these lights light nothing here.");
+      this->WarnedAboutView = true;
+    }
     vtkPVView::SetPiece(inInfo, this, this->Points);
     // Gather the pieces of every data rank and give the whole to every rendering rank.
     vtkPVRenderView::SetDeliverToAllProcesses(inInfo, this, true);
@@ -100,19 +180,14 @@ void vtkClusteredLightsRepresentation::SetVisibility(bool visible)
 //------------------------------------------------------------------------------
 bool vtkClusteredLightsRepresentation::AddToView(vtkView* view)
 {
+  // ParaView adds every representation type of a source to the view, shown or not: a
+  // hidden one in another view is normal, so the warning waits for a visible update.
   vtkPVClusteredLightingView* lightingView = vtkPVClusteredLightingView::SafeDownCast(view);
-  if (!lightingView)
+  if (lightingView)
   {
-    if (!this->WarnedAboutView)
-    {
-      vtkWarningMacro("Clustered Lights only light a Clustered Lighting view, not a "
-        << (view ? view->GetClassName() : "null view") << ": these lights light nothing here.");
-      this->WarnedAboutView = true;
-    }
-    return this->Superclass::AddToView(view);
+    lightingView->AddLightSet(this->LightSet);
+    this->LightingView = lightingView;
   }
-  lightingView->AddLightSet(this->LightSet);
-  this->LightingView = lightingView;
   return this->Superclass::AddToView(view);
 }
 

@@ -3,7 +3,9 @@
  * @class   vtkClusteredLightsRepresentation
  * @brief   representation that turns the points of a vtkPolyData into clustered lights
  *
- * "Lights as data" for ParaView: every point of the input becomes a light of a
+ * "Lights as data" for ParaView: every point of the input (a vtkPolyData, or a composite
+ * data set of vtkPolyData blocks: the blocks' points, with the point arrays all blocks
+ * have) becomes a light of a
  * vtkClusteredLightSet, with its color, intensity, attenuation, radius and spot cone read
  * from point-data arrays named by the *ArrayName properties, or the Default* values where
  * an array is not given or missing. The representation draws no geometry: it adds its
@@ -13,7 +15,10 @@
  * Data delivery: a light on one rank's piece may light geometry on any other rank, so the
  * points and point data (not the cells) are gathered from every data rank and delivered to
  * every rendering rank (vtkPVRenderView::SetDeliverToAllProcesses), where each rank's pass
- * clusters all lights.
+ * clusters all lights. Points that ParaView marks as duplicates of another piece's
+ * (vtkGhostType with DUPLICATEPOINT, e.g. after Ghost Cells Generator) are left out, so
+ * that a point shared by pieces is one light; pieces that share points without marking
+ * them (e.g. the Sphere source split over ranks) give such points once per piece.
  *
  * Hiding the representation (or removing it from the view) switches its lights off. In a
  * view other than vtkPVClusteredLightingView the representation does nothing but warn
@@ -108,6 +113,12 @@ protected:
   bool RemoveFromView(vtkView* view) override;
 
   static const char* ArrayName(const char* name);
+
+  /**
+   * Copies the input's points and point data into output, without its cells and without
+   * the points that ParaView marks as duplicates of another piece's (ghost points).
+   */
+  static void CopyOwnedPoints(vtkPolyData* input, vtkPolyData* output);
 
   vtkNew<vtkClusteredLightSet> LightSet;
   vtkNew<vtkPolyData> Points; ///< the input's points and point data, without cells

@@ -1,0 +1,58 @@
+#!/usr/bin/env bash
+# Scale demonstration of the ParaView plugin (docs/ParaView.md): 65,536 clustered lights
+# fed from a pipeline over an isosurface of a 201^3 Wavelet, rendered at 1024 x 768 by
+# pvbatch on 1, 2 and 4 MPI ranks, one after the other in this one run
+# (Plugins/ParaView/Demo/scale_demo.py). Prints a table of the frame times.
+# Installs and builds what is missing (scripts/install-paraview.sh,
+# scripts/build-paraview-plugin.sh). llvmpipe gets the machine's cores shared between
+# the ranks (LP_NUM_THREADS = cores / ranks, at least 1).
+# Usage: scripts/run-paraview-demo.sh [--docs] [ranks...]   (default ranks: 1 2 4)
+#   --docs: copy the 4-rank images to docs/images/paraview-scale-demo*.png
+# Run it on an otherwise idle machine: the numbers are wall-clock frame times.
+set -euo pipefail
+root="$(cd "$(dirname "$0")/.." && pwd)"
+docs=false
+if [ "${1:-}" = "--docs" ]; then
+  docs=true
+  shift
+fi
+rank_counts=("${@:-1 2 4}")
+read -r -a rank_counts <<< "${rank_counts[*]}"
+"$root/scripts/install-paraview.sh"
+build="$root/build-paraview"
+plugin="$build/lib/paraview-5.11/plugins/ClusteredLighting/ClusteredLighting.so"
+[ -f "$plugin" ] || "$root/scripts/build-paraview-plugin.sh" "$build" > /dev/null
+out="$build/demo"
+mkdir -p "$out"
+cores=$(nproc)
+results=()
+for ranks in "${rank_counts[@]}"; do
+  threads=$((cores / ranks))
+  [ "$threads" -ge 1 ] || threads=1
+  echo "=== $ranks rank(s), LP_NUM_THREADS=$threads"
+  LP_NUM_THREADS=$threads "$root/Plugins/ParaView/Testing/pvbatch-test.sh" "$ranks" \
+    "$root/Plugins/ParaView/Demo/scale_demo.py" --plugin "$plugin" --output "$out" \
+    2>&1 | tee "$out/demo-np$ranks.log" | grep "RESULT"
+  results+=("$(grep "^RESULT" "$out/demo-np$ranks.log")")
+done
+
+field() { # field <name> <RESULT line>
+  sed -n "s/.* $1=\([^ ]*\).*/\1/p" <<< " $2"
+}
+echo
+echo "Machine: $(nproc) cores, $(LC_ALL=C lscpu | sed -n 's/^Model name: *//p'), Mesa llvmpipe;" \
+  "ParaView $(dpkg-query -W -f='${Version}' paraview)"
+echo
+echo "| ranks | isosurface triangles | lights | lights assigned | first frame (s) | frame, median (ms) | frame, fastest (ms) | same frame without the lights (ms) |"
+echo "|---:|---:|---:|---:|---:|---:|---:|---:|"
+for r in "${results[@]}"; do
+  echo "| $(field ranks "$r") | $(field triangles "$r") | $(field lights "$r") |" \
+    "$(field assigned "$r") | $(field first_frame_s "$r") | $(field frame_ms_median "$r") |" \
+    "$(field frame_ms_min "$r") | $(field unlit_frame_ms_median "$r") |"
+done
+if $docs; then
+  last=${rank_counts[-1]}
+  cp "$out/paraview-scale-demo-np$last.png" "$root/docs/images/paraview-scale-demo.png"
+  cp "$out/paraview-scale-demo-ranks-np$last.png" "$root/docs/images/paraview-scale-demo-ranks.png"
+  echo "copied the $last-rank images to docs/images/paraview-scale-demo*.png"
+fi

@@ -43,13 +43,20 @@ echo
 echo "Machine: $(nproc) cores, $(LC_ALL=C lscpu | sed -n 's/^Model name: *//p'), Mesa llvmpipe;" \
   "ParaView $(dpkg-query -W -f='${Version}' paraview)"
 echo
-echo "| ranks | isosurface triangles | lights | lights assigned | first frame (s) | frame, median (ms) | frame, fastest (ms) | same frame without the lights (ms) |"
-echo "|---:|---:|---:|---:|---:|---:|---:|---:|"
+echo "Load average when the run ended: $(cut -d' ' -f1-3 /proc/loadavg)"
+echo
+echo "| ranks | lights (rank 0) | in view | first frame (s) | frame, median (ms) | frame, fastest (ms) | assignment (ms) | shading (ms) | lights evaluated / reaching per pixel | without the lights (ms) |"
+echo "|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
 for r in "${results[@]}"; do
-  echo "| $(field ranks "$r") | $(field triangles "$r") | $(field lights "$r") |" \
-    "$(field assigned "$r") | $(field first_frame_s "$r") | $(field frame_ms_median "$r") |" \
-    "$(field frame_ms_min "$r") | $(field unlit_frame_ms_median "$r") |"
+  echo "| $(field ranks "$r") | $(field lights "$r") | $(field assigned "$r") |" \
+    "$(field first_frame_s "$r") | $(field frame_ms_median "$r") | $(field frame_ms_min "$r") |" \
+    "$(field assignment_ms "$r") | $(field shading_ms "$r") |" \
+    "$(field evaluated_per_pixel "$r") / $(field reaching_per_pixel "$r") |" \
+    "$(field unlit_frame_ms_median "$r") |"
 done
+r=${results[0]}
+echo
+echo "Isosurface: $(field triangles "$r") triangles from $(field points "$r") grid points."
 if $docs; then
   last=${rank_counts[-1]}
   cp "$out/paraview-scale-demo-np$last.png" "$root/docs/images/paraview-scale-demo.png"

@@ -41,7 +41,8 @@ xml = ET.parse(os.path.join(root, "Plugins", "ParaView", "ClusteredLighting",
                             "ClusteredLighting.xml")).getroot()
 
 # ------------------------------------------------------------------ the header's options
-constants = {"true": 1, "false": 0, "VTK_INT_MAX": 2 ** 31 - 1}
+constants = {"true": 1, "false": 0, "VTK_INT_MAX": 2 ** 31 - 1, "VTK_INT_MIN": -2 ** 31,
+             "VTK_FLOAT_MAX": 3.4028234663852886e38, "VTK_DOUBLE_MAX": 1.7976931348623157e308}
 for body in re.findall(r"enum\s+\w+\s*\{([^}]*)\}", header):
     for name, value in re.findall(r"(\w+)\s*=\s*(-?\d+)", body):
         constants[name] = int(value)
@@ -49,10 +50,25 @@ for body in re.findall(r"enum\s+\w+\s*\{([^}]*)\}", header):
 
 def evaluate(expression):
     """Value of a C++ default or clamp bound: numbers, enum constants, + - * /."""
-    text = re.sub(r"\b[A-Za-z_]\w*\b", lambda m: str(constants[m.group(0)]), expression)
+    def value(match):
+        if match.group(0) not in constants:
+            raise ValueError("unknown name %s in %r" % (match.group(0), expression))
+        return str(constants[match.group(0)])
+
+    text = re.sub(r"\b[A-Za-z_]\w*\b", value, expression.strip())
+    text = re.sub(r"(?<=[0-9.])[fF]\b", "", text)  # 1.0f
     if not re.fullmatch(r"[0-9eE.+\-*/() ]+", text):
         raise ValueError("cannot evaluate %r" % expression)
     return float(eval(text, {"__builtins__": {}}))  # only numbers and operators
+
+
+def value_of(expression):
+    """evaluate(), or a failed check and NaN."""
+    try:
+        return evaluate(expression)
+    except ValueError as error:
+        t.check(False, "header: %s" % error)
+        return float("nan")
 
 
 options = {}
@@ -60,8 +76,8 @@ for name, ctype in re.findall(r"vtkSetMacro\((\w+),\s*(\w+)\)", header):
     options[name] = {"type": ctype, "range": None}
 for name, ctype, low, high in re.findall(
         r"vtkSetClampMacro\((\w+),\s*(\w+),\s*([^,]+),\s*([^)]+)\)", header):
-    options[name] = {"type": ctype, "range": (evaluate(low), evaluate(high))}
-defaults = {name: evaluate(value) for _, name, value in re.findall(
+    options[name] = {"type": ctype, "range": (value_of(low), value_of(high))}
+defaults = {name: value_of(value) for _, name, value in re.findall(
     r"^\s*(bool|int|double|float)\s+(\w+)\s*=\s*([^;]+);", header, re.M)}
 t.check(len(options) >= 15, "%d options in vtkClusteredLightingPass.h: %s"
         % (len(options), ", ".join(sorted(options))))
@@ -92,7 +108,9 @@ for name in sorted(options):
     if element.get("command") != "Set" + name:
         problems.append("command %s" % element.get("command"))
     xml_default = float(element.get("default_values"))
-    if not math.isclose(xml_default, defaults[name], rel_tol=1e-12, abs_tol=0.0):
+    if name not in defaults:
+        problems.append("no default member initializer in the header")
+    elif not math.isclose(xml_default, defaults[name], rel_tol=1e-12, abs_tol=0.0):
         problems.append("default %r, header %r" % (xml_default, defaults[name]))
     if option["type"] == "bool":
         if element.find("BooleanDomain") is None:

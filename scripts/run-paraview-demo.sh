@@ -6,27 +6,37 @@
 # Installs and builds what is missing (scripts/install-paraview.sh,
 # scripts/build-paraview-plugin.sh). llvmpipe gets the machine's cores shared between
 # the ranks (LP_NUM_THREADS = cores / ranks, at least 1).
-# Usage: scripts/run-paraview-demo.sh [--docs] [ranks...]   (default ranks: 1 2 4)
-#   --docs: copy the 4-rank images to docs/images/paraview-scale-demo*.png
+# Usage: scripts/run-paraview-demo.sh [--docs | --table] [ranks...]   (default ranks: 1 2 4)
+#   --docs: copy the last rank count's images to docs/images/paraview-scale-demo*.png
+#   --table: print the table of the last run again (from build-paraview/demo/*.log)
 # Run it on an otherwise idle machine: the numbers are wall-clock frame times.
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 docs=false
+table_only=false
 if [ "${1:-}" = "--docs" ]; then
   docs=true
+  shift
+elif [ "${1:-}" = "--table" ]; then
+  table_only=true
   shift
 fi
 rank_counts=("${@:-1 2 4}")
 read -r -a rank_counts <<< "${rank_counts[*]}"
-"$root/scripts/install-paraview.sh"
 build="$root/build-paraview"
-plugin="$build/lib/paraview-5.11/plugins/ClusteredLighting/ClusteredLighting.so"
-[ -f "$plugin" ] || "$root/scripts/build-paraview-plugin.sh" "$build" > /dev/null
 out="$build/demo"
+$table_only || "$root/scripts/install-paraview.sh"
+plugin="$build/lib/paraview-5.11/plugins/ClusteredLighting/ClusteredLighting.so"
+$table_only || [ -f "$plugin" ] || "$root/scripts/build-paraview-plugin.sh" "$build" > /dev/null
 mkdir -p "$out"
 cores=$(nproc)
+load_start=$(cut -d" " -f1-3 /proc/loadavg)
 results=()
 for ranks in "${rank_counts[@]}"; do
+  if $table_only; then
+    results+=("$(grep "^RESULT" "$out/demo-np$ranks.log")")
+    continue
+  fi
   threads=$((cores / ranks))
   [ "$threads" -ge 1 ] || threads=1
   echo "=== $ranks rank(s), LP_NUM_THREADS=$threads"
@@ -40,23 +50,22 @@ field() { # field <name> <RESULT line>
   sed -n "s/.* $1=\([^ ]*\).*/\1/p" <<< " $2"
 }
 echo
-echo "Machine: $(nproc) cores, $(LC_ALL=C lscpu | sed -n 's/^Model name: *//p'), Mesa llvmpipe;" \
+$table_only || echo "Machine: $(nproc) cores, $(LC_ALL=C lscpu | sed -n 's/^Model name: *//p'), Mesa llvmpipe;" \
   "ParaView $(dpkg-query -W -f='${Version}' paraview)"
 echo
-echo "Load average when the run ended: $(cut -d' ' -f1-3 /proc/loadavg)"
+$table_only || echo "Load average (1, 5, 15 min) at the start: $load_start; at the end: $(cut -d' ' -f1-3 /proc/loadavg)"
 echo
-echo "| ranks | lights (rank 0) | in view | first frame (s) | frame, median (ms) | frame, fastest (ms) | assignment (ms) | shading (ms) | lights evaluated / reaching per pixel | without the lights (ms) |"
-echo "|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
+echo "| ranks | isosurface triangles | lights (rank 0) | in view | first frame (s) | frame, median (ms) | frame, fastest (ms) | assignment (ms) | shading (ms) | lights evaluated / reaching per pixel | without the lights (ms) |"
+echo "|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
 for r in "${results[@]}"; do
-  echo "| $(field ranks "$r") | $(field lights "$r") | $(field assigned "$r") |" \
+  echo "| $(field ranks "$r") | $(field triangles "$r") | $(field lights "$r") | $(field assigned "$r") |" \
     "$(field first_frame_s "$r") | $(field frame_ms_median "$r") | $(field frame_ms_min "$r") |" \
     "$(field assignment_ms "$r") | $(field shading_ms "$r") |" \
     "$(field evaluated_per_pixel "$r") / $(field reaching_per_pixel "$r") |" \
     "$(field unlit_frame_ms_median "$r") |"
 done
-r=${results[0]}
 echo
-echo "Isosurface: $(field triangles "$r") triangles from $(field points "$r") grid points."
+echo "Triangles: the sum of the ranks' pieces (ParaView's data information)."
 if $docs; then
   last=${rank_counts[-1]}
   cp "$out/paraview-scale-demo-np$last.png" "$root/docs/images/paraview-scale-demo.png"

@@ -55,14 +55,16 @@ $table_only || echo "Machine: $(nproc) cores, $(LC_ALL=C lscpu | sed -n 's/^Mode
 echo
 $table_only || echo "Load average (1, 5, 15 min) at the start: $load_start; at the end: $(cut -d' ' -f1-3 /proc/loadavg)"
 echo
-echo "| ranks | isosurface triangles | lights (rank 0) | in view | first frame (s) | frame, median (ms) | frame, fastest (ms) | assignment (ms) | shading (ms) | lights evaluated / reaching per pixel | without the lights (ms) |"
-echo "|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
+echo "| ranks | isosurface triangles | lights (rank 0) | in view | first frame (s) | frame, median (ms) | frame, fastest (ms) | assignment (ms) | shading (ms) | lights evaluated / reaching per pixel | without the lights (ms) | against 1 rank: max step, pixels > 1 step | stock view against 1 rank |"
+echo "|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
 for r in "${results[@]}"; do
   echo "| $(field ranks "$r") | $(field triangles "$r") | $(field lights "$r") | $(field assigned "$r") |" \
     "$(field first_frame_s "$r") | $(field frame_ms_median "$r") | $(field frame_ms_min "$r") |" \
     "$(field assignment_ms "$r") | $(field shading_ms "$r") |" \
     "$(field evaluated_per_pixel "$r") / $(field reaching_per_pixel "$r") |" \
-    "$(field unlit_frame_ms_median "$r") |"
+    "$(field unlit_frame_ms_median "$r") |" \
+    "$(field diff_max "$r"), $(field diff_pixels "$r") |" \
+    "$(field stock_diff_max "$r"), $(field stock_diff_pixels "$r") |"
 done
 echo
 echo "Triangles: the sum of the ranks' pieces (ParaView's data information)."

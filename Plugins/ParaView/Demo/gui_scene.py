@@ -15,7 +15,8 @@ from paraview.simple import *  # noqa: F401,F403
 
 plugin = os.environ["CLUSTERED_LIGHTING_PLUGIN"]
 LoadPlugin(plugin, remote=True, ns=globals())
-LoadPlugin(plugin, remote=False, ns=globals())
+if servermanager.ActiveConnection.IsRemote():
+    LoadPlugin(plugin, remote=False, ns=globals())
 
 layout = GetLayout()
 stock = GetActiveView()

@@ -15,7 +15,9 @@ Times: the first frame (data delivery, light upload, shader compilation); the me
 fastest of --frames frames (Render() on rank 0, which returns after IceT composited the
 ranks' images); one frame with the pass's timers (rank 0's assignment and shading, after
 a glFinish); the lights evaluated per pixel of the isosurface, against those that reach
-it (the evaluated-count debug view); and the same frames without the lights.
+it (the evaluated-count debug view); and the same frames without the lights. On N > 1
+ranks, the last frame is compared with the 1-rank run's (if it is in --output), and so is
+the stock RenderView's frame of the same isosurface (light kit, same camera).
 Prints one line "RESULT ..." with the numbers (scripts/run-paraview-demo.sh makes the table
 from them) and saves the last frame, and the same frame colored by process id.
 Usage: pvbatch scale_demo.py --plugin ClusteredLighting.so --output DIR [--frames N]
@@ -151,6 +153,46 @@ Render(view)
 
 image = os.path.join(args.output, "paraview-scale-demo-np%d.png" % ranks)
 SaveScreenshot(image, view, ImageResolution=args.size, TransparentBackground=0)
+
+# The stock render view of the same isosurface (light kit), same camera: how much
+# ParaView's own image of it changes with the number of ranks.
+stock = CreateView("RenderView")
+stock.ViewSize = args.size
+stock.OrientationAxesVisibility = 0
+stock.UseColorPaletteForBackground = 0
+stock.Background = [0.02, 0.02, 0.03]
+stock_display = Show(surface, stock)
+stock_display.ColorArrayName = ["POINTS", ""]
+stock_display.DiffuseColor = [0.9, 0.9, 0.9]
+Render(stock)
+stock.CameraPosition = view.CameraPosition
+stock.CameraFocalPoint = view.CameraFocalPoint
+stock.CameraViewUp = view.CameraViewUp
+stock.CameraViewAngle = view.CameraViewAngle
+stock_image = os.path.join(args.output, "stock-np%d.png" % ranks)
+SaveScreenshot(stock_image, stock, ImageResolution=args.size, TransparentBackground=0)
+Delete(stock)
+
+
+def read(path):
+    png = vtkPNGReader()
+    png.SetFileName(path)
+    png.Update()
+    return vtk_to_numpy(png.GetOutput().GetPointData().GetScalars())[:, :3].astype(numpy.int64)
+
+
+def against_one_rank(path, name):
+    """Largest channel difference and pixels differing by more than 1 from the 1-rank
+    run's image, if there is one ("-" otherwise)."""
+    reference = os.path.join(args.output, name + "-np1.png")
+    if ranks == 1 or not os.path.exists(reference):
+        return "-", "-"
+    d = numpy.abs(read(path) - read(reference)).max(axis=1)
+    return str(int(d.max())), str(int((d > 1).sum()))
+
+
+diff_max, diff_pixels = against_one_rank(image, "paraview-scale-demo")
+stock_diff_max, stock_diff_pixels = against_one_rank(stock_image, "stock")
 ids = Show(ProcessIdScalars(Input=surface), view)
 Hide(surface, view)
 ColorBy(ids, ("POINTS", "ProcessId"))
@@ -165,7 +207,9 @@ SaveScreenshot(os.path.join(args.output, "paraview-scale-demo-ranks-np%d.png" % 
 print("RESULT ranks=%d points=%d triangles=%d lights=%d assigned=%d assignment_updates=%d "
       "pipeline_s=%.2f first_frame_s=%.2f frame_ms_median=%.1f frame_ms_min=%.1f "
       "assignment_ms=%.1f shading_ms=%.1f evaluated_per_pixel=%.1f reaching_per_pixel=%.1f "
-      "unlit_frame_ms_median=%.1f image=%s"
+      "unlit_frame_ms_median=%.1f diff_max=%s diff_pixels=%s stock_diff_max=%s "
+      "stock_diff_pixels=%s image=%s"
       % (ranks, points, triangles, clustered, assigned, updates, pipeline_seconds, first,
          1000 * statistics.median(times), 1000 * min(times), assignment_ms, shading_ms,
-         evaluated, reaching, 1000 * statistics.median(unlit_times), image))
+         evaluated, reaching, 1000 * statistics.median(unlit_times), diff_max, diff_pixels,
+         stock_diff_max, stock_diff_pixels, image))

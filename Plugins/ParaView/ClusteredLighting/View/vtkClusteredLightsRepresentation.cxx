@@ -42,7 +42,8 @@ int vtkClusteredLightsRepresentation::FillInputPortInformation(int, vtkInformati
 {
   // Any data object is accepted here so that a wrong type is reported by RequestData()
   // with an error that says what to do; ParaView's domain offers the representation for
-  // vtkPolyData only. The input is optional: rendering-only processes have none.
+  // vtkPolyData and composite data sets. The input is optional: rendering-only processes
+  // have none.
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataObject");
   info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
   return 1;
@@ -104,10 +105,14 @@ void vtkClusteredLightsRepresentation::CopyOwnedPoints(vtkPolyData* input, vtkPo
   // Only the points and their arrays become lights: the cells are not delivered.
   vtkPoints* points = input->GetPoints();
   vtkPointData* pointData = input->GetPointData();
-  vtkUnsignedCharArray* ghosts = input->GetPointGhostArray();
   vtkIdType n = points ? points->GetNumberOfPoints() : 0;
+  vtkUnsignedCharArray* ghosts = input->GetPointGhostArray();
+  if (ghosts && ghosts->GetNumberOfTuples() != n)
+  {
+    ghosts = nullptr; // not a ghost array of these points: ignored
+  }
   vtkNew<vtkIdList> owned;
-  if (ghosts && ghosts->GetNumberOfTuples() == n)
+  if (ghosts)
   {
     for (vtkIdType i = 0; i < n; ++i)
     {

@@ -6,7 +6,11 @@
 # Installs and builds what is missing (scripts/install-paraview.sh,
 # scripts/build-paraview-plugin.sh). llvmpipe gets the machine's cores shared between
 # the ranks (LP_NUM_THREADS = cores / ranks, at least 1).
-# Usage: scripts/run-paraview-demo.sh [--docs | --table] [ranks...]   (default ranks: 1 2 4)
+# Usage: scripts/run-paraview-demo.sh [--wait-idle] [--docs | --table] [ranks...]
+#   ranks: default 1 2 4
+#   --wait-idle: before each rank count, wait (up to an hour) until the CPUs were more
+#     than 90% idle for 10 s: on a machine shared with other work, each measurement then
+#     starts on idle CPUs (the table prints the load averages)
 #   --docs: copy the last rank count's images to docs/images/paraview-scale-demo*.png
 #   --table: print the table of the last run again (from build-paraview/demo/*.log)
 # Run it on an otherwise idle machine: the numbers are wall-clock frame times.
@@ -14,6 +18,11 @@ set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 docs=false
 table_only=false
+wait_idle=false
+if [ "${1:-}" = "--wait-idle" ]; then
+  wait_idle=true
+  shift
+fi
 if [ "${1:-}" = "--docs" ]; then
   docs=true
   shift
@@ -30,8 +39,24 @@ plugin="$build/lib/paraview-5.11/plugins/ClusteredLighting/ClusteredLighting.so"
 $table_only || [ -f "$plugin" ] || "$root/scripts/build-paraview-plugin.sh" "$build" > /dev/null
 mkdir -p "$out"
 cores=$(nproc)
-load_start=$(cut -d" " -f1-3 /proc/loadavg)
+idle_for_5s() { # true if the CPUs were more than 90% idle over the next 5 s
+  local u n s i w q sq st t1 i1 t2 i2
+  read -r _ u n s i w q sq st _ < /proc/stat
+  t1=$((u + n + s + i + w + q + sq + st)) i1=$((i + w))
+  sleep 5
+  read -r _ u n s i w q sq st _ < /proc/stat
+  t2=$((u + n + s + i + w + q + sq + st)) i2=$((i + w))
+  [ $(((i2 - i1) * 100 / (t2 - t1))) -ge 90 ]
+}
+wait_until_idle() {
+  for _ in $(seq 360); do
+    idle_for_5s && idle_for_5s && return 0
+  done
+  echo "the CPUs were not idle for an hour: measuring anyway" >&2
+}
+
 results=()
+loads=()
 for ranks in "${rank_counts[@]}"; do
   if $table_only; then
     results+=("$(grep "^RESULT" "$out/demo-np$ranks.log")")
@@ -39,6 +64,8 @@ for ranks in "${rank_counts[@]}"; do
   fi
   threads=$((cores / ranks))
   [ "$threads" -ge 1 ] || threads=1
+  $wait_idle && wait_until_idle
+  loads+=("$ranks rank(s): $(cut -d' ' -f1-3 /proc/loadavg) at the start")
   echo "=== $ranks rank(s), LP_NUM_THREADS=$threads"
   LP_NUM_THREADS=$threads "$root/Plugins/ParaView/Testing/pvbatch-test.sh" "$ranks" \
     "$root/Plugins/ParaView/Demo/scale_demo.py" --plugin "$plugin" --output "$out" \
@@ -53,7 +80,7 @@ echo
 $table_only || echo "Machine: $(nproc) cores, $(LC_ALL=C lscpu | sed -n 's/^Model name: *//p'), Mesa llvmpipe;" \
   "ParaView $(dpkg-query -W -f='${Version}' paraview)"
 echo
-$table_only || echo "Load average (1, 5, 15 min) at the start: $load_start; at the end: $(cut -d' ' -f1-3 /proc/loadavg)"
+$table_only || echo "Load averages (1, 5, 15 min): ${loads[*]}; at the end: $(cut -d' ' -f1-3 /proc/loadavg)"
 echo
 echo "| ranks | isosurface triangles | lights (rank 0) | in view | first frame (s) | frame, median (ms) | frame, fastest (ms) | assignment (ms) | shading (ms) | lights evaluated / reaching per pixel | without the lights (ms) | against 1 rank: max step, pixels > 1 step | stock view against 1 rank |"
 echo "|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"

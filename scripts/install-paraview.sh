@@ -4,7 +4,7 @@
 # can use without installing python3-paraview. Idempotent.
 #
 #  - paraview, paraview-dev (ParaView 5.11 with its own VTK 9.2, libvtk*-pv5.11.so),
-#    openmpi-bin (mpirun), xvfb, xauth.
+#    openmpi-bin (mpirun), xvfb, xauth, python3-numpy (the tests compare images with it).
 #  - python3-paraview is NEVER installed: it conflicts with python3-vtk9 (both own
 #    dist-packages/vtkmodules) and apt would remove the VTK this project builds on. Its
 #    .deb is unpacked with dpkg -x into $prefix/python3-paraview instead: pvbatch needs its
@@ -24,7 +24,7 @@ SUDO=""
 [ "$(id -u)" -ne 0 ] && SUDO="sudo"
 export DEBIAN_FRONTEND=noninteractive
 
-pkgs=(paraview paraview-dev openmpi-bin xvfb xauth)
+pkgs=(paraview paraview-dev openmpi-bin xvfb xauth python3-numpy)
 missing=()
 for p in "${pkgs[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -391,14 +391,18 @@ void vtkClusteredLightingAssigner::PrepareLights(const vtkClusteredLightingAssig
     PlanFarField(this->Prepared.Lights, this->RegionLo, this->RegionHi, inputs.FarField);
   // Report each problem once: a bad light stays reported while it stays bad, even when
   // other lights change every frame.
+  // Many at once are summarized: a few lines per light set (vtkClusteredLightingMessages.h).
   std::set<std::string> problems(this->Prepared.Problems.begin(), this->Prepared.Problems.end());
-  for (const std::string& problem : problems)
+  std::vector<std::string> fresh;
+  for (const std::string& problem : this->Prepared.Problems)
   {
     if (!this->ReportedProblems.count(problem))
     {
-      this->Result.NewProblems.push_back(problem);
+      fresh.push_back(problem);
     }
   }
+  this->Result.NewProblems = vtkClusteredLighting::SummarizeProblems(
+    fresh, vtkClusteredLighting::DefaultMaximumProblemsPerSource);
   this->ReportedProblems.swap(problems);
   this->LightDataUploaded = false;
   this->AssignmentValid = false;

@@ -48,6 +48,7 @@
 #include "vtkClusteredLightingGLHelpers.h"        // for vtkClusteredLightingTextureBuffer
 #include "vtkClusteredLightingLayout.h"           // for ClusterTextureLayout
 #include "vtkClusteredLightingLights.h"           // for PreparedLights
+#include "vtkClusteredLightingMessages.h"         // for ProblemGroup
 #include "vtkOpenGLRenderWindow.h"                // for vtkWeakPointer<vtkOpenGLRenderWindow>
 #include "vtkWeakPointer.h"                       // for vtkWeakPointer
 
@@ -141,8 +142,9 @@ struct vtkClusteredLightingAssignment
   std::uint64_t ListBytes = 0, MasterBytes = 0, LightBufferBytes = 0;
 
   // Messages new in this update (each problem is reported once while it persists).
-  std::vector<std::string> NewProblems; ///< invalid lights (warnings)
-  std::string NewError;                 ///< a limit that keeps the lights from rendering
+  /// Invalid lights newly found (warnings), grouped by light set and capped per set.
+  std::vector<vtkClusteredLighting::ProblemGroup> NewProblems;
+  std::string NewError; ///< a limit that keeps the lights from rendering
 
   // Shading inputs.
   int MasterTexels = 1; ///< master texels per cluster (a compile-time constant of the GLSL)

@@ -350,9 +350,21 @@ vtkClusteredLightingAssignerInputs vtkClusteredLightingPass::MakeAssignerInputs(
 // Messages and statistics of an assignment.
 void vtkClusteredLightingPass::ReportAssignment(const vtkClusteredLightingAssignment& r)
 {
-  for (const std::string& problem : r.NewProblems)
+  for (const vtkClusteredLighting::ProblemGroup& group : r.NewProblems)
   {
-    vtkWarningMacro(<< problem);
+    vtkClusteredLightSet* set = nullptr;
+    for (const auto& candidate : this->Internals->LightSets)
+    {
+      set = static_cast<const void*>(candidate.Get()) == group.Object ? candidate.Get() : set;
+    }
+    for (const std::string& line : group.Lines)
+    {
+      vtkWarningMacro(<< line);
+      if (set)
+      {
+        set->ReportProblem(line.c_str());
+      }
+    }
   }
   if (!r.NewError.empty())
   {

@@ -214,7 +214,7 @@ public:
   ///@{
   /**
    * Resolution of the far field: the number of grid nodes over the bounding box of the
-   * visible geometry (108 bytes of GPU memory each). The grid spacing h follows, and the
+   * visible geometry (112 bytes of GPU memory each: 7 RGBA32F texels). The grid spacing h follows, and the
    * near radius of bright and always-on lights is FarFieldCellsPerRadius * h: more nodes
    * mean smaller near radii, fewer lights evaluated per fragment, longer far-field builds.
    * Range [512, 16777216]. Default is 32768.
@@ -262,11 +262,11 @@ public:
   /**
    * Advanced: how many lights per point, on average over the box of the visible geometry,
    * the near field may evaluate exactly (a light counts at most once per point). When all
-   * lights fit whole (say, up to 16 vtkLights that reach everywhere) there is no far field;
-   * otherwise the lights with the largest radii are cut to one radius R that fills the
-   * budget (a few bright lights among many keep exact highlights); past it
-   * every light's near radius is FarFieldCellsPerRadius grid cells and the far field
-   * carries the rest. Range [0, 1e6]. Default is 16.
+   * lights fit whole, each keeps its cutoff radius and the far field holds only the tails
+   * past it (none at all for up to 16 vtkLights that reach everywhere); otherwise the
+   * lights with the largest radii are cut to one radius R that fills the budget (a few
+   * bright lights among many keep exact highlights), never below FarFieldCellsPerRadius
+   * grid cells, and the far field carries the rest. Range [0, 1e6]. Default is 16.
    */
   vtkSetClampMacro(NearFieldBudget, double, 0.0, 1e6);
   vtkGetMacro(NearFieldBudget, double);

@@ -193,6 +193,21 @@ std::vector<Step> MakePlan(const PlanOptions& options)
     {
       knob("cutoff", Fraction(c), [c](vtkClusteredLightingPass* p) { p->SetCutoff(1.0 / c); });
     }
+    // The far field (docs/far-field.md): off is the cut tails of earlier versions.
+    knob("far field", "off", [](vtkClusteredLightingPass* p) { p->SetFarField(false); });
+    if (!quick)
+    {
+      for (int nodes : { 8192, 131072 })
+      {
+        knob("far field", std::to_string(nodes) + " nodes",
+          [nodes](vtkClusteredLightingPass* p) { p->SetFarFieldResolution(nodes); });
+      }
+      for (double budget : { 4.0, 64.0 })
+      {
+        knob("near budget", std::to_string(static_cast<int>(budget)),
+          [budget](vtkClusteredLightingPass* p) { p->SetNearFieldBudget(budget); });
+      }
+    }
     knob("bounds", "centre-depth quad",
       [](vtkClusteredLightingPass* p)
       { p->SetBoundsMethod(vtkClusteredLightingPass::BOUNDS_CENTER_DEPTH_QUAD); });

@@ -35,10 +35,11 @@ bool vtkClusteredLightingFarFieldTextures::Build(
   vtkSMPTools::For(0, static_cast<vtkIdType>(blocks[0]) * blocks[1] * blocks[2], 1,
     [&](vtkIdType b0, vtkIdType b1)
     {
-      pairs += ComputeFarFieldMoments(grid, lights, nearRadii, tree, plan.Grouping, b0, b1,
-        this->Moments);
+      pairs +=
+        ComputeFarFieldMoments(grid, lights, nearRadii, tree, plan.Grouping, b0, b1, this->Moments);
     });
-  this->SourcesPerNode = static_cast<double>(pairs.load()) / std::max<std::int64_t>(grid.GetNumberOfNodes(), 1);
+  this->SourcesPerNode =
+    static_cast<double>(pairs.load()) / std::max<std::int64_t>(grid.GetNumberOfNodes(), 1);
   const std::array<std::vector<float>, FarFieldTextures> texels = PackFarFieldTexels(this->Moments);
 
   bool ok = true;

@@ -214,8 +214,8 @@ public:
   ///@{
   /**
    * Resolution of the far field: the number of grid nodes over the bounding box of the
-   * visible geometry (112 bytes of GPU memory each: 7 RGBA32F texels). The grid spacing h follows, and the
-   * near radius of bright and always-on lights is FarFieldCellsPerRadius * h: more nodes
+   * visible geometry (112 bytes of GPU memory each: 7 RGBA32F texels). The grid spacing h follows,
+   * and the near radius of bright and always-on lights is FarFieldCellsPerRadius * h: more nodes
    * mean smaller near radii, fewer lights evaluated per fragment, longer far-field builds.
    * Range [512, 16777216]. Default is 32768.
    */

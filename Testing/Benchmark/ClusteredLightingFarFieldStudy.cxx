@@ -219,8 +219,8 @@ struct Errors
   {
     std::printf("%-44s max %5.0f (>2: %zu)  mean %6.3f  RMSE %6.3f  (continuous mean %6.3f)  "
                 "near/pt %7.2f",
-      name, this->Max, this->OverTwo, this->Mean / this->Count,
-      std::sqrt(this->RMSE / this->Count), this->ContinuousMean / this->Count, nearPerPoint);
+      name, this->Max, this->OverTwo, this->Mean / this->Count, std::sqrt(this->RMSE / this->Count),
+      this->ContinuousMean / this->Count, nearPerPoint);
     if (nodes > 0)
     {
       std::printf("  nodes %lld", nodes);
@@ -431,7 +431,8 @@ int main(int argc, char* argv[])
   // Today: every light cut at its cutoff radius.
   for (double cutoff : cutoffs)
   {
-    const PreparedLights prepared = PrepareLights(sources, LightPreparationOptions{ cutoff, false });
+    const PreparedLights prepared =
+      PrepareLights(sources, LightPreparationOptions{ cutoff, false });
     Errors e;
     double near = 0.0;
     for (std::size_t i = 0; i < samples.size(); ++i)
@@ -535,8 +536,8 @@ int main(int argc, char* argv[])
         std::snprintf(name, sizeof(name), "far field: %g nodes, h %.3g, r <= %g h, grouping %g",
           target, grid.Spacing, cells, grouping);
         e.Print(name, near / samples.size(), grid.GetNumberOfNodes(), ms, "build ms");
-        std::printf("    sources per node %.1f", static_cast<double>(pairs.load()) /
-            std::max<std::int64_t>(grid.GetNumberOfNodes(), 1));
+        std::printf("    sources per node %.1f",
+          static_cast<double>(pairs.load()) / std::max<std::int64_t>(grid.GetNumberOfNodes(), 1));
         if (bounds)
         {
           std::printf("; bound per point and channel: mean %.3f, max %.3f steps; error / bound "
@@ -600,7 +601,8 @@ int main(int argc, char* argv[])
           {
             for (int q = n.First; q < n.First + n.Count; ++q)
             {
-              const std::size_t l = static_cast<std::size_t>(tree.Order[static_cast<std::size_t>(q)]);
+              const std::size_t l =
+                static_cast<std::size_t>(tree.Order[static_cast<std::size_t>(q)]);
               double far;
               glm::dvec3 u;
               if (ComputeFarContribution(lights[l], radii[l], smp.P, far, u))

@@ -54,7 +54,8 @@ inline void WritePNG(vtkRenderWindow* rw, const std::string& path)
   writer->Write();
 }
 /// Writes RGB floats in [0, 1] (row-major from the bottom, as CaptureRGB) to a PNG file.
-inline void WriteRGBPNG(const std::vector<float>& rgb, int width, int height, const std::string& path)
+inline void WriteRGBPNG(
+  const std::vector<float>& rgb, int width, int height, const std::string& path)
 {
   vtkNew<vtkImageData> image;
   image->SetDimensions(width, height, 1);

@@ -6,9 +6,7 @@
 #include "vtkTextureObject.h"
 #include "vtk_glew.h" // for GL enums
 
-#include <algorithm> // for std::max
-#include <atomic>    // for the pair count
-#include <chrono>    // for timings
+#include <chrono> // for timings
 
 using namespace vtkClusteredLighting;
 
@@ -31,15 +29,10 @@ bool vtkClusteredLightingFarFieldTextures::Build(
   this->Moments.assign(
     static_cast<std::size_t>(grid.GetNumberOfNodes()) * FarFieldFloatsPerNode, 0.0);
   const std::array<int, 3> blocks = GetFarFieldBlocks(grid);
-  std::atomic<std::int64_t> pairs(0);
   vtkSMPTools::For(0, static_cast<vtkIdType>(blocks[0]) * blocks[1] * blocks[2], 1,
-    [&](vtkIdType b0, vtkIdType b1)
-    {
-      pairs +=
-        ComputeFarFieldMoments(grid, lights, nearRadii, tree, plan.Grouping, b0, b1, this->Moments);
+    [&](vtkIdType b0, vtkIdType b1) {
+      ComputeFarFieldMoments(grid, lights, nearRadii, tree, plan.Grouping, b0, b1, this->Moments);
     });
-  this->SourcesPerNode =
-    static_cast<double>(pairs.load()) / std::max<std::int64_t>(grid.GetNumberOfNodes(), 1);
   const std::array<std::vector<float>, FarFieldTextures> texels = PackFarFieldTexels(this->Moments);
 
   bool ok = true;

@@ -46,11 +46,7 @@ public:
   bool Build(vtkOpenGLRenderWindow* rw, const vtkClusteredLighting::FarFieldPlan& plan,
     const std::vector<vtkClusteredLighting::PreparedLight>& lights);
 
-  /// The node moments of the last build (FarFieldFloatsPerNode per node; kept for tests).
-  const std::vector<double>& GetMoments() const { return this->Moments; }
   double GetBuildTime() const { return this->BuildTime; }
-  /// Sources (lights and groups) summed per node in the last build: its cost.
-  double GetSourcesPerNode() const { return this->SourcesPerNode; }
   /// The light tree and near radii of the last build (for its error bound).
   const vtkClusteredLighting::FarFieldLightTree& GetTree() const { return this->Tree; }
   const std::vector<double>& GetNearRadii() const { return this->NearRadii; }
@@ -73,11 +69,10 @@ private:
 
   std::array<vtkTextureObject*, vtkClusteredLighting::FarFieldTextures> Textures{};
   std::array<int, 3> Dims = { { 0, 0, 0 } };
-  std::vector<double> Moments;
+  std::vector<double> Moments; ///< node sums, reused from build to build (animated lights)
   std::vector<double> NearRadii;
   vtkClusteredLighting::FarFieldLightTree Tree;
   double BuildTime = 0.0;
-  double SourcesPerNode = 0.0;
 };
 
 #endif

@@ -1,0 +1,148 @@
+#!/usr/bin/python3
+# SPDX-License-Identifier: BSD-3-Clause
+"""Lights as a new user writes them, clustered against brute force.
+
+2,000 white point lights from a vtkPointSource (a ball of radius 3 around a sphere on
+a floor), VTK's inverse-square attenuation (1, 0, 8), no radius, 400x300: the kind of
+scene of issue 11 that the benchmark does not contain. At intensity 1 so many lights
+saturate every pixel (both images are white, which shows nothing), so the default
+intensity is 0.02 (--intensity): each light alone is still brighter than one 8-bit step
+up to about 0.7 away, and their sum lights the scene without saturating it. Renders it with the
+pass's defaults (far field on), with the far field off, and with brute force (every
+light, exact); prints each frame time and the clustered images' error against brute
+force in 8-bit steps and writes the three images. Exits with status 1 if the far field
+does not bring the image closer to brute force.
+
+    PYTHONPATH=build/lib/python3/dist-packages \\
+      scripts/with-display.sh /usr/bin/python3 Examples/Python/user_lights.py
+"""
+
+import argparse
+import time
+
+from clusteredlighting import vtkClusteredLightingPass, vtkClusteredLightSet
+from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.vtkFiltersSources import vtkPlaneSource, vtkPointSource, vtkSphereSource
+from vtkmodules.vtkIOImage import vtkPNGWriter
+from vtkmodules.vtkRenderingCore import (
+    vtkActor,
+    vtkPolyDataMapper,
+    vtkRenderer,
+    vtkRenderWindow,
+    vtkWindowToImageFilter,
+)
+import numpy
+
+
+def add_actor(renderer, source, color, specular=0.0):
+    mapper = vtkPolyDataMapper()
+    mapper.SetInputConnection(source.GetOutputPort())
+    actor = vtkActor()
+    actor.SetMapper(mapper)
+    actor.GetProperty().SetColor(*color)
+    actor.GetProperty().SetSpecular(specular)
+    actor.GetProperty().SetSpecularPower(20)
+    renderer.AddActor(actor)
+
+
+def grab(window):
+    image = vtkWindowToImageFilter()
+    image.SetInput(window)
+    image.ReadFrontBufferOff()
+    image.Update()
+    data = image.GetOutput()
+    w, h, _ = data.GetDimensions()
+    pixels = vtk_to_numpy(data.GetPointData().GetScalars()).reshape(h, w, -1)[:, :, :3]
+    return image, pixels.astype(numpy.int32)
+
+
+def write_png(image_filter, path):
+    writer = vtkPNGWriter()
+    writer.SetInputConnection(image_filter.GetOutputPort())
+    writer.SetFileName(path)
+    writer.Write()
+
+
+def timed_render(window, frames):
+    window.Render()  # shaders, assignment, far field
+    times = []
+    for _ in range(frames):
+        start = time.perf_counter()
+        window.Render()
+        times.append(1000.0 * (time.perf_counter() - start))
+    return sorted(times)[len(times) // 2]
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--lights", type=int, default=2000)
+    parser.add_argument("--prefix", default="user-lights", help="prefix of the PNGs written")
+    parser.add_argument("--frames", type=int, default=3)
+    parser.add_argument("--intensity", type=float, default=0.02)
+    args = parser.parse_args()
+
+    renderer = vtkRenderer()
+    renderer.AutomaticLightCreationOff()
+    floor = vtkPlaneSource()
+    floor.SetOrigin(-4, -1, -4)
+    floor.SetPoint1(4, -1, -4)
+    floor.SetPoint2(-4, -1, 4)
+    floor.SetResolution(64, 64)
+    add_actor(renderer, floor, (0.8, 0.8, 0.8))
+    sphere = vtkSphereSource()
+    sphere.SetRadius(0.6)
+    sphere.SetThetaResolution(64)
+    sphere.SetPhiResolution(48)
+    add_actor(renderer, sphere, (0.9, 0.85, 0.8), specular=0.5)
+
+    points = vtkPointSource()
+    points.SetNumberOfPoints(args.lights)
+    points.SetRadius(3.0)
+    # Every point a white light (no arrays: the set's defaults), as a new user writes it.
+    lights = vtkClusteredLightSet()
+    lights.SetInputConnection(points.GetOutputPort())
+    lights.SetDefaultAttenuation(1.0, 0.0, 8.0)
+    lights.SetDefaultIntensity(args.intensity)
+    pass_ = vtkClusteredLightingPass()
+    pass_.AddLightSet(lights)
+    renderer.SetPass(pass_)
+
+    window = vtkRenderWindow()
+    window.SetOffScreenRendering(True)
+    window.SetSize(400, 300)
+    window.AddRenderer(renderer)
+    camera = renderer.GetActiveCamera()
+    camera.SetPosition(0, 1.5, 6)
+    camera.SetFocalPoint(0, -0.3, 0)
+    renderer.ResetCameraClippingRange()
+
+    results = {}
+    for name, setup in (
+        ("brute", lambda: pass_.SetShadingMode(vtkClusteredLightingPass.SHADING_BRUTE_FORCE)),
+        ("default", lambda: pass_.SetShadingMode(vtkClusteredLightingPass.SHADING_CLUSTERED)),
+        ("farfield-off", lambda: pass_.SetFarField(False)),
+    ):
+        setup()
+        ms = timed_render(window, args.frames)
+        image, pixels = grab(window)
+        write_png(image, "%s-%s.png" % (args.prefix, name))
+        results[name] = (ms, pixels)
+    brute_ms, brute = results["brute"]
+    rmse = {}
+    print("%d lights, %d clustered, attenuation (1, 0, 8), intensity %g"
+          % (args.lights, pass_.GetNumberOfClusteredLights(), args.intensity))
+    print("brute force: %.1f ms" % brute_ms)
+    for name in ("default", "farfield-off"):
+        ms, pixels = results[name]
+        diff = numpy.abs(pixels - brute)
+        rmse[name] = numpy.sqrt((diff.astype(float) ** 2).mean())
+        print("%-12s %8.1f ms (%.1fx faster than brute force)  max err %d steps  RMSE %.2f"
+              % (name, ms, brute_ms / ms, diff.max(), numpy.sqrt((diff.astype(float) ** 2).mean())))
+    if not rmse["default"] < rmse["farfield-off"]:
+        print("the far field did not bring the image closer to brute force")
+        return 1
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())

@@ -11,8 +11,8 @@
  * - color (VTK's DiffuseColor) and intensity: the light's color is color * intensity;
  * - attenuation (a0, a1, a2): contribution 1 / (a0 + a1 d + a2 d^2) at distance d;
  * - optional radius: caps the influence distance (the pass otherwise derives it from
- *   color, intensity, attenuation and its Cutoff);
- * - optional spot: direction, cone half angle in degrees (< 90 makes a spot, as
+ *   color, intensity, attenuation and its ContributionCutoff);
+ * - optional spot: direction, cone half angle in degrees (below 90 makes a spot, as
  *   vtkLight::SetConeAngle) and exponent.
  *
  * New lights get VTK's vtkLight defaults: white, intensity 1, attenuation (1, 0, 0),
@@ -44,15 +44,13 @@
  * a data set with SetInputData(), and every point of the input becomes a light (cells
  * are ignored), with its parameters taken from point-data arrays:
  *
- * | parameter      | array name option      | default name    | components          |
- * |----------------|------------------------|-----------------|---------------------|
- * | color          | ColorArrayName         | "Color"         | 3 (RGB) or 4 (RGBA) |
- * | intensity      | IntensityArrayName     | "Intensity"     | 1                   |
- * | attenuation    | AttenuationArrayName   | "Attenuation"   | 3 (a0, a1, a2)      |
- * | radius         | RadiusArrayName        | "Radius"        | 1                   |
- * | spot direction | SpotDirectionArrayName | "SpotDirection" | 3                   |
- * | cone angle     | ConeAngleArrayName     | "ConeAngle"     | 1 (degrees)         |
- * | exponent       | ExponentArrayName      | "Exponent"      | 1                   |
+ * - color: option ColorArrayName, default name "Color", 3 components (RGB) or 4 (RGBA);
+ * - intensity: IntensityArrayName, "Intensity", 1 component;
+ * - attenuation: AttenuationArrayName, "Attenuation", 3 components (a0, a1, a2);
+ * - radius: RadiusArrayName, "Radius", 1 component;
+ * - spot direction: SpotDirectionArrayName, "SpotDirection", 3 components;
+ * - cone angle: ConeAngleArrayName, "ConeAngle", 1 component (degrees);
+ * - exponent: ExponentArrayName, "Exponent", 1 component.
  *
  * Any numeric array type is accepted; an unsigned char color array is scaled from
  * [0, 255] to [0, 1]. A missing array (or an empty name) gives every light the
@@ -94,7 +92,7 @@ public:
   vtkTypeMacro(vtkClusteredLightSet, vtkAlgorithm)
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  ///@{
+  //@{
   /**
    * Number of lights. Growing the set gives the new lights the default parameters
    * (vtkLight's defaults, at the origin). SetNumberOfLights(), AddLight(),
@@ -104,7 +102,7 @@ public:
    */
   void SetNumberOfLights(vtkIdType n);
   vtkIdType GetNumberOfLights() const;
-  ///@}
+  //@}
 
   /**
    * Append a point light with default parameters at (x, y, z); returns its index.
@@ -116,7 +114,7 @@ public:
    */
   void RemoveAllLights();
 
-  ///@{
+  //@{
   /**
    * Per-light parameters. Indices outside [0, GetNumberOfLights()) are reported with
    * vtkErrorMacro and ignored. GetIntensity() returns the intensity as set, without
@@ -130,9 +128,9 @@ public:
   double GetIntensity(vtkIdType i) const;
   void SetAttenuation(vtkIdType i, double constant, double linear, double quadratic);
   void GetAttenuation(vtkIdType i, double attenuation[3]) const;
-  ///@}
+  //@}
 
-  ///@{
+  //@{
   /**
    * The same getters returning the value (from Python: a tuple, e.g.
    * `lights.GetPosition(3)`). The pointer is to the set's own storage of light i: it
@@ -148,9 +146,9 @@ public:
     VTK_SIZEHINT(3);
   const double* GetSpotDirection(vtkIdType i) const VTK_EXPECTS(0 <= i && i < GetNumberOfLights())
     VTK_SIZEHINT(3);
-  ///@}
+  //@}
 
-  ///@{
+  //@{
   /**
    * Explicit influence radius (world units). It caps the radius derived from the
    * cutoff; UnsetRadius() goes back to the derived radius only. A radius of 0 is valid
@@ -160,9 +158,9 @@ public:
   void UnsetRadius(vtkIdType i);
   bool HasRadius(vtkIdType i) const;
   double GetRadius(vtkIdType i) const;
-  ///@}
+  //@}
 
-  ///@{
+  //@{
   /**
    * Make light i a spot light: axis direction (need not be unit), cone half angle in
    * degrees (>= 90 means no cone, as in VTK) and exponent of the cos falloff.
@@ -173,9 +171,9 @@ public:
   void GetSpotDirection(vtkIdType i, double direction[3]) const;
   double GetConeAngle(vtkIdType i) const;
   double GetExponent(vtkIdType i) const;
-  ///@}
+  //@}
 
-  ///@{
+  //@{
   /**
    * All lights at once, one tuple per light (any numeric vtkDataArray; from Python, any
    * numpy array through vtkmodules.util.numpy_support, or the package's
@@ -207,9 +205,9 @@ public:
   void GetConeAngles(vtkDoubleArray* coneAngles) const;
   bool SetExponents(vtkDataArray* exponents);
   void GetExponents(vtkDoubleArray* exponents) const;
-  ///@}
+  //@}
 
-  ///@{
+  //@{
   /**
    * Exposure: a factor applied to the intensity of every light of the set when the pass
    * reads it (GetScaledIntensity()), whether the lights were set one by one, in bulk or
@@ -218,7 +216,7 @@ public:
    */
   virtual void SetIntensityScale(double scale);
   vtkGetMacro(IntensityScale, double);
-  ///@}
+  //@}
 
   /**
    * The intensity light i is shaded with: GetIntensity(i) * GetIntensityScale().
@@ -236,16 +234,16 @@ public:
    */
   void ReportProblem(const char* message);
 
-  ///@{
+  //@{
   /**
    * Switch the whole set on or off without clearing it. Default is on.
    */
   vtkSetMacro(Enabled, bool);
   vtkGetMacro(Enabled, bool);
   vtkBooleanMacro(Enabled, bool);
-  ///@}
+  //@}
 
-  ///@{
+  //@{
   /**
    * Feed the lights from a data set instead of a pipeline (the connection made is the
    * same as SetInputConnection() with a trivial producer). GetInput() returns the
@@ -253,7 +251,7 @@ public:
    */
   void SetInputData(vtkPolyData* input);
   vtkPolyData* GetInput();
-  ///@}
+  //@}
 
   /**
    * If an input is connected, bring it up to date and, when it (or an array name or
@@ -263,7 +261,7 @@ public:
    */
   void UpdateLights();
 
-  ///@{
+  //@{
   /**
    * Name of the color array. The names of the point-data arrays the lights are read
    * from when an input is connected (see the class description for the number of
@@ -272,58 +270,58 @@ public:
    */
   vtkSetStringMacro(ColorArrayName);
   vtkGetStringMacro(ColorArrayName);
-  ///@}
+  //@}
 
-  ///@{
+  //@{
   /**
    * Name of the intensity array. Default is "Intensity".
    */
   vtkSetStringMacro(IntensityArrayName);
   vtkGetStringMacro(IntensityArrayName);
-  ///@}
+  //@}
 
-  ///@{
+  //@{
   /**
    * Name of the attenuation array (a0, a1, a2). Default is "Attenuation".
    */
   vtkSetStringMacro(AttenuationArrayName);
   vtkGetStringMacro(AttenuationArrayName);
-  ///@}
+  //@}
 
-  ///@{
+  //@{
   /**
    * Name of the explicit influence radius array. Default is "Radius".
    */
   vtkSetStringMacro(RadiusArrayName);
   vtkGetStringMacro(RadiusArrayName);
-  ///@}
+  //@}
 
-  ///@{
+  //@{
   /**
    * Name of the spot direction array (need not be unit). Default is "SpotDirection".
    */
   vtkSetStringMacro(SpotDirectionArrayName);
   vtkGetStringMacro(SpotDirectionArrayName);
-  ///@}
+  //@}
 
-  ///@{
+  //@{
   /**
    * Name of the cone half angle array, in degrees (>= 90: point light).
    * Default is "ConeAngle".
    */
   vtkSetStringMacro(ConeAngleArrayName);
   vtkGetStringMacro(ConeAngleArrayName);
-  ///@}
+  //@}
 
-  ///@{
+  //@{
   /**
    * Name of the spot exponent array. Default is "Exponent".
    */
   vtkSetStringMacro(ExponentArrayName);
   vtkGetStringMacro(ExponentArrayName);
-  ///@}
+  //@}
 
-  ///@{
+  //@{
   /**
    * Color of the lights read from an input without a color array. The Default* values
    * below follow vtkLight's defaults, except that lights are point lights.
@@ -331,18 +329,18 @@ public:
    */
   vtkSetVector3Macro(DefaultColor, double);
   vtkGetVector3Macro(DefaultColor, double);
-  ///@}
+  //@}
 
-  ///@{
+  //@{
   /**
    * Intensity of the lights read from an input without an intensity array.
    * Default is 1.
    */
   vtkSetMacro(DefaultIntensity, double);
   vtkGetMacro(DefaultIntensity, double);
-  ///@}
+  //@}
 
-  ///@{
+  //@{
   /**
    * Attenuation (a0, a1, a2) of the lights read from an input without an attenuation
    * array. The default never falls off: such lights are always on (see the class
@@ -351,9 +349,9 @@ public:
    */
   vtkSetVector3Macro(DefaultAttenuation, double);
   vtkGetVector3Macro(DefaultAttenuation, double);
-  ///@}
+  //@}
 
-  ///@{
+  //@{
   /**
    * Explicit radius of the lights read from an input without a radius array; a negative
    * value means no explicit radius (the pass derives it from the cutoff).
@@ -361,34 +359,34 @@ public:
    */
   vtkSetMacro(DefaultRadius, double);
   vtkGetMacro(DefaultRadius, double);
-  ///@}
+  //@}
 
-  ///@{
+  //@{
   /**
    * Spot direction of the lights read from an input without a spot direction array.
    * Default is (0, 0, -1).
    */
   vtkSetVector3Macro(DefaultSpotDirection, double);
   vtkGetVector3Macro(DefaultSpotDirection, double);
-  ///@}
+  //@}
 
-  ///@{
+  //@{
   /**
    * Cone half angle, in degrees, of the lights read from an input without a cone angle
    * array (>= 90: point light). Default is 180.
    */
   vtkSetMacro(DefaultConeAngle, double);
   vtkGetMacro(DefaultConeAngle, double);
-  ///@}
+  //@}
 
-  ///@{
+  //@{
   /**
    * Spot exponent of the lights read from an input without an exponent array.
    * Default is 1.
    */
   vtkSetMacro(DefaultExponent, double);
   vtkGetMacro(DefaultExponent, double);
-  ///@}
+  //@}
 
   /**
    * Number of times lights were read from the input (for tests and diagnostics).

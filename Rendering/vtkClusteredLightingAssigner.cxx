@@ -12,14 +12,22 @@
 #include "vtkTextureObject.h"
 #include "vtk_glew.h" // for glFinish, GL limits
 
-#include <algorithm> // for std::min
+#include <algorithm> // for std::min, std::all_of
 #include <chrono>    // for timings
+#include <cmath>     // for std::isinf
 #include <sstream>   // for std::ostringstream
 
 using namespace vtkClusteredLighting;
 
 namespace
 {
+/// Fewer lights than this never get the "clustering cannot cull" warning: a handful of
+/// vtkLights that reach everywhere is an ordinary scene, not a mistake.
+constexpr int MinimumLightsForCullingWarning = 64;
+/// Grids of fewer clusters than this cull little by the user's choice (a 1x1x1 grid
+/// culls nothing): no "culls little" warning for them.
+constexpr int MinimumClustersForCullingWarning = 64;
+
 double Milliseconds(
   std::chrono::steady_clock::time_point a, std::chrono::steady_clock::time_point b)
 {
@@ -206,15 +214,18 @@ void vtkClusteredLightingAssigner::GetGLObjectNames(
 
 //------------------------------------------------------------------------------
 const vtkClusteredLightingAssignment& vtkClusteredLightingAssigner::Update(
-  vtkOpenGLRenderWindow* rw, const vtkClusteredLightingAssignerInputs& inputs)
+  vtkOpenGLRenderWindow* rw, const vtkClusteredLightingAssignerInputs& asked)
 {
+  // What this update uses: the asked inputs, with a smaller grid when the asked one cannot
+  // hold the lights and the plain loop when every light reaches every cluster (step 3).
+  vtkClusteredLightingAssignerInputs inputs = asked;
   vtkClusteredLightingAssignment& r = this->Result;
   r.Reasons = 0;
   r.LightsUploaded = false;
   r.Reassigned = false;
   r.NewProblems.clear();
   r.NewError.clear();
-  r.Clustered = inputs.Clustered;
+  r.NewWarnings.clear();
   r.Linear = inputs.View.Grid.Scheme == SlicingScheme::Linear;
 
   // 1. What changed.
@@ -271,8 +282,16 @@ const vtkClusteredLightingAssignment& vtkClusteredLightingAssigner::Update(
   r.NumberOfSpots = static_cast<int>(prepared.NumberOfSpots);
   r.NumberOfExplicitRadius = static_cast<int>(prepared.NumberOfExplicitRadius);
 
-  // 3. Limits. 4. Light records, uploaded only when the lights changed.
+  // 3. Limits (may choose a smaller grid) and the plain loop when clustering cannot cull.
+  r.Bypassed = inputs.Clustered && this->AllReachEveryCluster;
+  inputs.Clustered = inputs.Clustered && !r.Bypassed;
+  r.Clustered = inputs.Clustered;
   r.Enabled = this->CheckLimits(rw, inputs);
+  r.Grid[0] = inputs.View.Grid.TilesX;
+  r.Grid[1] = inputs.View.Grid.TilesY;
+  r.Grid[2] = inputs.View.Grid.Slices;
+
+  // 4. Light records, uploaded only when the lights changed.
   if (r.Enabled && !this->LightDataUploaded)
   {
     this->LightData.Upload(rw, PackLightData(prepared.Lights));
@@ -331,6 +350,10 @@ const vtkClusteredLightingAssignment& vtkClusteredLightingAssigner::Update(
     this->Assign(rw, inputs);
   }
   r.Enabled = r.Enabled && this->AssignmentValid;
+  if (r.Enabled && r.Reassigned)
+  {
+    this->CheckCulling(inputs);
+  }
   r.NumberOfAssigned = r.Enabled ? r.NumberOfAssigned : 0;
   r.MasterTexels = std::max(this->Layout.MasterTexelsPerCluster, 1);
   r.ListBytes = this->Backend->GetListBytes();
@@ -389,6 +412,9 @@ void vtkClusteredLightingAssigner::PrepareLights(const vtkClusteredLightingAssig
   // Near radii and the far field's grid (caps the culling radii of far-field lights).
   this->FarFieldPlan =
     PlanFarField(this->Prepared.Lights, this->RegionLo, this->RegionHi, inputs.FarField);
+  this->AllReachEveryCluster = !this->Prepared.Lights.empty() &&
+    std::all_of(this->Prepared.Lights.begin(), this->Prepared.Lights.end(),
+      &vtkClusteredLightingAssigner::ReachesEveryCluster);
   // Report each problem once: a bad light stays reported while it stays bad, even when
   // other lights change every frame.
   // Many at once are summarized: a few lines per light set (vtkClusteredLightingMessages.h).
@@ -412,7 +438,7 @@ void vtkClusteredLightingAssigner::PrepareLights(const vtkClusteredLightingAssig
 // Whether the lights fit the GL limits (texture buffer size, list and master texture
 // sizes); computes the texture layout. A new error is put in the result.
 bool vtkClusteredLightingAssigner::CheckLimits(
-  vtkOpenGLRenderWindow* rw, const vtkClusteredLightingAssignerInputs& inputs)
+  vtkOpenGLRenderWindow* rw, vtkClusteredLightingAssignerInputs& inputs)
 {
   const int numberOfLights = static_cast<int>(this->Prepared.Lights.size());
   this->Layout = ClusterTextureLayout();
@@ -439,9 +465,44 @@ bool vtkClusteredLightingAssigner::CheckLimits(
   }
   else if (inputs.Clustered)
   {
-    const ClusterGridParams& g = inputs.View.Grid;
+    // Never leave the lights unlit when a smaller grid holds them: use the largest such
+    // grid and say so once (vtkClusteredLightingLayout.h, ChooseGridForLights).
+    ClusterGridParams& g = inputs.View.Grid;
+    const int asked[3] = { g.TilesX, g.TilesY, g.Slices };
+    int x = g.TilesX, y = g.TilesY, z = g.Slices;
+    const bool fits = ChooseGridForLights(x, y, z, numberOfLights, maxTexture);
+    std::string warning;
+    if (fits && (x != asked[0] || y != asked[1] || z != asked[2]))
+    {
+      std::ostringstream os;
+      os << "A " << asked[0] << "x" << asked[1] << "x" << asked[2] << " cluster grid holds at most "
+         << ComputeMaximumNumberOfLights(asked[0], asked[1], asked[2], maxTexture)
+         << " lights with textures of at most " << maxTexture << " texels a side; the "
+         << numberOfLights << " lights are rendered on a " << x << "x" << y << "x" << z
+         << " grid instead (it holds " << ComputeMaximumNumberOfLights(x, y, z, maxTexture)
+         << "). Set TilesX, TilesY and Slices to choose the grid yourself.";
+      warning = os.str();
+    }
+    if (!warning.empty() && warning != this->ReportedGridWarning)
+    {
+      this->Result.NewWarnings.push_back(warning);
+    }
+    this->ReportedGridWarning = warning;
+    // The chosen grid; when none holds the lights, 1x1x1, whose limit the error names.
+    g.TilesX = x;
+    g.TilesY = y;
+    g.Slices = z;
     ok =
       ComputeLayout(g.TilesX, g.TilesY, g.Slices, numberOfLights, maxTexture, this->Layout, &error);
+    if (!ok)
+    {
+      std::ostringstream os;
+      os << "no cluster grid holds " << numberOfLights << " lights with textures of at most "
+         << maxTexture << " texels a side: even a " << x << "x" << y << "x" << z
+         << " grid holds at most " << ComputeMaximumNumberOfLights(x, y, z, maxTexture)
+         << " (fewer lights, or a larger MaximumTextureSize up to GL_MAX_TEXTURE_SIZE, would fit)";
+      error = os.str();
+    }
   }
   if (!ok && error != this->ReportedError)
   {
@@ -449,6 +510,78 @@ bool vtkClusteredLightingAssigner::CheckLimits(
   }
   this->ReportedError = ok ? std::string() : error;
   return ok;
+}
+
+//------------------------------------------------------------------------------
+// A light every cluster holds whatever the view: one that never falls off (no cutoff
+// radius, no explicit radius) and that the far field does not split.
+bool vtkClusteredLightingAssigner::ReachesEveryCluster(const PreparedLight& light)
+{
+  return std::isinf(light.Radius) && !light.FarField;
+}
+
+//------------------------------------------------------------------------------
+// Tells the user once when clustering cannot help: the lights reach (nearly) every
+// cluster, so every fragment evaluates (nearly) every light. Names the cause and the fix.
+void vtkClusteredLightingAssigner::CheckCulling(const vtkClusteredLightingAssignerInputs& inputs)
+{
+  const vtkClusteredLightingAssignment& r = this->Result;
+  const int n = r.NumberOfLights;
+  std::string warning;
+  int kind = 0; // 1: bypassed, 2: culls little
+  const ClusterGridParams& g = inputs.View.Grid;
+  const long long clusters = static_cast<long long>(g.TilesX) * g.TilesY * g.Slices;
+  if (n >= MinimumLightsForCullingWarning &&
+    (r.Bypassed || clusters >= MinimumClustersForCullingWarning))
+  {
+    std::ostringstream os;
+    const bool farFieldOff = !inputs.FarField.Enabled;
+    if (r.Bypassed)
+    {
+      os << "Clustering cannot cull these lights: all " << n
+         << " reach every cluster, because they never fall off (attenuation (1, 0, 0), no "
+            "radius)"
+         << (farFieldOff ? " and the far field is off" : "")
+         << ". They are shaded in a plain loop over all lights (the same image, less work). "
+            "To make clustering pay, "
+         << (farFieldOff ? "turn the far field on (FarFieldOn), or " : "")
+         << "give the lights a falloff (attenuation (0, 0, k)) or an explicit radius.";
+      warning = os.str();
+      kind = 1;
+    }
+    else if (r.MeanLightsPerCluster >= 0.5 * n)
+    {
+      os.precision(3);
+      os << "Clustering culls little here: a cluster holds on average " << r.MeanLightsPerCluster
+         << " of the " << n << " lights, so every pixel evaluates about as many lights as "
+         << "brute force would. ";
+      const auto everywhere = std::count_if(this->Prepared.Lights.begin(),
+        this->Prepared.Lights.end(), &vtkClusteredLightingAssigner::ReachesEveryCluster);
+      if (everywhere >= n / 2)
+      {
+        os << everywhere
+           << " of them never fall off (attenuation (1, 0, 0), no radius): give them a falloff "
+              "or an explicit radius";
+      }
+      else
+      {
+        os << "Their cutoff radii (where each falls to the contribution cutoff "
+           << this->EffectiveCutoff << ") span most of the view: give the lights an explicit "
+           << "radius with FALLOFF_WINDOWED, or raise ContributionCutoff";
+      }
+      os << (farFieldOff ? ", or turn the far field on (FarFieldOn), which evaluates only "
+                           "their near parts one by one."
+                         : ".");
+      warning = os.str();
+      kind = 2;
+    }
+  }
+  // Reported once per episode: the numbers may drift from frame to frame, the kind not.
+  if (kind != 0 && kind != this->ReportedCullingWarning)
+  {
+    this->Result.NewWarnings.push_back(warning);
+  }
+  this->ReportedCullingWarning = kind;
 }
 
 //------------------------------------------------------------------------------
@@ -485,6 +618,9 @@ void vtkClusteredLightingAssigner::Assign(
   const auto t2 = std::chrono::steady_clock::now();
   r.AssignmentTime = inputs.MeasureTimings ? Milliseconds(t1, t2) : Milliseconds(t0, t2);
   r.NumberOfQuads = data.NumberOfQuads;
+  const ClusterGridParams& g = inputs.View.Grid;
+  r.MeanLightsPerCluster = data.ClusterCoverage /
+    (static_cast<double>(g.TilesX) * static_cast<double>(g.TilesY) * static_cast<double>(g.Slices));
   r.NumberOfAssigned = data.NumberOfAssignedLights;
   r.Shading = ComputeShadingParameters(inputs.View, this->Layout);
   if (this->FarFieldPlan.Active)

@@ -11,7 +11,9 @@
  *          1. what changed (explicit reasons, vtkClusteredLightingDirtyReason)
  *          2. prepare lights    (only when LIGHTS or PREPARATION: validate, radii, Morton
  *                                order, error budget; Rendering/Core/...Lights.h)
- *          3. limits            (texture layout for the light count, or an error)
+ *          3. limits            (texture layout for the light count: a smaller grid when
+ *                                the asked one cannot hold the lights, an error when none
+ *                                can; the plain loop when every light reaches every cluster)
  *          4. upload clLightData (only when the prepared lights changed)
  *          5. view              (only when anything changed: clLightView records and the
  *                                (light, slice) tile rectangles, ...Assignment.h)
@@ -123,6 +125,11 @@ struct vtkClusteredLightingAssignment
   int NumberOfExplicitRadius = 0; ///< lights with an explicit radius (their model's range)
   int NumberOfAssigned = 0;       ///< lights with at least one list-pass quad
   int NumberOfQuads = 0;
+  int Grid[3] = { 0, 0, 0 }; ///< cluster grid used (smaller than asked when that cannot hold
+                             ///< the lights)
+  bool Bypassed = false;     ///< clustered shading asked, every light reaches every cluster:
+                             ///< shaded by the plain loop (same image, less work)
+  double MeanLightsPerCluster = 0.0; ///< at the last assignment, before per-cluster culling
   double EffectiveCutoff = 1.0 / 1024.0;
   double AssignmentTime = 0.0;  ///< ms, when Reassigned
   double LightUpdateTime = 0.0; ///< ms: reading, preparing and uploading changed lights,
@@ -144,7 +151,8 @@ struct vtkClusteredLightingAssignment
   // Messages new in this update (each problem is reported once while it persists).
   /// Invalid lights newly found (warnings), grouped by light set and capped per set.
   std::vector<vtkClusteredLighting::ProblemGroup> NewProblems;
-  std::string NewError; ///< a limit that keeps the lights from rendering
+  std::string NewError;                 ///< a limit that keeps the lights from rendering
+  std::vector<std::string> NewWarnings; ///< a smaller grid, clustering that cannot cull
 
   // Shading inputs.
   int MasterTexels = 1; ///< master texels per cluster (a compile-time constant of the GLSL)
@@ -241,7 +249,9 @@ private:
   void OnWindowDeleted();
   void PrepareLights(const vtkClusteredLightingAssignerInputs& inputs);
   void UpdateRegion(const vtkClusteredLightingAssignerInputs& inputs);
-  bool CheckLimits(vtkOpenGLRenderWindow* rw, const vtkClusteredLightingAssignerInputs& inputs);
+  bool CheckLimits(vtkOpenGLRenderWindow* rw, vtkClusteredLightingAssignerInputs& inputs);
+  void CheckCulling(const vtkClusteredLightingAssignerInputs& inputs);
+  static bool ReachesEveryCluster(const vtkClusteredLighting::PreparedLight& light);
   void Assign(vtkOpenGLRenderWindow* rw, const vtkClusteredLightingAssignerInputs& inputs);
 
   vtkWeakPointer<vtkOpenGLRenderWindow> Window;
@@ -256,6 +266,9 @@ private:
   double EffectiveCutoff = 1.0 / 1024.0;
   std::set<std::string> ReportedProblems;
   std::string ReportedError;
+  std::string ReportedGridWarning;
+  int ReportedCullingWarning = 0;    ///< kind of the last culling warning, 0: none
+  bool AllReachEveryCluster = false; ///< of the prepared lights
   bool LightDataUploaded = false;
 
   // View.

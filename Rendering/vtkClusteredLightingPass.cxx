@@ -10,8 +10,10 @@
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkObjectFactory.h"
+#include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLRenderer.h"
+#include "vtkOpenGLState.h"
 #include "vtkProperty.h"
 #include "vtkRenderState.h"
 #include "vtkRenderStepsPass.h"
@@ -22,8 +24,10 @@
 
 #include <algorithm> // for std::find
 #include <chrono>    // for timings
+#include <cmath>     // for std::isnan
 #include <map>       // for std::map
 #include <set>       // for std::set
+#include <sstream>   // for std::ostringstream
 
 using namespace vtkClusteredLighting;
 
@@ -79,6 +83,132 @@ vtkClusteredLightingShaderVariant::Debug ToVariantDebug(int view)
       return Debug::None;
   }
 }
+
+/// Lights evaluated per pixel, decoded from a DEBUG_EVALUATED_COUNT frame.
+struct PixelCounts
+{
+  double Mean = 0.0;
+  int Maximum = 0;
+  vtkIdType Pixels = 0;
+};
+
+/// Reads the renderer's viewport back from the framebuffer the delegate drew into and
+/// decodes the evaluated counts (R + 256 G) of the pixels covered by geometry (depth
+/// below the far plane). Zero counts when the framebuffer cannot be read.
+PixelCounts CountEvaluatedLights(const vtkRenderState* s, vtkOpenGLRenderWindow* rw)
+{
+  PixelCounts counts;
+  int width = 0, height = 0, x0 = 0, y0 = 0;
+  if (vtkOpenGLFramebufferObject* fbo =
+        vtkOpenGLFramebufferObject::SafeDownCast(s->GetFrameBuffer()))
+  {
+    int size[2] = { 0, 0 };
+    fbo->GetLastSize(size);
+    width = size[0];
+    height = size[1];
+  }
+  else
+  {
+    s->GetRenderer()->GetTiledSizeAndOrigin(&width, &height, &x0, &y0);
+  }
+  if (width <= 0 || height <= 0)
+  {
+    return counts;
+  }
+  vtkOpenGLState* state = rw->GetState();
+  unsigned int drawBinding = 0, drawBuffer = 0;
+  state->GetCurrentDrawFramebufferState(drawBinding, drawBuffer);
+  state->PushReadFramebufferBinding();
+  state->vtkglBindFramebuffer(GL_READ_FRAMEBUFFER, drawBinding);
+  state->vtkglReadBuffer(drawBuffer);
+  state->vtkglPixelStorei(GL_PACK_ALIGNMENT, 1);
+  const std::size_t n = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
+  std::vector<unsigned char> rgba(4 * n);
+  std::vector<float> depth(n);
+  glReadPixels(x0, y0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+  glReadPixels(x0, y0, width, height, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
+  const bool ok = glGetError() == GL_NO_ERROR;
+  state->PopReadFramebufferBinding();
+  if (!ok)
+  {
+    return counts;
+  }
+  double sum = 0.0;
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    if (depth[i] < 1.0f)
+    {
+      const int evaluated = rgba[4 * i] + 256 * rgba[4 * i + 1];
+      sum += evaluated;
+      counts.Maximum = std::max(counts.Maximum, evaluated);
+      ++counts.Pixels;
+    }
+  }
+  counts.Mean = counts.Pixels > 0 ? sum / static_cast<double>(counts.Pixels) : 0.0;
+  return counts;
+}
+
+// Names of the enumerated options' values: the suffixes of their SetXTo methods.
+const char* const ShadingModeNames[] = { "Clustered", "BruteForce" };
+const char* const FalloffNames[] = { "HardCut", "Windowed" };
+const char* const SlicingSchemeNames[] = { "Auto", "Exponential", "Linear" };
+const char* const DebugViewNames[] = { "None", "ClusterIndex", "HeatMap", "EvaluatedCount",
+  "ReachedCount", "NonFinite", "Normal" };
+const char* const BoundsMethodNames[] = { "Tangent", "CenterDepthQuad" };
+
+template <std::size_t N>
+const char* NameOf(const char* const (&names)[N], int value)
+{
+  return value >= 0 && value < static_cast<int>(N) ? names[value] : nullptr;
+}
+
+/// "0 (Clustered) or 1 (BruteForce)": the accepted values, for error messages.
+template <std::size_t N>
+std::string Choices(const char* const (&names)[N])
+{
+  std::ostringstream os;
+  for (std::size_t i = 0; i < N; ++i)
+  {
+    os << (i == 0 ? "" : i + 1 == N ? " or " : ", ") << i << " (" << names[i] << ")";
+  }
+  return os.str();
+}
+}
+
+// Setters of the enumerated options: a value that is not one of the option's is rejected
+// with an error naming the accepted ones (VTK's clamping setters would silently turn 7
+// into the last value).
+#define vtkClusteredLightingEnumSetter(option, names, what)                                        \
+  void vtkClusteredLightingPass::Set##option(int value)                                            \
+  {                                                                                                \
+    if (!NameOf(names, value))                                                                     \
+    {                                                                                              \
+      vtkErrorMacro("Set" #option "(" << value << "): not a " what "; use " << Choices(names)      \
+                                      << ". Kept " << NameOf(names, this->option) << ".");         \
+      return;                                                                                      \
+    }                                                                                              \
+    if (this->option != value)                                                                     \
+    {                                                                                              \
+      this->option = value;                                                                        \
+      this->Modified();                                                                            \
+    }                                                                                              \
+  }                                                                                                \
+  const char* vtkClusteredLightingPass::Get##option##AsString()                                    \
+  {                                                                                                \
+    return NameOf(names, this->option);                                                            \
+  }
+
+vtkClusteredLightingEnumSetter(ShadingMode, ShadingModeNames, "shading mode");
+vtkClusteredLightingEnumSetter(Falloff, FalloffNames, "falloff");
+vtkClusteredLightingEnumSetter(SlicingScheme, SlicingSchemeNames, "slicing scheme");
+vtkClusteredLightingEnumSetter(DebugView, DebugViewNames, "debug view");
+vtkClusteredLightingEnumSetter(BoundsMethod, BoundsMethodNames, "bounds method");
+#undef vtkClusteredLightingEnumSetter
+
+//------------------------------------------------------------------------------
+void vtkClusteredLightingPass::SetErrorBudgetInSteps(double steps)
+{
+  this->SetErrorBudget(std::isnan(steps) ? 0.0 : steps / 255.0);
 }
 
 //------------------------------------------------------------------------------
@@ -314,7 +444,7 @@ vtkClusteredLightingAssignerInputs vtkClusteredLightingPass::MakeAssignerInputs(
 {
   vtkClusteredLightingAssignerInputs in;
   in.Lights = &lights;
-  in.Preparation.Cutoff = this->Cutoff;
+  in.Preparation.Cutoff = this->ContributionCutoff;
   in.Preparation.MortonOrder = this->MortonOrder;
   in.ErrorBudget = this->ErrorBudget;
   in.Windowed = this->Falloff == FALLOFF_WINDOWED;
@@ -366,10 +496,20 @@ void vtkClusteredLightingPass::ReportAssignment(const vtkClusteredLightingAssign
       }
     }
   }
+  for (const std::string& warning : r.NewWarnings)
+  {
+    vtkWarningMacro(<< warning);
+  }
   if (!r.NewError.empty())
   {
     vtkErrorMacro(<< r.NewError);
   }
+  for (int a = 0; a < 3; ++a)
+  {
+    this->ClusterGridInUse[a] = r.Enabled && r.Clustered ? r.Grid[a] : 0;
+  }
+  this->ClusteringBypassed = r.Enabled && r.Bypassed;
+  this->MeanLightsPerCluster = r.Enabled ? r.MeanLightsPerCluster : 0.0;
   this->EffectiveCutoff = r.EffectiveCutoff;
   this->NumberOfClusteredLights = r.NumberOfLights;
   this->NumberOfRejectedLights = r.NumberOfRejected;
@@ -427,6 +567,7 @@ void vtkClusteredLightingPass::RenderDelegate(const vtkRenderState* s,
   const vtkClusteredLightingLightCollection& lights, vtkClusteredLightingAssigner* assigner)
 {
   vtkRenderer* ren = s->GetRenderer();
+  vtkOpenGLRenderWindow* rw = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
   vtkLightCollection* rendererLights = ren->GetLights();
   const bool enabled = assigner->GetResult().Enabled;
   if (enabled)
@@ -454,6 +595,26 @@ void vtkClusteredLightingPass::RenderDelegate(const vtkRenderState* s,
     }
     assigner->ActivateShading();
   }
+  // A heat map scaled to the data first counts the lights evaluated per pixel: one render
+  // with the counting variant (the mappers' shader cache keeps both programs compiled).
+  vtkClusteredLightingShaderVariant& variant = this->Internals->Variant;
+  const bool counting = enabled && this->DebugView == DEBUG_EVALUATED_COUNT;
+  const bool countFirst =
+    enabled && this->DebugView == DEBUG_HEAT_MAP && !(this->HeatMapMaximum > 0.0);
+  if (countFirst)
+  {
+    variant.DebugView = vtkClusteredLightingShaderVariant::Debug::EvaluatedCount;
+    this->Internals->ShaderStageTime.Modified();
+    this->PreRender(s);
+    this->DelegatePass->Render(s);
+    this->PostRender(s);
+    this->SetPixelCounts(s, rw);
+    variant.DebugView = vtkClusteredLightingShaderVariant::Debug::HeatMap;
+    this->Internals->ShaderStageTime.Modified();
+  }
+  this->HeatMapScale = this->HeatMapMaximum > 0.0
+    ? this->HeatMapMaximum
+    : std::max(1.0, static_cast<double>(this->MaximumLightsEvaluatedPerPixel));
   const auto s0 = std::chrono::steady_clock::now();
   if (this->MeasureTimings)
   {
@@ -464,6 +625,10 @@ void vtkClusteredLightingPass::RenderDelegate(const vtkRenderState* s,
   this->DelegatePass->Render(s);
   this->NumberOfRenderedProps += this->DelegatePass->GetNumberOfRenderedProps();
   this->PostRender(s);
+  if (counting)
+  {
+    this->SetPixelCounts(s, rw);
+  }
   if (this->MeasureTimings)
   {
     glFinish();
@@ -479,6 +644,15 @@ void vtkClusteredLightingPass::RenderDelegate(const vtkRenderState* s,
       rendererLights->AddItem(l);
     }
   }
+}
+
+//------------------------------------------------------------------------------
+void vtkClusteredLightingPass::SetPixelCounts(const vtkRenderState* s, vtkOpenGLRenderWindow* rw)
+{
+  const PixelCounts counts = CountEvaluatedLights(s, rw);
+  this->MeanLightsEvaluatedPerPixel = counts.Mean;
+  this->MaximumLightsEvaluatedPerPixel = counts.Maximum;
+  this->NumberOfCountedPixels = counts.Pixels;
 }
 
 //------------------------------------------------------------------------------
@@ -622,7 +796,7 @@ bool vtkClusteredLightingPass::SetShaderParameters(
   }
   if (program->IsUniformUsed("clHeatMapMaximum"))
   {
-    program->SetUniformf("clHeatMapMaximum", static_cast<float>(this->HeatMapMaximum));
+    program->SetUniformf("clHeatMapMaximum", static_cast<float>(this->HeatMapScale));
   }
   return true;
 }
@@ -659,33 +833,49 @@ std::vector<vtkClusteredLightingAssigner*> vtkClusteredLightingPass::GetAssigner
 void vtkClusteredLightingPass::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  const vtkIndent next = indent.GetNextIndent();
   os << indent << "DelegatePass: " << this->DelegatePass << "\n";
   os << indent << "NumberOfLightSets: " << this->GetNumberOfLightSets() << "\n";
-  os << indent << "ClusterRendererLights: " << this->ClusterRendererLights << "\n";
+  os << indent << "ClusterRendererLights: " << (this->ClusterRendererLights ? "On" : "Off") << "\n";
+  os << indent << "ShadingMode: " << this->GetShadingModeAsString() << "\n";
+  os << indent << "ContributionCutoff: " << this->ContributionCutoff << "\n";
+  os << indent << "ErrorBudgetInSteps: " << this->GetErrorBudgetInSteps() << "\n";
+  os << indent << "EffectiveCutoff: " << this->EffectiveCutoff << "\n";
+  os << indent << "Falloff: " << this->GetFalloffAsString() << "\n";
+  os << indent << "FarField: " << (this->FarField ? "On" : "Off") << "\n";
+  os << indent << "FarFieldResolution: " << this->FarFieldResolution << "\n";
   os << indent << "Tiles: " << this->TilesX << " x " << this->TilesY << ", Slices: " << this->Slices
      << "\n";
-  os << indent << "SlicingScheme: " << this->SlicingScheme << "\n";
-  os << indent << "Cutoff: " << this->Cutoff << "\n";
-  os << indent << "ErrorBudget: " << this->ErrorBudget << "\n";
-  os << indent << "EffectiveCutoff: " << this->EffectiveCutoff << "\n";
-  os << indent << "Falloff: " << this->Falloff << "\n";
-  os << indent << "ShadingMode: " << this->ShadingMode << "\n";
-  os << indent << "DebugView: " << this->DebugView << "\n";
-  os << indent << "HeatMapMaximum: " << this->HeatMapMaximum << "\n";
-  os << indent << "MortonOrder: " << this->MortonOrder << "\n";
-  os << indent << "BoundsMethod: " << this->BoundsMethod << "\n";
-  os << indent << "PerClusterCulling: " << this->PerClusterCulling << "\n";
-  os << indent << "MaximumTextureSize: " << this->MaximumTextureSize << "\n";
-  os << indent << "MeasureTimings: " << this->MeasureTimings << "\n";
-  os << indent << "FarField: " << this->FarField << "\n";
-  os << indent << "FarFieldResolution: " << this->FarFieldResolution << "\n";
-  os << indent << "FarFieldCellsPerRadius: " << this->FarFieldCellsPerRadius << "\n";
-  os << indent << "FarFieldTolerance: " << this->FarFieldTolerance << "\n";
-  os << indent << "FarFieldGrouping: " << this->FarFieldGrouping << "\n";
-  os << indent << "NearFieldBudget: " << this->NearFieldBudget << "\n";
-  os << indent << "NumberOfClusteredLights: " << this->NumberOfClusteredLights << "\n";
-  os << indent << "NumberOfFarFieldLights: " << this->NumberOfFarFieldLights << "\n";
-  os << indent << "NearRadiusCap: " << this->NearRadiusCap << "\n";
-  os << indent << "FarFieldGridSpacing: " << this->FarFieldGridSpacing << "\n";
-  os << indent << "NumberOfAssignedLights: " << this->NumberOfAssignedLights << "\n";
+  os << indent << "SlicingScheme: " << this->GetSlicingSchemeAsString() << "\n";
+  os << indent << "Advanced:\n";
+  os << next << "FarFieldCellsPerRadius: " << this->FarFieldCellsPerRadius << "\n";
+  os << next << "FarFieldTolerance: " << this->FarFieldTolerance << "\n";
+  os << next << "FarFieldGrouping: " << this->FarFieldGrouping << "\n";
+  os << next << "NearFieldBudget: " << this->NearFieldBudget << "\n";
+  os << next << "MortonOrder: " << (this->MortonOrder ? "On" : "Off") << "\n";
+  os << next << "PerClusterCulling: " << (this->PerClusterCulling ? "On" : "Off") << "\n";
+  os << next << "MaximumTextureSize: " << this->MaximumTextureSize << "\n";
+  os << indent << "Diagnostic:\n";
+  os << next << "DebugView: " << this->GetDebugViewAsString() << "\n";
+  os << next << "HeatMapMaximum: " << this->HeatMapMaximum
+     << (this->HeatMapMaximum > 0.0 ? "" : " (scaled to the data)") << "\n";
+  os << next << "BoundsMethod: " << this->GetBoundsMethodAsString() << "\n";
+  os << next << "MeasureTimings: " << (this->MeasureTimings ? "On" : "Off") << "\n";
+  os << indent << "Last render:\n";
+  os << next << "NumberOfClusteredLights: " << this->NumberOfClusteredLights << "\n";
+  os << next << "NumberOfRejectedLights: " << this->NumberOfRejectedLights << "\n";
+  os << next << "NumberOfAlwaysOnLights: " << this->NumberOfAlwaysOnLights << "\n";
+  os << next << "NumberOfLightsBelowCutoff: " << this->NumberOfLightsBelowCutoff << "\n";
+  os << next << "NumberOfSpotLights: " << this->NumberOfSpotLights << "\n";
+  os << next << "NumberOfAssignedLights: " << this->NumberOfAssignedLights << "\n";
+  os << next << "NumberOfFarFieldLights: " << this->NumberOfFarFieldLights << "\n";
+  os << next << "ClusterGridInUse: " << this->ClusterGridInUse[0] << " x "
+     << this->ClusterGridInUse[1] << " x " << this->ClusterGridInUse[2] << "\n";
+  os << next << "ClusteringBypassed: " << (this->ClusteringBypassed ? "yes" : "no") << "\n";
+  os << next << "MeanLightsPerCluster: " << this->MeanLightsPerCluster << "\n";
+  os << next << "MeanLightsEvaluatedPerPixel: " << this->MeanLightsEvaluatedPerPixel << " (maximum "
+     << this->MaximumLightsEvaluatedPerPixel << ", over " << this->NumberOfCountedPixels
+     << " pixels)\n";
+  os << next << "NearRadiusCap: " << this->NearRadiusCap << "\n";
+  os << next << "FarFieldGridSpacing: " << this->FarFieldGridSpacing << "\n";
 }

@@ -3,63 +3,54 @@
  * @class   vtkClusteredLightingPass
  * @brief   render pass that shades thousands of point and spot lights by clustering
  *
- * Drop-in use: `vtkNew<vtkClusteredLightingPass> pass; renderer->SetPass(pass);`
+ * Drop-in use (C++): create the pass with vtkNew, then call renderer->SetPass(pass).
+ * In Python: pass = vtkClusteredLightingPass(); renderer.SetPass(pass).
  *
  * The pass wraps a delegate (by default a vtkRenderStepsPass whose translucent step
  * behaves like stock VTK: order-independent transparency, or depth peeling when the
  * renderer asks for it), so opaque, translucent and overlay props render as before.
  *
- * Clustered lights come from
- *  1. every switched-on positional vtkLight of the renderer (point lights and spot lights
- *     with a cone angle < 90), when ClusterRendererLights is on (default). While the
- *     delegate renders, these lights are hidden from the renderer so that VTK does not
- *     generate its per-light shader code for them (stock VTK 9.1 needs minutes to compile
- *     hundreds of lights and fails to link at about 1,090); directional lights and the
- *     headlight stay with VTK's own lighting code;
- *  2. vtkClusteredLightSet objects added with AddLightSet(), for tens of thousands of
- *     lights without one vtkObject per light.
+ * Where the lights come from:
+ *
+ * - every switched-on positional vtkLight of the renderer (point lights, and spot lights
+ *   with a cone angle below 90 degrees) while ClusterRendererLights is on (the default).
+ *   VTK does not generate its per-light shader code for them (stock VTK 9.1 needs minutes
+ *   to compile hundreds of lights). Directional lights and the headlight stay with VTK.
+ *
+ * - vtkClusteredLightSet objects added with AddLightSet(): tens of thousands of lights
+ *   without one vtkObject per light, also from a VTK pipeline.
+ *
+ * Which lights are fast, and how accurate: lights with an explicit radius and
+ * FALLOFF_WINDOWED are the fastest. Lights as VTK users write them (inverse-square
+ * attenuation, no radius) are split: the near part of each light is evaluated exactly,
+ * the far part comes from the far field (on by default) with a stated per-pixel error
+ * bound (ComputeFarFieldErrorBound, docs/far-field.md). ShadingMode BRUTE_FORCE
+ * evaluates every light for every fragment: the exact reference.
  *
  * Algorithm (compute-less clustered lighting, after wizgrav/cl2): the view frustum is cut
- * into TilesX x TilesY screen tiles and Slices depth slices (exponential or linear
- * between the camera clipping planes). Each frame in which lights, camera or viewport
- * changed:
- *  - CPU (double precision, GL-free core in Rendering/Core): every light gets an influence
- *    radius (where its contribution falls to Cutoff), exact conservative screen bounds of
- *    its sphere under the actual projection (off-axis and parallel included, no NaN when
- *    the camera is inside or the light straddles the near plane), snapped outward to a
- *    tile and slice range;
- *  - list pass: one instanced draw of one quad per visible light into an R32UI "list"
- *    texture holding, per cluster, a 32-light bitmask per batch of 32 lights; bits are
- *    OR-ed with glLogicOp(GL_OR);
- *  - master pass: one full-screen draw folds the list into an R32UI "master" texture with
- *    one bit per non-empty batch.
- * The polydata fragment shaders then find their cluster, walk the master bits, then the
- * list bits, and shade only those lights, with VTK's own positional-light formulas
- * (attenuation 1/(a0 + a1 d + a2 d^2), spot cone and exponent, diffuse and specular of
- * the actor's vtkProperty, or VTK's PBR terms for PBR actors). Lights are sorted in
- * Morton order so that nearby lights share batches.
+ * into TilesX by TilesY screen tiles and Slices depth slices. When lights, camera or
+ * viewport change, the CPU (GL-free core in Rendering/Core) gives every light an
+ * influence radius and exact screen and depth bounds; a list pass draws one quad per
+ * light into a texture of per-cluster light bitmasks; a master pass folds it into one
+ * bit per non-empty batch of 32 lights. The fragment shaders find their cluster, walk
+ * the master bits, then the list bits, and shade those lights with VTK's own formulas
+ * (attenuation, spot cone, Phong or PBR).
  *
- * Accuracy: the only approximation is the cutoff: a light is ignored where its
- * contribution is below Cutoff (default 1/1024, a quarter of an 8-bit step). Lights that
- * never fall off (VTK's default attenuation (1, 0, 0)) are always-on lights, assigned to
- * every cluster, never dropped. ShadingMode BRUTE_FORCE evaluates every light for every
- * fragment with the same light model (explicit radius, windowed falloff, spot cone) and no
- * culling or cutoff: the reference for images and speed comparisons.
+ * Options come in three groups: the main options (ShadingMode, ContributionCutoff,
+ * ErrorBudgetInSteps, Falloff, FarField, FarFieldResolution, the grid), advanced options
+ * for tuning (their doc starts with "Advanced"), and diagnostic options for debugging and
+ * measurements (their doc starts with "Diagnostic"). PrintSelf prints them in these
+ * groups.
  *
- * VTK's own lights (headlight, light kit, directional and camera lights) are shaded by
- * VTK's code exactly as without the pass: the pass keeps the lighting complexity VTK picks
- * for the renderer's whole light collection (a switched-off positional placeholder light
- * when needed), so the code VTK generates for them does not change.
+ * Limits: with GL_MAX_TEXTURE_SIZE 16384 the default 32 by 16 by 32 grid holds 524,288
+ * lights. With more lights the pass renders them all on the largest smaller grid that
+ * holds them and warns once (GetClusterGridInUse); only when no grid holds them does it
+ * report an error naming the limit. Invalid lights (NaN or Inf, negative values, bad
+ * attenuation) are skipped with a warning naming them; no light is dropped silently.
  *
- * Limits: the list texture is (X*Z*C) x (Y*R) texels for C columns of R batches; with
- * GL_MAX_TEXTURE_SIZE 16384 the default 32x16x32 grid holds 524,288 lights. Past a
- * limit the pass reports an error naming the limit and renders without the clustered
- * lights; it never truncates silently. Invalid lights (NaN/Inf, negative values, bad
- * attenuation) are skipped with a warning naming them.
- *
- * Memory at the default grid (X*Y*Z = 16384 clusters): list = 16384 * ceil(N/32) * 4
- * bytes (8 MiB at 4,096 lights, 128 MiB at 65,536), master = 16384 * ceil(N/1024) * 4
- * bytes, light records 64 bytes per light (+32 per visible light for the list pass).
+ * Memory at the default grid (16384 clusters): the list texture takes 16384 times
+ * ceil(N/32) times 4 bytes (8 MiB at 4,096 lights), the master 16384 times ceil(N/1024)
+ * times 4 bytes, light records 64 bytes per light, the far field 112 bytes per node.
  *
  * @sa vtkClusteredLightSet vtkRenderStepsPass vtkLight
  */
@@ -74,6 +65,7 @@
 
 class vtkClusteredLightSet;
 class vtkClusteredLightingAssigner;
+class vtkOpenGLRenderWindow;
 class vtkRenderer;
 struct vtkClusteredLightingAssignerInputs;
 struct vtkClusteredLightingAssignment;
@@ -97,16 +89,16 @@ public:
    */
   void ReleaseGraphicsResources(vtkWindow* w) override;
 
-  ///@{
+  //@{
   /**
    * The pass that renders the scene. Default is a vtkRenderStepsPass whose translucent
    * step matches stock VTK (OIT, or depth peeling when the renderer uses it).
    */
   vtkGetObjectMacro(DelegatePass, vtkRenderPass);
   virtual void SetDelegatePass(vtkRenderPass* delegatePass);
-  ///@}
+  //@}
 
-  ///@{
+  //@{
   /**
    * Bulk light sets shaded by the pass, in addition to the renderer's positional lights.
    */
@@ -115,9 +107,9 @@ public:
   void RemoveAllLightSets();
   int GetNumberOfLightSets() const;
   vtkClusteredLightSet* GetLightSet(int i) const;
-  ///@}
+  //@}
 
-  ///@{
+  //@{
   /**
    * Take the renderer's switched-on positional vtkLights over as clustered lights.
    * Default is on.
@@ -125,75 +117,97 @@ public:
   vtkSetMacro(ClusterRendererLights, bool);
   vtkGetMacro(ClusterRendererLights, bool);
   vtkBooleanMacro(ClusterRendererLights, bool);
-  ///@}
+  //@}
 
-  ///@{
-  /**
-   * Screen tiles across (X) and down (Y), and depth slices (Z), in [1, 256].
-   * Defaults are 32, 16 and 32.
-   */
-  vtkSetClampMacro(TilesX, int, 1, 256);
-  vtkGetMacro(TilesX, int);
-  vtkSetClampMacro(TilesY, int, 1, 256);
-  vtkGetMacro(TilesY, int);
-  vtkSetClampMacro(Slices, int, 1, 256);
-  vtkGetMacro(Slices, int);
-  ///@}
-
-  enum SlicingSchemes
+  enum ShadingModes
   {
-    SLICING_AUTO = 0,        ///< exponential for perspective, linear for parallel cameras
-    SLICING_EXPONENTIAL = 1, ///< slice k starts at near * (far/near)^(k/Z)
-    SLICING_LINEAR = 2       ///< equal slices between near and far
+    SHADING_CLUSTERED = 0,  ///< walk the fragment's cluster lists
+    SHADING_BRUTE_FORCE = 1 ///< the same light model, every light for every fragment (reference)
   };
-  ///@{
+  //@{
   /**
-   * How depth between the camera clipping planes is cut into slices.
-   * Default is SLICING_AUTO.
+   * Clustered shading, or brute force (every light for every fragment, exactly) for
+   * reference images and speed comparisons. A value that is not a shading mode is
+   * rejected with an error and the mode is kept. When every light reaches every cluster
+   * (lights that never fall off and are not split by the far field), clustered shading
+   * takes the brute-force loop by itself, which gives the same image faster
+   * (GetClusteringBypassed). Default is SHADING_CLUSTERED.
    */
-  vtkSetClampMacro(SlicingScheme, int, SLICING_AUTO, SLICING_LINEAR);
-  vtkGetMacro(SlicingScheme, int);
-  ///@}
+  virtual void SetShadingMode(int mode);
+  vtkGetMacro(ShadingMode, int);
+  void SetShadingModeToClustered() { this->SetShadingMode(SHADING_CLUSTERED); }
+  void SetShadingModeToBruteForce() { this->SetShadingMode(SHADING_BRUTE_FORCE); }
+  const char* GetShadingModeAsString();
+  //@}
 
-  ///@{
+  //@{
   /**
-   * Contribution (per light, per channel, for a white material) below which a light is
-   * ignored; it sets each light's influence radius. Range [1e-9, 1].
-   * Default is 1/1024 (a quarter of an 8-bit step).
+   * Contribution below which a light is ignored in the near field, as a fraction of full
+   * brightness (per channel, white material; 1/255 is one 8-bit step). It sets each
+   * light's cutoff radius; with the far field on, what lies past that radius is added
+   * back by the far field. Not an angle (see vtkLight::SetConeAngle for spot cones).
+   * Range [1e-9, 1]. Default is 1/1024 (a quarter of an 8-bit step).
    */
-  vtkSetClampMacro(Cutoff, double, 1e-9, 1.0);
-  vtkGetMacro(Cutoff, double);
-  ///@}
+  vtkSetClampMacro(ContributionCutoff, double, 1e-9, 1.0);
+  vtkGetMacro(ContributionCutoff, double);
+  //@}
 
-  ///@{
+  //@{
   /**
-   * Error budget: the largest acceptable image error (in [0, 1], for a white material with
-   * Diffuse + Specular <= 1). When > 0 the pass ignores Cutoff and, whenever the lights
-   * change, picks the largest cutoff whose summed cut tails stay within the budget at
-   * sample points spread over the lights' bounding box and at the lights themselves (a
-   * conservative bound: N.L is taken as 1). GetEffectiveCutoff() reports the choice.
-   * Default is 0 (use Cutoff).
+   * Former name of ContributionCutoff, kept working: the same value, the same units.
+   */
+  void SetCutoff(double cutoff) { this->SetContributionCutoff(cutoff); }
+  double GetCutoff() { return this->GetContributionCutoff(); }
+  //@}
+
+  //@{
+  /**
+   * Largest acceptable image error in 8-bit steps (1 step = 1/255 of full brightness,
+   * white material with Diffuse + Specular at most 1). When above 0, the pass ignores
+   * ContributionCutoff and, whenever the lights change, picks the largest cutoff whose
+   * summed cut tails stay within the budget at sample points spread over the lights'
+   * bounding box and at the lights themselves (a conservative bound: N.L is taken as 1).
+   * GetEffectiveCutoff() reports the choice. Range [0, 255]. Default is 0 (use
+   * ContributionCutoff).
+   */
+  void SetErrorBudgetInSteps(double steps);
+  double GetErrorBudgetInSteps() { return 255.0 * this->ErrorBudget; }
+  //@}
+
+  //@{
+  /**
+   * The error budget as a fraction of full brightness (ErrorBudgetInSteps / 255), the
+   * option's former form, kept working. Range [0, 1]. Default is 0.
    */
   vtkSetClampMacro(ErrorBudget, double, 0.0, 1.0);
   vtkGetMacro(ErrorBudget, double);
+  //@}
+
+  /**
+   * The contribution cutoff the last light update used (ContributionCutoff, or the one
+   * the error budget chose), as a fraction of full brightness.
+   */
   vtkGetMacro(EffectiveCutoff, double);
-  ///@}
 
   enum Falloffs
   {
     FALLOFF_HARD_CUT = 0, ///< VTK's attenuation, zero beyond the radius
     FALLOFF_WINDOWED = 1  ///< VTK's attenuation times (1 - (d/r)^4)^2 (smooth, darker)
   };
-  ///@{
+  //@{
   /**
-   * Falloff at the influence radius. Default is FALLOFF_HARD_CUT, which matches VTK
-   * within the cutoff.
+   * Falloff at the influence radius: FALLOFF_HARD_CUT matches VTK within the cutoff;
+   * FALLOFF_WINDOWED, with an explicit radius per light, is the fastest setup. A value
+   * that is not a falloff is rejected with an error. Default is FALLOFF_HARD_CUT.
    */
-  vtkSetClampMacro(Falloff, int, FALLOFF_HARD_CUT, FALLOFF_WINDOWED);
+  virtual void SetFalloff(int falloff);
   vtkGetMacro(Falloff, int);
-  ///@}
+  void SetFalloffToHardCut() { this->SetFalloff(FALLOFF_HARD_CUT); }
+  void SetFalloffToWindowed() { this->SetFalloff(FALLOFF_WINDOWED); }
+  const char* GetFalloffAsString();
+  //@}
 
-  ///@{
+  //@{
   /**
    * Far field: what each light's near radius cuts off is added back, not dropped. Every
    * light without an explicit radius (VTK's inverse-square lights, always-on lights with
@@ -203,36 +217,71 @@ public:
    * and added to every fragment by trilinear interpolation, diffuse and Phong specular.
    * Rebuilt only when the lights change (or the geometry leaves the grid's box), never
    * for a moving camera. The error has a stated per-pixel bound (docs/far-field.md).
-   * Off: such lights are cut at their cutoff radius (darker than VTK, see Cutoff).
+   * Off: such lights are cut at their cutoff radius (darker than VTK).
    * Default is on.
    */
   vtkSetMacro(FarField, bool);
   vtkGetMacro(FarField, bool);
   vtkBooleanMacro(FarField, bool);
-  ///@}
+  //@}
 
-  ///@{
+  //@{
   /**
    * Resolution of the far field: the number of grid nodes over the bounding box of the
-   * visible geometry (112 bytes of GPU memory each: 7 RGBA32F texels). The grid spacing h follows,
-   * and the near radius of bright and always-on lights is FarFieldCellsPerRadius * h: more nodes
-   * mean smaller near radii, fewer lights evaluated per fragment, longer far-field builds.
-   * Range [512, 16777216]. Default is 32768.
+   * visible geometry (112 bytes of GPU memory each: 7 RGBA32F texels). The grid spacing h
+   * follows, and the near radius of bright and always-on lights is FarFieldCellsPerRadius
+   * times h: more nodes mean smaller near radii, fewer lights evaluated per fragment,
+   * longer far-field builds. Range [512, 16777216]. Default is 32768.
    */
   vtkSetClampMacro(FarFieldResolution, int, 512, 16777216);
   vtkGetMacro(FarFieldResolution, int);
-  ///@}
+  //@}
 
-  ///@{
+  //@{
+  /**
+   * Screen tiles across (X) and down (Y), and depth slices (Z), in [1, 256]. When the grid
+   * cannot hold the lights, the pass uses a smaller one (GetClusterGridInUse).
+   * Defaults are 32, 16 and 32.
+   */
+  vtkSetClampMacro(TilesX, int, 1, 256);
+  vtkGetMacro(TilesX, int);
+  vtkSetClampMacro(TilesY, int, 1, 256);
+  vtkGetMacro(TilesY, int);
+  vtkSetClampMacro(Slices, int, 1, 256);
+  vtkGetMacro(Slices, int);
+  //@}
+
+  enum SlicingSchemes
+  {
+    SLICING_AUTO = 0,        ///< exponential for perspective, linear for parallel cameras
+    SLICING_EXPONENTIAL = 1, ///< slice k starts at near * (far/near)^(k/Z)
+    SLICING_LINEAR = 2       ///< equal slices between near and far
+  };
+  //@{
+  /**
+   * How depth between the camera clipping planes is cut into slices. A value that is
+   * not a scheme is rejected with an error. Default is SLICING_AUTO.
+   */
+  virtual void SetSlicingScheme(int scheme);
+  vtkGetMacro(SlicingScheme, int);
+  void SetSlicingSchemeToAuto() { this->SetSlicingScheme(SLICING_AUTO); }
+  void SetSlicingSchemeToExponential() { this->SetSlicingScheme(SLICING_EXPONENTIAL); }
+  void SetSlicingSchemeToLinear() { this->SetSlicingScheme(SLICING_LINEAR); }
+  const char* GetSlicingSchemeAsString();
+  //@}
+
+  // Advanced options: tuning knobs, with defaults that were measured (docs/benchmark).
+
+  //@{
   /**
    * Advanced: grid cells per near radius (the far field's accuracy: its error was found
    * flat from 2 cells per near radius on, docs/far-field.md). Range [1, 8]. Default is 2.
    */
   vtkSetClampMacro(FarFieldCellsPerRadius, double, 1.0, 8.0);
   vtkGetMacro(FarFieldCellsPerRadius, double);
-  ///@}
+  //@}
 
-  ///@{
+  //@{
   /**
    * Advanced: how uncertain (in [0, 1] colour units) the far field may leave a fragment
    * near saturation. The node moments prove an interval the far light's true contribution
@@ -244,9 +293,9 @@ public:
    */
   vtkSetClampMacro(FarFieldTolerance, double, 0.0, 1.0);
   vtkGetMacro(FarFieldTolerance, double);
-  ///@}
+  //@}
 
-  ///@{
+  //@{
   /**
    * Advanced: how the far field's build groups lights (Barnes-Hut). A group of lights
    * seen from far enough is summed as one light at its centroid when its extent is below
@@ -256,9 +305,9 @@ public:
    */
   vtkSetClampMacro(FarFieldGrouping, double, 0.0, 1.0);
   vtkGetMacro(FarFieldGrouping, double);
-  ///@}
+  //@}
 
-  ///@{
+  //@{
   /**
    * Advanced: how many lights per point, on average over the box of the visible geometry,
    * the near field may evaluate exactly (a light counts at most once per point). When all
@@ -270,127 +319,166 @@ public:
    */
   vtkSetClampMacro(NearFieldBudget, double, 0.0, 1e6);
   vtkGetMacro(NearFieldBudget, double);
-  ///@}
+  //@}
 
-  enum ShadingModes
-  {
-    SHADING_CLUSTERED = 0,  ///< walk the fragment's cluster lists
-    SHADING_BRUTE_FORCE = 1 ///< the same light model, every light for every fragment (reference)
-  };
-  ///@{
+  //@{
   /**
-   * Clustered shading, or brute force for reference images and speed comparisons.
-   * Default is SHADING_CLUSTERED.
+   * Advanced: sort lights in Morton order before upload so that nearby lights share
+   * batches (35% faster on the benchmark). Default is on.
    */
-  vtkSetClampMacro(ShadingMode, int, SHADING_CLUSTERED, SHADING_BRUTE_FORCE);
-  vtkGetMacro(ShadingMode, int);
-  ///@}
+  vtkSetMacro(MortonOrder, bool);
+  vtkGetMacro(MortonOrder, bool);
+  vtkBooleanMacro(MortonOrder, bool);
+  //@}
+
+  //@{
+  /**
+   * Advanced: in the list pass, test each light's sphere against the view-space bounding
+   * box of every cluster of its screen rectangle and slice range (with a margin far above
+   * float error), instead of assigning the whole range. Removes the corners of the range,
+   * so fewer lights are evaluated per fragment; stays conservative. Default is on.
+   */
+  vtkSetMacro(PerClusterCulling, bool);
+  vtkGetMacro(PerClusterCulling, bool);
+  vtkBooleanMacro(PerClusterCulling, bool);
+  //@}
+
+  //@{
+  /**
+   * Advanced: largest texture side, in texels, the pass allocates for its list and master
+   * textures; 0 means the context's GL_MAX_TEXTURE_SIZE. A smaller value bounds GPU memory
+   * (the list texture is at most MaximumTextureSize squared times 4 bytes) and lowers the
+   * light limit of each grid (see GetMaximumNumberOfLights). Default is 0.
+   */
+  vtkSetClampMacro(MaximumTextureSize, int, 0, VTK_INT_MAX);
+  vtkGetMacro(MaximumTextureSize, int);
+  //@}
+
+  // Diagnostic options: for debugging and measurements, not for production images.
 
   enum DebugViews
   {
     DEBUG_NONE = 0,
     DEBUG_CLUSTER_INDEX = 1,   ///< (tile x, tile y, slice) / (X-1, Y-1, Z-1) as RGB
-    DEBUG_HEAT_MAP = 2,        ///< lights evaluated per pixel, colour map up to HeatMapMaximum
+    DEBUG_HEAT_MAP = 2,        ///< lights evaluated per pixel, colour map up to GetHeatMapScale
     DEBUG_EVALUATED_COUNT = 3, ///< lights evaluated (R + 256 G), lights reaching (B, saturates)
     DEBUG_REACHED_COUNT = 4,   ///< lights that reach the fragment (R + 256 G)
     DEBUG_NON_FINITE = 5,      ///< red where the lit colour is NaN or Inf
     DEBUG_NORMAL = 6           ///< the shading normal (view coordinates) as 0.5 + 0.5 N
   };
-  ///@{
+  //@{
   /**
-   * Debug view replacing the shaded colour of lit surfaces (compiled in only when set).
-   * Default is DEBUG_NONE.
+   * Diagnostic: a debug view replacing the shaded colour of lit surfaces (compiled in only
+   * when set). Frames rendered with DEBUG_EVALUATED_COUNT or DEBUG_HEAT_MAP count the
+   * lights evaluated per pixel (GetMeanLightsEvaluatedPerPixel). A value that is not a
+   * debug view is rejected with an error. Default is DEBUG_NONE.
    */
-  vtkSetClampMacro(DebugView, int, DEBUG_NONE, DEBUG_NORMAL);
+  virtual void SetDebugView(int view);
   vtkGetMacro(DebugView, int);
-  ///@}
+  void SetDebugViewToNone() { this->SetDebugView(DEBUG_NONE); }
+  void SetDebugViewToClusterIndex() { this->SetDebugView(DEBUG_CLUSTER_INDEX); }
+  void SetDebugViewToHeatMap() { this->SetDebugView(DEBUG_HEAT_MAP); }
+  void SetDebugViewToEvaluatedCount() { this->SetDebugView(DEBUG_EVALUATED_COUNT); }
+  void SetDebugViewToReachedCount() { this->SetDebugView(DEBUG_REACHED_COUNT); }
+  void SetDebugViewToNonFinite() { this->SetDebugView(DEBUG_NON_FINITE); }
+  void SetDebugViewToNormal() { this->SetDebugView(DEBUG_NORMAL); }
+  const char* GetDebugViewAsString();
+  //@}
 
-  ///@{
+  //@{
   /**
-   * Lights per pixel shown as the hottest colour of DEBUG_HEAT_MAP. Default is 64.
+   * Diagnostic: lights per pixel shown as the hottest colour of DEBUG_HEAT_MAP. 0 scales
+   * the heat map to the data: each heat-map frame first counts the lights evaluated per
+   * pixel (one extra render in this debug view) and its maximum becomes the hottest
+   * colour. GetHeatMapScale() reports the scale used. Range [0, 1e6]. Default is 0.
    */
-  vtkSetClampMacro(HeatMapMaximum, double, 1.0, 1e6);
+  vtkSetClampMacro(HeatMapMaximum, double, 0.0, 1e6);
   vtkGetMacro(HeatMapMaximum, double);
-  ///@}
-
-  ///@{
-  /**
-   * Sort lights in Morton order before upload so that nearby lights share batches.
-   * Default is on.
-   */
-  vtkSetMacro(MortonOrder, bool);
-  vtkGetMacro(MortonOrder, bool);
-  vtkBooleanMacro(MortonOrder, bool);
-  ///@}
+  //@}
 
   enum BoundsMethods
   {
     BOUNDS_TANGENT = 0,          ///< exact tangent bounds, conservative
     BOUNDS_CENTER_DEPTH_QUAD = 1 ///< NOT conservative; only to measure what it gets wrong
   };
-  ///@{
+  //@{
   /**
-   * How light spheres are bounded on screen. Default is BOUNDS_TANGENT.
+   * Diagnostic: how light spheres are bounded on screen. BOUNDS_CENTER_DEPTH_QUAD misses
+   * lights and exists only to measure what it gets wrong. A value that is not a method is
+   * rejected with an error. Default is BOUNDS_TANGENT.
    */
-  vtkSetClampMacro(BoundsMethod, int, BOUNDS_TANGENT, BOUNDS_CENTER_DEPTH_QUAD);
+  virtual void SetBoundsMethod(int method);
   vtkGetMacro(BoundsMethod, int);
-  ///@}
+  void SetBoundsMethodToTangent() { this->SetBoundsMethod(BOUNDS_TANGENT); }
+  void SetBoundsMethodToCenterDepthQuad() { this->SetBoundsMethod(BOUNDS_CENTER_DEPTH_QUAD); }
+  const char* GetBoundsMethodAsString();
+  //@}
 
-  ///@{
+  //@{
   /**
-   * In the list pass, test each light's sphere against the view-space bounding box of
-   * every cluster of its screen rectangle and slice range (with a margin far above float
-   * error), instead of assigning the whole range. Removes the corners of the range, so
-   * fewer lights are evaluated per fragment; stays conservative. Default is on.
-   */
-  vtkSetMacro(PerClusterCulling, bool);
-  vtkGetMacro(PerClusterCulling, bool);
-  vtkBooleanMacro(PerClusterCulling, bool);
-  ///@}
-
-  ///@{
-  /**
-   * Largest texture side, in texels, the pass allocates for its list and master
-   * textures; 0 means the context's GL_MAX_TEXTURE_SIZE. A smaller value bounds GPU memory
-   * (the list texture is at most MaximumTextureSize^2 * 4 bytes) and lowers the light
-   * limit accordingly (see GetMaximumNumberOfLights). Default is 0.
-   */
-  vtkSetClampMacro(MaximumTextureSize, int, 0, VTK_INT_MAX);
-  vtkGetMacro(MaximumTextureSize, int);
-  ///@}
-
-  ///@{
-  /**
-   * Finish the GL work around the assignment and shading stages and record their times
-   * (GetLastAssignmentTime, GetLastShadingTime). Costs a pipeline stall; for
+   * Diagnostic: finish the GL work around the assignment and shading stages and record
+   * their times (GetLastAssignmentTime, GetLastShadingTime). Costs a pipeline stall; for
    * benchmarks. Default is off.
    */
   vtkSetMacro(MeasureTimings, bool);
   vtkGetMacro(MeasureTimings, bool);
   vtkBooleanMacro(MeasureTimings, bool);
-  ///@}
+  //@}
 
-  ///@{
-  /**
-   * Statistics of the last render.
-   */
-  vtkGetMacro(NumberOfClusteredLights, int);   ///< valid lights shaded by the pass
-  vtkGetMacro(NumberOfRejectedLights, int);    ///< invalid lights skipped with a warning
-  vtkGetMacro(NumberOfAlwaysOnLights, int);    ///< lights that never fall off
-  vtkGetMacro(NumberOfLightsBelowCutoff, int); ///< below the cutoff everywhere
+  // Statistics of the last render (one getter each).
+
+  /// Number of valid lights shaded by the pass in the last render.
+  vtkGetMacro(NumberOfClusteredLights, int);
+  /// Number of invalid lights skipped with a warning in the last render.
+  vtkGetMacro(NumberOfRejectedLights, int);
+  /// Number of lights that never fall off (attenuation (1, 0, 0)): they reach everywhere.
+  vtkGetMacro(NumberOfAlwaysOnLights, int);
+  /// Number of lights below the contribution cutoff everywhere.
+  vtkGetMacro(NumberOfLightsBelowCutoff, int);
+  /// Number of spot lights among the valid lights.
   vtkGetMacro(NumberOfSpotLights, int);
-  vtkGetMacro(NumberOfAssignedLights, int);    ///< lights drawn in the list pass (visible)
-  vtkGetMacro(LastAssignmentTime, double);     ///< ms, view records + list + master passes
-  vtkGetMacro(LastLightUpdateTime, double);    ///< ms, reading, preparing and uploading lights
-  vtkGetMacro(LastShadingTime, double);        ///< ms, delegate render (MeasureTimings)
-  vtkGetMacro(NumberOfFarFieldLights, int);    ///< lights split into near and far parts
-  vtkGetMacro(LastFarFieldBuildTime, double);  ///< ms, the last far-field build
-  vtkGetMacro(FarFieldGridSpacing, double);    ///< world units, 0 without a far field
-  vtkGetMacro(NearRadiusCap, double);          ///< near radius of bright and always-on lights
-  vtkGetVector3Macro(FarFieldDimensions, int); ///< nodes per axis
+  /// Number of lights drawn in the list pass (those that touch the view).
+  vtkGetMacro(NumberOfAssignedLights, int);
+  /// Cluster grid of the last render (tiles X, tiles Y, slices): the options' grid, or a
+  /// smaller one when that grid cannot hold the lights (a warning says so once).
+  vtkGetVector3Macro(ClusterGridInUse, int);
+  /// Whether the last render shaded the lights in a plain loop, because every light
+  /// reaches every cluster (same image as clustered shading, less work).
+  vtkGetMacro(ClusteringBypassed, bool);
+  /// Lights assigned to a cluster, on average over the grid's clusters, at the last
+  /// assignment (before per-cluster culling); near GetNumberOfClusteredLights means that
+  /// clustering culls little (a warning names the cause and the fix once).
+  vtkGetMacro(MeanLightsPerCluster, double);
+  /// Lights evaluated per pixel of lit geometry, on average, in the last frame that
+  /// counted them (DEBUG_EVALUATED_COUNT or DEBUG_HEAT_MAP); 0 before any.
+  vtkGetMacro(MeanLightsEvaluatedPerPixel, double);
+  /// Most lights evaluated at one pixel in the last frame that counted them.
+  vtkGetMacro(MaximumLightsEvaluatedPerPixel, int);
+  /// Pixels covered by geometry (depth below the far plane) in the last frame that
+  /// counted them.
+  vtkGetMacro(NumberOfCountedPixels, vtkIdType);
+  /// Lights per pixel shown as the hottest colour of the last heat map.
+  vtkGetMacro(HeatMapScale, double);
+  /// Time in ms of the last assignment: view records, list and master passes.
+  vtkGetMacro(LastAssignmentTime, double);
+  /// Time in ms of the last light update: reading, preparing and uploading lights.
+  vtkGetMacro(LastLightUpdateTime, double);
+  /// Time in ms of the last delegate render (exact with MeasureTimings).
+  vtkGetMacro(LastShadingTime, double);
+  /// Number of lights split into near and far parts in the last render.
+  vtkGetMacro(NumberOfFarFieldLights, int);
+  /// Time in ms of the last far-field build.
+  vtkGetMacro(LastFarFieldBuildTime, double);
+  /// Spacing of the far field's grid in world units, 0 without a far field.
+  vtkGetMacro(FarFieldGridSpacing, double);
+  /// Near radius of bright and always-on lights when the far field splits them.
+  vtkGetMacro(NearRadiusCap, double);
+  /// Far-field grid nodes per axis.
+  vtkGetVector3Macro(FarFieldDimensions, int);
+  /// GPU memory of the far field in bytes.
   vtkGetMacro(FarFieldTextureBytes, vtkTypeUInt64);
-  vtkGetMacro(LastAssignmentUpdated, bool); ///< whether the last render reassigned lights
-  ///@}
+  /// Whether the last render reassigned lights to clusters.
+  vtkGetMacro(LastAssignmentUpdated, bool);
 
   /**
    * The far field's stated error bound (docs/far-field.md) for the last frame's lights, in
@@ -403,7 +491,7 @@ public:
    */
   double ComputeFarFieldErrorBound();
 
-  ///@{
+  //@{
   /**
    * Counters since construction: light-data uploads, list/master runs, shader rebuilds
    * of mappers that use the pass.
@@ -411,16 +499,16 @@ public:
   vtkGetMacro(NumberOfLightUploads, int);
   vtkGetMacro(NumberOfAssignmentUpdates, int);
   vtkGetMacro(NumberOfShaderBuilds, int);
-  ///@}
+  //@}
 
-  ///@{
+  //@{
   /**
    * GPU memory held for the last rendered renderer, in bytes.
    */
   vtkGetMacro(ListTextureBytes, vtkTypeUInt64);
   vtkGetMacro(MasterTextureBytes, vtkTypeUInt64);
   vtkGetMacro(LightBufferBytes, vtkTypeUInt64);
-  ///@}
+  //@}
 
   /**
    * Number of GL objects the pass holds across all renderers (textures, buffers, FBO,
@@ -434,7 +522,7 @@ public:
   static vtkTypeInt64 GetMaximumNumberOfLights(
     int tilesX, int tilesY, int slices, int maxTextureSize);
 
-  ///@{
+  //@{
   /**
    * vtkOpenGLRenderPass hooks: inject the clustered shading code, set its uniforms.
    */
@@ -445,7 +533,7 @@ public:
   bool SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop,
     vtkOpenGLVertexArrayObject* VAO = nullptr) override;
   vtkMTimeType GetShaderStageMTime() override;
-  ///@}
+  //@}
 
 protected:
   vtkClusteredLightingPass();
@@ -458,13 +546,13 @@ protected:
   int TilesY = 16;
   int Slices = 32;
   int SlicingScheme = SLICING_AUTO;
-  double Cutoff = 1.0 / 1024.0;
-  double ErrorBudget = 0.0;
+  double ContributionCutoff = 1.0 / 1024.0;
+  double ErrorBudget = 0.0; ///< fraction of full brightness (ErrorBudgetInSteps / 255)
   double EffectiveCutoff = 1.0 / 1024.0;
   int Falloff = FALLOFF_HARD_CUT;
   int ShadingMode = SHADING_CLUSTERED;
   int DebugView = DEBUG_NONE;
-  double HeatMapMaximum = 64.0;
+  double HeatMapMaximum = 0.0;
   bool MortonOrder = true;
   int BoundsMethod = BOUNDS_TANGENT;
   bool PerClusterCulling = true;
@@ -483,6 +571,13 @@ protected:
   int NumberOfLightsBelowCutoff = 0;
   int NumberOfSpotLights = 0;
   int NumberOfAssignedLights = 0;
+  int ClusterGridInUse[3] = { 0, 0, 0 };
+  bool ClusteringBypassed = false;
+  double MeanLightsPerCluster = 0.0;
+  double MeanLightsEvaluatedPerPixel = 0.0;
+  int MaximumLightsEvaluatedPerPixel = 0;
+  vtkIdType NumberOfCountedPixels = 0;
+  double HeatMapScale = 0.0;
   double LastAssignmentTime = 0.0;
   double LastLightUpdateTime = 0.0;
   int NumberOfFarFieldLights = 0;
@@ -515,6 +610,7 @@ private:
   void UpdateShaderVariant(const vtkClusteredLightingAssignment& result);
   void RenderDelegate(const vtkRenderState* s, const vtkClusteredLightingLightCollection& lights,
     vtkClusteredLightingAssigner* assigner);
+  void SetPixelCounts(const vtkRenderState* s, vtkOpenGLRenderWindow* rw);
 
   // Test hook (Testing/Cxx/vtkClusteredLightingInspector.h): the assigners of the renderers.
   friend class vtkClusteredLightingInspector;

@@ -71,6 +71,9 @@ struct ViewData
   int NumberOfQuads = 0;
   int NumberOfAssignedLights = 0; ///< lights with at least one quad
   int NumberOfCulled = 0;         ///< lights with a radius that miss the view frustum
+  /// (light, cluster) pairs of the tile rectangles before per-cluster culling: divided by
+  /// the number of clusters, the lights an average cluster holds.
+  double ClusterCoverage = 0.0;
 };
 
 /// clLightData: (color * intensity, exponent), (a0, a1, a2, cos(cone) or -2). The exponent
@@ -147,6 +150,8 @@ inline ViewData ComputeViewData(const std::vector<PreparedLight>& lights, const 
         static_cast<float>(r.TileMax[1]), static_cast<float>(r.Slice), static_cast<float>(i), 0.0f,
         0.0f };
       out.Quads.insert(out.Quads.end(), q, q + FloatsPerQuad);
+      out.ClusterCoverage += static_cast<double>(r.TileMax[0] - r.TileMin[0] + 1) *
+        static_cast<double>(r.TileMax[1] - r.TileMin[1] + 1);
     }
     out.NumberOfQuads += static_cast<int>(ranges.size());
     ++out.NumberOfAssignedLights;

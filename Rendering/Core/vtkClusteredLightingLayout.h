@@ -180,6 +180,47 @@ inline bool ComputeLayout(int tilesX, int tilesY, int slices, int n, int maxText
   return true;
 }
 
+/**
+ * The grid to use for n lights when tilesX x tilesY x slices cannot hold them: halves
+ * one dimension at a time (the one whose halving holds the most lights; on a tie the
+ * largest) until the grid holds n lights. Returns false, with the grid at 1 x 1 x 1,
+ * when no grid does. A grid that already holds n lights is returned unchanged.
+ */
+inline bool ChooseGridForLights(
+  int& tilesX, int& tilesY, int& slices, std::int64_t n, int maxTextureSize)
+{
+  int* dims[3] = { &tilesX, &slices, &tilesY };
+  while (ComputeMaximumNumberOfLights(tilesX, tilesY, slices, maxTextureSize) < n ||
+    static_cast<std::int64_t>(tilesX) * slices > maxTextureSize || tilesY > maxTextureSize)
+  {
+    int best = -1;
+    std::int64_t bestCapacity = -1;
+    for (int d = 0; d < 3; ++d)
+    {
+      if (*dims[d] <= 1)
+      {
+        continue;
+      }
+      const int kept = *dims[d];
+      *dims[d] = (kept + 1) / 2;
+      const std::int64_t capacity =
+        ComputeMaximumNumberOfLights(tilesX, tilesY, slices, maxTextureSize);
+      *dims[d] = kept;
+      if (capacity > bestCapacity || (capacity == bestCapacity && kept > *dims[best]))
+      {
+        best = d;
+        bestCapacity = capacity;
+      }
+    }
+    if (best < 0)
+    {
+      return false;
+    }
+    *dims[best] = (*dims[best] + 1) / 2;
+  }
+  return true;
+}
+
 } // namespace vtkClusteredLighting
 
 #endif

@@ -3,9 +3,12 @@
 //  - 16,384 lights render correctly: zero false negatives against the CPU reference, and
 //    clustered vs brute force within the derived cutoff tolerance, no NaN pixel;
 //  - the documented maximum (GetMaximumNumberOfLights for the context's
-//    GL_MAX_TEXTURE_SIZE) is what the pass enforces: a grid too fine for the light count
-//    gets a clear error naming the limit, no crash, no clustered light silently dropped
-//    from a rendered frame; going back to a valid grid renders them again.
+//    GL_MAX_TEXTURE_SIZE) is what the pass enforces: past it on a grid too fine for the
+//    light count, the pass renders every light on a smaller grid that holds them (one
+//    warning naming the limit and the grid chosen; the frame passes the same checks);
+//    only when no grid holds them (a tiny MaximumTextureSize) does it report an error
+//    naming the limit, with no crash and no light silently dropped from a rendered frame;
+//    going back to a valid grid renders them again.
 #include "ClusteredLightingTestUtilities.h"
 
 #include "vtkActor.h"
@@ -76,7 +79,8 @@ int TestClusteredLightingLimits(int, char*[])
     status = EXIT_FAILURE;
   }
 
-  // A grid that cannot hold 16,384 lights: 256 x 256 tiles x 64 slices.
+  // A grid that cannot hold 16,384 lights: 256 x 256 tiles x 64 slices. Every light is
+  // still rendered, on a smaller grid, and the user is told once.
   vtkNew<ClusteredLightingTest::MessageCollector> messages;
   messages->Watch(pass);
   pass->SetTilesX(256);
@@ -86,19 +90,55 @@ int TestClusteredLightingLimits(int, char*[])
     vtkClusteredLightingPass::GetMaximumNumberOfLights(256, 256, 64, maxTexture);
   renWin->Render();
   renWin->Render(); // reported once, not every frame
-  const std::string message = messages->Errors.empty() ? "" : messages->Errors[0];
-  std::printf("error reported %zu time(s): %s\n", messages->Errors.size(), message.c_str());
+  const std::string warning = messages->Warnings.empty() ? "" : messages->Warnings[0];
+  const int* used = pass->GetClusterGridInUse();
+  std::printf("warned %zu time(s), %zu error(s): %s\n", messages->Warnings.size(),
+    messages->Errors.size(), warning.c_str());
+  std::printf("grid in use: %dx%dx%d\n", used[0], used[1], used[2]);
   const std::string expected = "holds at most " + std::to_string(fineMax) + " lights";
-  if (messages->Errors.size() != 1 || message.find(expected) == std::string::npos ||
-    message.find("16384") == std::string::npos)
+  const std::string chosen = "rendered on a " + std::to_string(used[0]) + "x" +
+    std::to_string(used[1]) + "x" + std::to_string(used[2]) + " grid";
+  if (messages->Warnings.size() != 1 || !messages->Errors.empty() ||
+    warning.find(expected) == std::string::npos || warning.find(chosen) == std::string::npos ||
+    warning.find("16384 lights") == std::string::npos)
   {
-    std::printf("expected one error containing \"%s\"\n", expected.c_str());
+    std::printf(
+      "expected one warning containing \"%s\" and \"%s\"\n", expected.c_str(), chosen.c_str());
     status = EXIT_FAILURE;
   }
-  if (pass->GetNumberOfAssignedLights() != 0)
+  if (used[0] > 256 || used[1] > 256 || used[2] > 64 ||
+    used[0] * used[1] * used[2] >= 256 * 256 * 64 ||
+    vtkClusteredLightingPass::GetMaximumNumberOfLights(used[0], used[1], used[2], maxTexture) < n)
+  {
+    std::printf("the grid in use must be smaller than 256x256x64 and hold %d lights\n", n);
+    status = EXIT_FAILURE;
+  }
+  if (pass->GetNumberOfAssignedLights() == 0 ||
+    ClusteredLightingTest::CheckClusteredFrame(pass, renWin, ren, 1.0, "past the grid's limit") !=
+      0)
   {
     status = EXIT_FAILURE;
   }
+
+  // No grid holds them: 16,384 lights with textures of at most 16 texels a side (a 1x1x1
+  // grid then holds 16 x min(16, 32) x 32 = 8,192). An error naming the limit, nothing lit
+  // by halves.
+  messages->Clear();
+  pass->SetMaximumTextureSize(16);
+  renWin->Render();
+  renWin->Render();
+  const std::string error = messages->Errors.empty() ? "" : messages->Errors[0];
+  std::printf("error reported %zu time(s): %s\n", messages->Errors.size(), error.c_str());
+  if (messages->Errors.size() != 1 ||
+    error.find("no cluster grid holds 16384 lights") == std::string::npos ||
+    error.find("1x1x1 grid holds at most 8192") == std::string::npos ||
+    pass->GetNumberOfAssignedLights() != 0)
+  {
+    std::printf("expected one error naming the 8192-light limit, and no light assigned\n");
+    status = EXIT_FAILURE;
+  }
+  pass->SetMaximumTextureSize(0);
+
   // Back to a valid grid: the lights render again and the assignment is exact.
   pass->SetTilesX(32);
   pass->SetTilesY(16);

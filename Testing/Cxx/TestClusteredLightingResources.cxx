@@ -160,6 +160,10 @@ int TestClusteredLightingResources(int, char*[])
   std::string firstError;
   const int errors = CountGLErrors(renWin, &firstError);
   Check(errors == 0, "no GL error (" + std::to_string(errors) + ", first " + firstError + ")");
+  for (const std::string& m : messages->Warnings)
+  {
+    std::printf("warning: %s\n", m.c_str());
+  }
   Check(
     messages->Errors.empty() && messages->Warnings.empty(), "no warning or error from the pass");
   return CheckStatus();

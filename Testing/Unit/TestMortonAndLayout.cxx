@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <limits>
 #include <set>
@@ -150,4 +151,52 @@ TEST(Layout, LimitIsReportedNotTruncated)
   EXPECT_FALSE(ComputeLayout(32, 16, 32, static_cast<int>(maxN) + 1, 16384, L, &error));
   EXPECT_NE(error.find("at most 524288"), std::string::npos) << error;
   EXPECT_FALSE(ComputeLayout(1024, 16, 32, 10, 16384, L, &error)); // X*Z too wide
+}
+
+TEST(Layout, PastTheLimitASmallerGridHoldsTheLights)
+{
+  // The case: 1,000,200 lights on the default grid at 16,384 texels.
+  int x = 32, y = 16, z = 32;
+  ASSERT_TRUE(ChooseGridForLights(x, y, z, 1000200, 16384));
+  EXPECT_GE(ComputeMaximumNumberOfLights(x, y, z, 16384), 1000200);
+  EXPECT_LT(x * y * z, 32 * 16 * 32);
+  // Halving one dimension is enough here, and the chosen grid is one of those.
+  EXPECT_EQ(x * y * z * 2, 32 * 16 * 32) << x << "x" << y << "x" << z;
+  ClusterTextureLayout L;
+  EXPECT_TRUE(ComputeLayout(x, y, z, 1000200, 16384, L));
+
+  // A grid that already holds the lights is kept.
+  x = 32, y = 16, z = 32;
+  EXPECT_TRUE(ChooseGridForLights(x, y, z, 524288, 16384));
+  EXPECT_EQ(x, 32);
+  EXPECT_EQ(y, 16);
+  EXPECT_EQ(z, 32);
+
+  // Every grid the search returns holds the lights, for many grids, counts and texture
+  // sizes; none is returned larger than asked on any axis; when it fails, 1x1x1 does not
+  // hold them either.
+  for (int maxTexture : { 16, 256, 1024, 16384 })
+  {
+    for (std::int64_t n : { 1, 33, 5000, 70000, 1000200, 20000000 })
+    {
+      for (const auto& asked : { std::array<int, 3>{ 32, 16, 32 },
+             std::array<int, 3>{ 256, 256, 64 }, std::array<int, 3>{ 7, 3, 100 } })
+      {
+        int gx = asked[0], gy = asked[1], gz = asked[2];
+        const bool ok = ChooseGridForLights(gx, gy, gz, n, maxTexture);
+        if (ok)
+        {
+          EXPECT_GE(ComputeMaximumNumberOfLights(gx, gy, gz, maxTexture), n);
+          EXPECT_TRUE(gx <= asked[0] && gy <= asked[1] && gz <= asked[2]);
+          EXPECT_TRUE(gx >= 1 && gy >= 1 && gz >= 1);
+          EXPECT_TRUE(ComputeLayout(gx, gy, gz, static_cast<int>(n), maxTexture, L));
+        }
+        else
+        {
+          EXPECT_LT(ComputeMaximumNumberOfLights(1, 1, 1, maxTexture), n);
+          EXPECT_EQ(gx * gy * gz, 1);
+        }
+      }
+    }
+  }
 }

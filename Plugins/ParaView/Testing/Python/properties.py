@@ -11,7 +11,7 @@ Checks:
    not have; every statistic's getter exists. Adding an option to the pass without its
    property (or changing a default in one place only) fails here.
  - The properties reach every rank's pass: Tiles X/Y and Slices change the list
-   texture's size (X * Y * Z * ceil(N / 32) * 4 bytes), Cutoff the effective cutoff, an
+   texture's size (X * Y * Z * ceil(N / 32) * 4 bytes), ContributionCutoff the effective cutoff, an
    error budget picks another cutoff, Measure Timings records times, Cluster Renderer
    Lights hands a renderer light back to VTK, the heat-map debug view changes the image.
  - Representation: it is offered for polygonal data and multiblock data sets (their
@@ -77,6 +77,13 @@ for name, ctype in re.findall(r"vtkSetMacro\((\w+),\s*(\w+)\)", header):
 for name, ctype, low, high in re.findall(
         r"vtkSetClampMacro\((\w+),\s*(\w+),\s*([^,]+),\s*([^)]+)\)", header):
     options[name] = {"type": ctype, "range": (value_of(low), value_of(high))}
+# Enumerated options have setters that reject other values (not vtkSetClampMacro); their
+# range is that of the constants their SetXToY methods set.
+for name in re.findall(r"virtual void Set(\w+)\(int \w+\);", header):
+    values = [value_of(c) for c in re.findall(
+        r"void Set%sTo\w+\(\) \{ this->Set%s\((\w+)\); \}" % (name, name), header)]
+    if t.check(len(values) >= 2, "%s: an enumerated option with SetXToY methods" % name):
+        options[name] = {"type": "int", "range": (min(values), max(values))}
 defaults = {name: value_of(value) for _, name, value in re.findall(
     r"^\s*(bool|int|double|float)\s+(\w+)\s*=\s*([^;]+);", header, re.M)}
 t.check(len(options) >= 15, "%d options in vtkClusteredLightingPass.h: %s"
@@ -194,17 +201,17 @@ t.check(list_bytes() == 4 * 2 * 3 * batches * 4,
         % (list_bytes(), batches))
 view.TilesX, view.TilesY, view.Slices = 32, 16, 32
 
-view.Cutoff = 1.0 / 64.0
+view.ContributionCutoff = 1.0 / 64.0
 Render(view)
 t.check(t.info(view, "EffectiveCutoff") == 1.0 / 64.0,
-        "Cutoff 1/64: effective cutoff %g" % t.info(view, "EffectiveCutoff"))
+        "ContributionCutoff 1/64: effective cutoff %g" % t.info(view, "EffectiveCutoff"))
 view.ErrorBudget = 4.0 / 255.0
 Render(view)
 chosen = t.info(view, "EffectiveCutoff")
 t.check(chosen != 1.0 / 64.0 and chosen > 0.0,
-        "Error Budget 4/255: the pass chose cutoff %g instead of Cutoff" % chosen)
+        "Error Budget 4/255: the pass chose cutoff %g instead of ContributionCutoff" % chosen)
 view.ErrorBudget = 0.0
-view.Cutoff = 1.0 / 1024.0
+view.ContributionCutoff = 1.0 / 1024.0
 
 view.MeasureTimings = 1
 view.CameraPosition = [0.0, -41.0, 30.0]  # a new view: the lights are assigned again

@@ -282,8 +282,8 @@ int main(int argc, char* argv[])
   std::printf("image:       %s\n", output.c_str());
   if (!heatmap.empty())
   {
-    std::printf("heat map:    %s (lights evaluated per pixel, hottest = %g)\n", heatmap.c_str(),
-      pass->GetHeatMapMaximum());
+    std::printf("heat map:    %s (lights evaluated per pixel, hottest = %g, mean %.2f)\n",
+      heatmap.c_str(), pass->GetHeatMapScale(), pass->GetMeanLightsEvaluatedPerPixel());
   }
   if (lights->GetNumberOfInputReads() != frames)
   {

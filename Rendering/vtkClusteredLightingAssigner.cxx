@@ -12,7 +12,7 @@
 #include "vtkTextureObject.h"
 #include "vtk_glew.h" // for glFinish, GL limits
 
-#include <algorithm> // for std::min, std::all_of
+#include <algorithm> // for std::min, std::count_if
 #include <chrono>    // for timings
 #include <cmath>     // for std::isinf
 #include <sstream>   // for std::ostringstream
@@ -283,7 +283,8 @@ const vtkClusteredLightingAssignment& vtkClusteredLightingAssigner::Update(
   r.NumberOfExplicitRadius = static_cast<int>(prepared.NumberOfExplicitRadius);
 
   // 3. Limits (may choose a smaller grid) and the plain loop when clustering cannot cull.
-  r.Bypassed = inputs.Clustered && this->AllReachEveryCluster;
+  r.Bypassed = inputs.Clustered && !prepared.Lights.empty() &&
+    this->NumberReachingEveryCluster == prepared.Lights.size();
   inputs.Clustered = inputs.Clustered && !r.Bypassed;
   r.Clustered = inputs.Clustered;
   r.Enabled = this->CheckLimits(rw, inputs);
@@ -412,9 +413,8 @@ void vtkClusteredLightingAssigner::PrepareLights(const vtkClusteredLightingAssig
   // Near radii and the far field's grid (caps the culling radii of far-field lights).
   this->FarFieldPlan =
     PlanFarField(this->Prepared.Lights, this->RegionLo, this->RegionHi, inputs.FarField);
-  this->AllReachEveryCluster = !this->Prepared.Lights.empty() &&
-    std::all_of(this->Prepared.Lights.begin(), this->Prepared.Lights.end(),
-      &vtkClusteredLightingAssigner::ReachesEveryCluster);
+  this->NumberReachingEveryCluster = static_cast<std::size_t>(std::count_if(
+    this->Prepared.Lights.begin(), this->Prepared.Lights.end(), &ReachesEveryCluster));
   // Report each problem once: a bad light stays reported while it stays bad, even when
   // other lights change every frame.
   // Many at once are summarized: a few lines per light set (vtkClusteredLightingMessages.h).
@@ -555,11 +555,9 @@ void vtkClusteredLightingAssigner::CheckCulling(const vtkClusteredLightingAssign
       os << "Clustering culls little here: a cluster holds on average " << r.MeanLightsPerCluster
          << " of the " << n << " lights, so every pixel evaluates about as many lights as "
          << "brute force would. ";
-      const auto everywhere = std::count_if(this->Prepared.Lights.begin(),
-        this->Prepared.Lights.end(), &vtkClusteredLightingAssigner::ReachesEveryCluster);
-      if (everywhere >= n / 2)
+      if (this->NumberReachingEveryCluster >= static_cast<std::size_t>(n / 2))
       {
-        os << everywhere
+        os << this->NumberReachingEveryCluster
            << " of them never fall off (attenuation (1, 0, 0), no radius): give them a falloff "
               "or an explicit radius";
       }

@@ -267,8 +267,8 @@ private:
   std::set<std::string> ReportedProblems;
   std::string ReportedError;
   std::string ReportedGridWarning;
-  int ReportedCullingWarning = 0;    ///< kind of the last culling warning, 0: none
-  bool AllReachEveryCluster = false; ///< of the prepared lights
+  int ReportedCullingWarning = 0;             ///< kind of the last culling warning, 0: none
+  std::size_t NumberReachingEveryCluster = 0; ///< prepared lights (ReachesEveryCluster)
   bool LightDataUploaded = false;
 
   // View.

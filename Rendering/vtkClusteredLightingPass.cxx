@@ -605,9 +605,7 @@ void vtkClusteredLightingPass::RenderDelegate(const vtkRenderState* s,
   {
     variant.DebugView = vtkClusteredLightingShaderVariant::Debug::EvaluatedCount;
     this->Internals->ShaderStageTime.Modified();
-    this->PreRender(s);
-    this->DelegatePass->Render(s);
-    this->PostRender(s);
+    this->RenderDelegateOnce(s);
     this->SetPixelCounts(s, rw);
     variant.DebugView = vtkClusteredLightingShaderVariant::Debug::HeatMap;
     this->Internals->ShaderStageTime.Modified();
@@ -621,10 +619,8 @@ void vtkClusteredLightingPass::RenderDelegate(const vtkRenderState* s,
     glFinish();
   }
   const auto s1 = std::chrono::steady_clock::now();
-  this->PreRender(s);
-  this->DelegatePass->Render(s);
+  this->RenderDelegateOnce(s);
   this->NumberOfRenderedProps += this->DelegatePass->GetNumberOfRenderedProps();
-  this->PostRender(s);
   if (counting)
   {
     this->SetPixelCounts(s, rw);
@@ -644,6 +640,14 @@ void vtkClusteredLightingPass::RenderDelegate(const vtkRenderState* s,
       rendererLights->AddItem(l);
     }
   }
+}
+
+//------------------------------------------------------------------------------
+void vtkClusteredLightingPass::RenderDelegateOnce(const vtkRenderState* s)
+{
+  this->PreRender(s);
+  this->DelegatePass->Render(s);
+  this->PostRender(s);
 }
 
 //------------------------------------------------------------------------------

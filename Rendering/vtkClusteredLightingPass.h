@@ -610,6 +610,7 @@ private:
   void UpdateShaderVariant(const vtkClusteredLightingAssignment& result);
   void RenderDelegate(const vtkRenderState* s, const vtkClusteredLightingLightCollection& lights,
     vtkClusteredLightingAssigner* assigner);
+  void RenderDelegateOnce(const vtkRenderState* s);
   void SetPixelCounts(const vtkRenderState* s, vtkOpenGLRenderWindow* rw);
 
   // Test hook (Testing/Cxx/vtkClusteredLightingInspector.h): the assigners of the renderers.

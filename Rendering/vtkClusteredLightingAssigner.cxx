@@ -9,6 +9,7 @@
 #include "vtkMatrix4x4.h"
 #include "vtkOpenGLCamera.h"
 #include "vtkRenderer.h"
+#include "vtkSMPTools.h"
 #include "vtkTextureObject.h"
 #include "vtk_glew.h" // for glFinish, GL limits
 
@@ -51,7 +52,8 @@ bool SameGrid(const ClusterGridParams& a, const ClusterGridParams& b)
 {
   return a.TilesX == b.TilesX && a.TilesY == b.TilesY && a.Slices == b.Slices &&
     a.ViewportWidth == b.ViewportWidth && a.ViewportHeight == b.ViewportHeight &&
-    a.NearVC == b.NearVC && a.FarVC == b.FarVC && a.Scheme == b.Scheme;
+    a.NearVC == b.NearVC && a.FarVC == b.FarVC && a.SlicingNearVC == b.SlicingNearVC &&
+    a.SlicingFarVC == b.SlicingFarVC && a.Scheme == b.Scheme;
 }
 }
 
@@ -332,7 +334,10 @@ const vtkClusteredLightingAssignment& vtkClusteredLightingAssigner::Update(
     r.LightUpdateTime = Milliseconds(t0, std::chrono::steady_clock::now());
   }
 
-  // 5-6. View records, list and master: only when something changed.
+  // 5. Depth-aware clusters: slices where the geometry is, each cluster cut to its depths.
+  this->UpdateDepthBounds(inputs);
+
+  // 6-7. View records, list and master: only when something changed.
   ViewKey view;
   view.WCVC = inputs.View.WCVC;
   view.VCDC = inputs.View.VCDC;
@@ -583,6 +588,58 @@ void vtkClusteredLightingAssigner::CheckCulling(const vtkClusteredLightingAssign
 }
 
 //------------------------------------------------------------------------------
+// The prepass's depths: the slicing range (it changes the grid, so the view records) and
+// each cluster's depth interval (compared with the last, so a still frame stays still).
+void vtkClusteredLightingAssigner::UpdateDepthBounds(vtkClusteredLightingAssignerInputs& inputs)
+{
+  vtkClusteredLightingAssignment& r = this->Result;
+  r.DepthAware = false;
+  r.DepthBoundsTime = 0.0;
+  r.VisibleDepthRange[0] = r.VisibleDepthRange[1] = 0.0;
+  ClusterDepthBounds bounds;
+  if (inputs.Depths && inputs.Clustered && r.Enabled && HasDepthOnlyClipZ(inputs.View.VCDC))
+  {
+    const auto t0 = std::chrono::steady_clock::now();
+    const DepthImage& image = *inputs.Depths;
+    double nearest = 0.0, deepest = 0.0;
+    const bool visible = MeasureVisibleRange(image, inputs.View.VCDC, nearest, deepest);
+    ChooseSlicingRange(visible, nearest, deepest, inputs.View.Grid);
+    const ClusterGridParams& grid = inputs.View.Grid;
+    InitializeClusterDepthBounds(grid, bounds);
+    // Tile rows are independent: split them over the threads.
+    vtkSMPTools::For(0, grid.TilesY,
+      [&](vtkIdType begin, vtkIdType end)
+      {
+        ComputeClusterDepthBoundsRows(image, inputs.View.VCDC, grid, inputs.DepthOptions,
+          static_cast<int>(begin), static_cast<int>(end), bounds);
+      });
+    FinishClusterDepthBounds(image, inputs.View.VCDC, bounds);
+    r.DepthBoundsTime = Milliseconds(t0, std::chrono::steady_clock::now());
+    r.VisibleDepthRange[0] = bounds.VisibleNear;
+    r.VisibleDepthRange[1] = bounds.VisibleFar;
+    r.NonEmptyClusterFraction = bounds.LoHi.empty()
+      ? 0.0
+      : static_cast<double>(bounds.NonEmptyClusters) / (bounds.LoHi.size() / 2);
+  }
+  r.DepthAware = bounds.Valid;
+  if (!bounds.Valid)
+  {
+    r.NonEmptyClusterFraction = 1.0;
+    if (this->Window)
+    {
+      this->Backend->ReleaseDepthResources(this->Window);
+    }
+  }
+  r.SlicingRange[0] = inputs.View.Grid.GetSlicingNear();
+  r.SlicingRange[1] = inputs.View.Grid.GetSlicingFar();
+  if (bounds != this->DepthBounds)
+  {
+    r.Reasons |= CL_DIRTY_DEPTHS;
+    this->DepthBounds = std::move(bounds);
+  }
+}
+
+//------------------------------------------------------------------------------
 void vtkClusteredLightingAssigner::Assign(
   vtkOpenGLRenderWindow* rw, const vtkClusteredLightingAssignerInputs& inputs)
 {
@@ -598,7 +655,7 @@ void vtkClusteredLightingAssigner::Assign(
   if (ok && inputs.Clustered)
   {
     ok = this->Backend->Assign(rw, this->Layout, data,
-      ComputeListPassParameters(inputs.View, inputs.PerClusterCulling),
+      ComputeListPassParameters(inputs.View, inputs.PerClusterCulling, &this->DepthBounds),
       this->LightView.GetTexture());
     if (!ok)
     {
@@ -615,6 +672,7 @@ void vtkClusteredLightingAssigner::Assign(
   }
   const auto t2 = std::chrono::steady_clock::now();
   r.AssignmentTime = inputs.MeasureTimings ? Milliseconds(t1, t2) : Milliseconds(t0, t2);
+  r.AssignmentTime += r.DepthBoundsTime; // the CPU part of depth-aware clusters
   r.NumberOfQuads = data.NumberOfQuads;
   const ClusterGridParams& g = inputs.View.Grid;
   r.MeanLightsPerCluster = data.ClusterCoverage /
@@ -708,6 +766,7 @@ vtkClusteredLightingAssignmentSnapshot vtkClusteredLightingAssigner::GetSnapshot
   f.Lights = this->Prepared.Lights;
   f.NumberOfQuads = this->Result.NumberOfQuads;
   f.FarField = this->Result.FarField ? this->FarFieldPlan : vtkClusteredLighting::FarFieldPlan();
+  f.DepthBounds = this->Result.DepthAware ? this->DepthBounds : ClusterDepthBounds();
   return f;
 }
 

@@ -15,9 +15,12 @@
  *                                the asked one cannot hold the lights, an error when none
  *                                can; the plain loop when every light reaches every cluster)
  *          4. upload clLightData (only when the prepared lights changed)
- *          5. view              (only when anything changed: clLightView records and the
+ *          5. depth bounds      (only after a depth prepass: the slicing range from the
+ *                                visible depths, each cluster's depth interval,
+ *                                Rendering/Core/...DepthBounds.h)
+ *          6. view              (only when anything changed: clLightView records and the
  *                                (light, slice) tile rectangles, ...Assignment.h)
- *          6. list and master   (the back end, vtkClusteredLightingAssignmentBackend)
+ *          7. list and master   (the back end, vtkClusteredLightingAssignmentBackend)
  *        and returns a vtkClusteredLightingAssignment: statistics, messages to report,
  *        and the values the shading code needs (one struct for SetShaderParameters)
  *     -> shading (the pass: shader variant, delegate render with the textures bound)
@@ -25,8 +28,8 @@
  * Change detection compares typed inputs with those of the last update, never a flat
  * signature: the light sources' key (objects and newest MTime), the preparation
  * options, and the view key (matrices, grid, mode). A still frame with unchanged lights
- * does no work at all; a moving camera re-runs steps 5-6 only; a changed light re-runs
- * 2-6.
+ * does no work at all (after a depth prepass: step 5 only, whose result is compared
+ * with the last); a moving camera re-runs steps 5-7 only; a changed light re-runs 2-7.
  *
  * GL objects (all in the context of the window of the last update, released in that
  * context when the window is deleted, when the assigner is destroyed, or on
@@ -72,7 +75,8 @@ enum vtkClusteredLightingDirtyReason : unsigned int
   CL_DIRTY_VIEW = 1u << 2,        ///< the camera matrices changed
   CL_DIRTY_GRID = 1u << 3,        ///< tiles, slices, viewport, depth range or slicing changed
   CL_DIRTY_MODE = 1u << 4,        ///< shading mode, bounds method or per-cluster culling changed
-  CL_DIRTY_RESOURCES = 1u << 5    ///< first update, another window, or GL objects released
+  CL_DIRTY_RESOURCES = 1u << 5,   ///< first update, another window, or GL objects released
+  CL_DIRTY_DEPTHS = 1u << 6       ///< depth-aware clusters: the visible depths changed
 };
 
 /// The cluster grid as the pass's options describe it.
@@ -104,6 +108,10 @@ struct vtkClusteredLightingAssignerInputs
   bool PerClusterCulling = true;
   int MaximumTextureSize = 0; ///< 0: the context's limit
   bool MeasureTimings = false;
+  /// Depth-aware clusters: the viewport's window depths after a depth prepass (nullptr:
+  /// whole frustum cells, camera-range slicing), and the margins of their readback.
+  const vtkClusteredLighting::DepthImage* Depths = nullptr;
+  vtkClusteredLighting::DepthBoundsOptions DepthOptions;
 };
 
 /// What an update did and found; SetShaderParameters reads only this.
@@ -134,6 +142,12 @@ struct vtkClusteredLightingAssignment
   double AssignmentTime = 0.0;  ///< ms, when Reassigned
   double LightUpdateTime = 0.0; ///< ms: reading, preparing and uploading changed lights,
                                 ///< building the far field included
+  // Depth-aware clusters (vtkClusteredLightingDepthBounds.h).
+  bool DepthAware = false;      ///< the list pass cut the cells to the visible depths
+  double DepthBoundsTime = 0.0; ///< ms: the visible range and per-cluster depths (CPU)
+  double VisibleDepthRange[2] = { 0.0, 0.0 }; ///< nearest and deepest opaque depth (VC)
+  double SlicingRange[2] = { 0.0, 0.0 };      ///< the slices' depth range in use (VC)
+  double NonEmptyClusterFraction = 1.0;       ///< clusters holding fragments (depth-aware)
 
   // The far field (Rendering/Core/vtkClusteredLightingFarField.h).
   bool FarField = false; ///< lights have far parts: the shading code adds the far field
@@ -170,7 +184,8 @@ struct vtkClusteredLightingAssignmentSnapshot
   vtkClusteredLighting::ClusterTextureLayout Layout;
   std::vector<vtkClusteredLighting::PreparedLight> Lights; ///< upload order, world coords
   int NumberOfQuads = 0;
-  vtkClusteredLighting::FarFieldPlan FarField; ///< Active when the far field is shaded
+  vtkClusteredLighting::FarFieldPlan FarField;          ///< Active when the far field is shaded
+  vtkClusteredLighting::ClusterDepthBounds DepthBounds; ///< Valid when depth-aware
 };
 
 class vtkClusteredLightingAssigner
@@ -253,6 +268,7 @@ private:
   void CheckCulling(const vtkClusteredLightingAssignerInputs& inputs);
   static bool ReachesEveryCluster(const vtkClusteredLighting::PreparedLight& light);
   void Assign(vtkOpenGLRenderWindow* rw, const vtkClusteredLightingAssignerInputs& inputs);
+  void UpdateDepthBounds(vtkClusteredLightingAssignerInputs& inputs);
 
   vtkWeakPointer<vtkOpenGLRenderWindow> Window;
   unsigned long WindowObserver = 0;
@@ -273,6 +289,7 @@ private:
 
   // View.
   ViewKey LastView;
+  vtkClusteredLighting::ClusterDepthBounds DepthBounds; ///< of the last assignment
   bool AssignmentValid = false;
   vtkClusteredLighting::ClusterTextureLayout Layout;
 

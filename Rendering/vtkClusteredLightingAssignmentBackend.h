@@ -56,6 +56,9 @@ public:
     const vtkClusteredLighting::ViewData& view,
     const vtkClusteredLighting::ListPassParameters& parameters, vtkTextureObject* lightView) = 0;
 
+  /// Depth-aware clusters are off for this renderer: release what only they use.
+  virtual void ReleaseDepthResources(vtkOpenGLRenderWindow* rw) = 0;
+
   ///@{
   /// Bind the list and master textures for the shading pass; their units (-1 when not
   /// bound) go to clList and clMaster.

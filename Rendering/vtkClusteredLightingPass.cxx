@@ -5,6 +5,7 @@
 #include "vtkCamera.h"
 #include "vtkClusteredLightSet.h"
 #include "vtkClusteredLightingAssigner.h"
+#include "vtkClusteredLightingDepthPrepass.h"
 #include "vtkClusteredLightingLightCollector.h"
 #include "vtkClusteredLightingShaderVariant.h"
 #include "vtkLight.h"
@@ -95,6 +96,40 @@ struct PixelCounts
 /// Reads the renderer's viewport back from the framebuffer the delegate drew into and
 /// decodes the evaluated counts (R + 256 G) of the pixels covered by geometry (depth
 /// below the far plane). Zero counts when the framebuffer cannot be read.
+/// Pixels of the renderer's viewport whose depth is below the far plane.
+std::size_t CountVisiblePixels(const vtkRenderState* s, vtkOpenGLRenderWindow* rw)
+{
+  int width = 0, height = 0, x0 = 0, y0 = 0;
+  if (auto* fbo = vtkOpenGLFramebufferObject::SafeDownCast(s->GetFrameBuffer()))
+  {
+    int size[2] = { 0, 0 };
+    fbo->GetLastSize(size);
+    width = size[0];
+    height = size[1];
+  }
+  else
+  {
+    s->GetRenderer()->GetTiledSizeAndOrigin(&width, &height, &x0, &y0);
+  }
+  if (width <= 0 || height <= 0)
+  {
+    return 0;
+  }
+  vtkOpenGLState* state = rw->GetState();
+  unsigned int drawBinding = 0, drawBuffer = 0;
+  state->GetCurrentDrawFramebufferState(drawBinding, drawBuffer);
+  state->PushReadFramebufferBinding();
+  state->vtkglBindFramebuffer(GL_READ_FRAMEBUFFER, drawBinding);
+  state->vtkglPixelStorei(GL_PACK_ALIGNMENT, 4);
+  std::vector<float> depth(static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
+  glReadPixels(x0, y0, width, height, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
+  const bool ok = glGetError() == GL_NO_ERROR;
+  state->PopReadFramebufferBinding();
+  return ok ? static_cast<std::size_t>(
+                std::count_if(depth.begin(), depth.end(), [](float z) { return z < 1.0f; }))
+            : 0;
+}
+
 PixelCounts CountEvaluatedLights(const vtkRenderState* s, vtkOpenGLRenderWindow* rw)
 {
   PixelCounts counts;
@@ -228,6 +263,9 @@ struct vtkClusteredLightingPass::vtkInternals
   vtkTimeStamp ShaderStageTime;
   vtkNew<vtkLight> PlaceholderLight; ///< keeps VTK's lit code when every light is clustered
   vtkNew<vtkLight> ComplexityLight;  ///< keeps VTK's lighting complexity (switched off)
+  vtkClusteredLightingDepthPrepass Prepass;
+  vtkClusteredLighting::DepthImage Depths; ///< the prepass's readback, during Render()
+  std::string ReportedDepthProblem;        ///< why depth-aware clusters are off, said once
 
   vtkClusteredLightingAssigner* GetAssigner(vtkRenderer* ren)
   {
@@ -410,17 +448,90 @@ void vtkClusteredLightingPass::Render(const vtkRenderState* s)
     ren, this->ClusterRendererLights, lights);
   vtkClusteredLightingLightCollector::CollectLightSets(this->Internals->LightSets, lights);
 
-  // 2. Assignment.
+  // 2. Depth prepass (hidden fragments and depth-aware clusters), then assignment.
   vtkClusteredLightingAssigner* assigner = this->Internals->GetAssigner(ren);
-  const vtkClusteredLightingAssignment& result =
-    assigner->Update(rw, this->MakeAssignerInputs(ren, lights));
+  vtkClusteredLightingAssignerInputs inputs = this->MakeAssignerInputs(ren, lights);
+  const bool prepassed = this->RenderDepthPrepass(s, rw, inputs);
+  const vtkClusteredLightingAssignment& result = assigner->Update(rw, inputs);
+  this->Internals->Depths = vtkClusteredLighting::DepthImage();
   this->ReportAssignment(result);
 
-  // 3. Shading.
+  // 3. Shading, on the prepass's depth buffer when there is one (the camera pass then
+  // clears colour only).
   this->UpdateShaderVariant(result);
   this->Internals->Current = assigner;
+  const bool preserved = ren->GetPreserveDepthBuffer() != 0;
+  if (prepassed && !preserved)
+  {
+    ren->PreserveDepthBufferOn();
+  }
   this->RenderDelegate(s, lights, assigner);
+  if (prepassed && !preserved)
+  {
+    ren->PreserveDepthBufferOff();
+  }
   this->Internals->Current = nullptr;
+}
+
+//------------------------------------------------------------------------------
+// The depth prepass: when the options ask for it and the render has clustered lights to
+// shade (not in a selection render). With depth-aware clusters it also reads the depth
+// back for the assigner.
+bool vtkClusteredLightingPass::RenderDepthPrepass(
+  const vtkRenderState* s, vtkOpenGLRenderWindow* rw, vtkClusteredLightingAssignerInputs& inputs)
+{
+  vtkRenderer* ren = s->GetRenderer();
+  this->DepthPrepassUsed = false;
+  this->DepthAwareClustersUsed = false;
+  this->LastDepthPrepassTime = 0.0;
+  const bool hasLights =
+    !inputs.Lights->ClusteredLights.empty() || !inputs.Lights->LightSets.empty();
+  if (!(this->DepthPrepass || this->DepthAwareClusters) || !hasLights || ren->GetSelector() ||
+    s->GetPropArrayCount() == 0)
+  {
+    return false;
+  }
+  vtkClusteredLightingDepthPrepass& prepass = this->Internals->Prepass;
+  prepass.Render(
+    s, rw, [this, s]() { this->PreRender(s); }, [this, s]() { this->PostRender(s); },
+    this->MeasureTimings);
+  this->DepthPrepassUsed = true;
+  if (this->DepthAwareClusters && inputs.Clustered)
+  {
+    std::string problem;
+    if (prepass.GetUnknownDepthWrites())
+    {
+      problem = "a mapper writes its own fragment depth (impostor spheres or tubes)";
+    }
+    else if (!prepass.ReadDepth(rw))
+    {
+      problem = prepass.GetProblem();
+    }
+    if (problem.empty())
+    {
+      bool translucent = false;
+      for (int i = 0; i < s->GetPropArrayCount(); ++i)
+      {
+        vtkProp* prop = s->GetPropArray()[i];
+        translucent =
+          translucent || (prop->GetVisibility() && prop->HasTranslucentPolygonalGeometry());
+      }
+      this->Internals->Depths = prepass.GetImage();
+      inputs.Depths = &this->Internals->Depths;
+      inputs.DepthOptions.WindowMargin =
+        vtkClusteredLighting::ComputeWindowMargin(prepass.GetMaximumCoincidentOffset());
+      inputs.DepthOptions.Translucent = translucent;
+      this->Internals->ReportedDepthProblem.clear();
+    }
+    else if (problem != this->Internals->ReportedDepthProblem)
+    {
+      vtkWarningMacro(<< "Depth-aware clusters are off for this view: " << problem
+                      << ". Whole clusters are used instead (correct, slower).");
+      this->Internals->ReportedDepthProblem = problem;
+    }
+  }
+  this->LastDepthPrepassTime = prepass.GetRenderTime();
+  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -528,6 +639,13 @@ void vtkClusteredLightingPass::ReportAssignment(const vtkClusteredLightingAssign
     this->FarFieldDimensions[a] = r.FarField ? r.FarFieldDims[a] : 0;
   }
   this->FarFieldTextureBytes = r.FarFieldBytes;
+  this->DepthAwareClustersUsed = r.Enabled && r.DepthAware;
+  for (int k = 0; k < 2; ++k)
+  {
+    this->VisibleDepthRange[k] = this->DepthAwareClustersUsed ? r.VisibleDepthRange[k] : 0.0;
+    this->SlicingRangeInUse[k] = r.Enabled ? r.SlicingRange[k] : 0.0;
+  }
+  this->NonEmptyClusterFraction = this->DepthAwareClustersUsed ? r.NonEmptyClusterFraction : 1.0;
   if (r.Reassigned)
   {
     this->LastAssignmentTime = r.AssignmentTime;
@@ -619,7 +737,24 @@ void vtkClusteredLightingPass::RenderDelegate(const vtkRenderState* s,
     glFinish();
   }
   const auto s1 = std::chrono::steady_clock::now();
+  // Fragments that pass the depth test per visible pixel: what a GPU with early depth
+  // tests shades (an occlusion query, MeasureTimings only).
+  GLuint query = 0;
+  const bool countFragments = this->MeasureTimings;
+  if (countFragments)
+  {
+    glGenQueries(1, &query);
+    glBeginQuery(GL_SAMPLES_PASSED, query);
+  }
   this->RenderDelegateOnce(s);
+  this->ShadedFragmentsPerVisiblePixel = 0.0;
+  GLuint64 shaded = 0;
+  if (countFragments)
+  {
+    glEndQuery(GL_SAMPLES_PASSED);
+    glGetQueryObjectui64v(query, GL_QUERY_RESULT, &shaded);
+    glDeleteQueries(1, &query);
+  }
   this->NumberOfRenderedProps += this->DelegatePass->GetNumberOfRenderedProps();
   if (counting)
   {
@@ -631,6 +766,12 @@ void vtkClusteredLightingPass::RenderDelegate(const vtkRenderState* s,
   }
   const auto s2 = std::chrono::steady_clock::now();
   this->LastShadingTime = this->MeasureTimings ? Milliseconds(s1, s2) : Milliseconds(s0, s2);
+  if (countFragments)
+  {
+    const std::size_t visible = CountVisiblePixels(s, rw);
+    this->ShadedFragmentsPerVisiblePixel =
+      visible > 0 ? static_cast<double>(shaded) / static_cast<double>(visible) : 0.0;
+  }
   if (enabled)
   {
     assigner->DeactivateShading();
@@ -736,9 +877,35 @@ bool vtkClusteredLightingPass::PostReplaceShaderValues(
 bool vtkClusteredLightingPass::SetShaderParameters(
   vtkShaderProgram* program, vtkAbstractMapper*, vtkProp*, vtkOpenGLVertexArrayObject*)
 {
+  if (program && this->Internals->Prepass.IsRendering())
+  {
+    // Depth only: no light is walked, but every sampler needs a unit of its own type.
+    this->Internals->Prepass.NoteProgram(program);
+    if (program->IsUniformUsed("clDepthOnly"))
+    {
+      program->SetUniformi("clDepthOnly", 1);
+      static const char* const names[] = { "clLightData", "clLightView", "clMaster", "clList",
+        "clFarField0", "clFarField1", "clFarField2", "clFarField3", "clFarField4", "clFarField5",
+        "clFarField6" };
+      int k = 0;
+      for (const char* name : names)
+      {
+        const int unit = this->Internals->Prepass.GetSamplerUnit(k++);
+        if (unit >= 0 && program->IsUniformUsed(name))
+        {
+          program->SetUniformi(name, unit);
+        }
+      }
+    }
+    return true;
+  }
   if (!this->Internals->Current || !program)
   {
     return true;
+  }
+  if (program->IsUniformUsed("clDepthOnly"))
+  {
+    program->SetUniformi("clDepthOnly", 0);
   }
   const vtkClusteredLightingAssignment& r = this->Internals->Current->GetResult();
   // Each uniform is set only if the program uses it: debug views let the compiler drop
@@ -858,6 +1025,8 @@ void vtkClusteredLightingPass::PrintSelf(ostream& os, vtkIndent indent)
   os << next << "NearFieldBudget: " << this->NearFieldBudget << "\n";
   os << next << "MortonOrder: " << (this->MortonOrder ? "On" : "Off") << "\n";
   os << next << "PerClusterCulling: " << (this->PerClusterCulling ? "On" : "Off") << "\n";
+  os << next << "DepthPrepass: " << (this->DepthPrepass ? "On" : "Off") << "\n";
+  os << next << "DepthAwareClusters: " << (this->DepthAwareClusters ? "On" : "Off") << "\n";
   os << next << "MaximumTextureSize: " << this->MaximumTextureSize << "\n";
   os << indent << "Diagnostic:\n";
   os << next << "DebugView: " << this->GetDebugViewAsString() << "\n";
@@ -880,6 +1049,13 @@ void vtkClusteredLightingPass::PrintSelf(ostream& os, vtkIndent indent)
   os << next << "MeanLightsEvaluatedPerPixel: " << this->MeanLightsEvaluatedPerPixel << " (maximum "
      << this->MaximumLightsEvaluatedPerPixel << ", over " << this->NumberOfCountedPixels
      << " pixels)\n";
+  os << next << "DepthPrepassUsed: " << (this->DepthPrepassUsed ? "yes" : "no") << " ("
+     << this->LastDepthPrepassTime << " ms)\n";
+  os << next << "DepthAwareClustersUsed: " << (this->DepthAwareClustersUsed ? "yes" : "no")
+     << ", visible depths " << this->VisibleDepthRange[0] << " to " << this->VisibleDepthRange[1]
+     << ", slices over " << this->SlicingRangeInUse[0] << " to " << this->SlicingRangeInUse[1]
+     << ", non-empty clusters " << this->NonEmptyClusterFraction << "\n";
+  os << next << "ShadedFragmentsPerVisiblePixel: " << this->ShadedFragmentsPerVisiblePixel << "\n";
   os << next << "NearRadiusCap: " << this->NearRadiusCap << "\n";
   os << next << "FarFieldGridSpacing: " << this->FarFieldGridSpacing << "\n";
 }

@@ -345,6 +345,37 @@ public:
 
   //@{
   /**
+   * Render the opaque geometry depth-only before shading it, so that no hidden fragment
+   * is shaded: the shading render then keeps that depth buffer and every opaque fragment
+   * behind the visible surface fails the depth test before its lights are walked. Costs
+   * one more pass over the opaque geometry (vertex work and rasterization, no lighting).
+   * Depth-aware clusters render it whatever this option says. Default is on.
+   */
+  vtkSetMacro(DepthPrepass, bool);
+  vtkGetMacro(DepthPrepass, bool);
+  vtkBooleanMacro(DepthPrepass, bool);
+  //@}
+
+  //@{
+  /**
+   * Depth-aware clusters: after the depth prepass, read the viewport's depth back and cut
+   * each cluster to the depths its fragments really have (an empty cluster gets no
+   * light), and put the depth slices between the nearest and deepest visible surfaces
+   * instead of the camera's clipping range. Conservative: translucent geometry widens
+   * each tile's clusters to everything in front of its deepest opaque surface, and a
+   * frame whose depths cannot be used (a multisampled framebuffer, impostor mappers that
+   * write their own depth, an oblique projection) falls back to whole clusters, with a
+   * warning once. Costs the prepass, a depth readback and a CPU pass over its pixels
+   * (GetLastDepthPrepassTime, GetLastAssignmentTime); the list and master passes then run
+   * whenever the visible depths change. Default is on.
+   */
+  vtkSetMacro(DepthAwareClusters, bool);
+  vtkGetMacro(DepthAwareClusters, bool);
+  vtkBooleanMacro(DepthAwareClusters, bool);
+  //@}
+
+  //@{
+  /**
    * Advanced: largest texture side, in texels, the pass allocates for its list and master
    * textures; 0 means the context's GL_MAX_TEXTURE_SIZE. A smaller value bounds GPU memory
    * (the list texture is at most MaximumTextureSize squared times 4 bytes) and lowers the
@@ -417,8 +448,9 @@ public:
   //@{
   /**
    * Diagnostic: finish the GL work around the assignment and shading stages and record
-   * their times (GetLastAssignmentTime, GetLastShadingTime). Costs a pipeline stall; for
-   * benchmarks. Default is off.
+   * their times (GetLastAssignmentTime, GetLastShadingTime), and count the fragments of
+   * the shading render that pass the depth test (GetShadedFragmentsPerVisiblePixel, an
+   * occlusion query). Costs a pipeline stall; for benchmarks. Default is off.
    */
   vtkSetMacro(MeasureTimings, bool);
   vtkGetMacro(MeasureTimings, bool);
@@ -465,6 +497,24 @@ public:
   vtkGetMacro(LastLightUpdateTime, double);
   /// Time in ms of the last delegate render (exact with MeasureTimings).
   vtkGetMacro(LastShadingTime, double);
+  /// Whether the last render drew a depth prepass.
+  vtkGetMacro(DepthPrepassUsed, bool);
+  /// Time in ms of the last depth prepass, its depth readback included.
+  vtkGetMacro(LastDepthPrepassTime, double);
+  /// Whether the last render's clusters were cut to the visible depths.
+  vtkGetMacro(DepthAwareClustersUsed, bool);
+  /// Nearest and deepest visible opaque depth (view coordinates) of the last depth-aware
+  /// render; 0 otherwise.
+  vtkGetVector2Macro(VisibleDepthRange, double);
+  /// Depth range the slices of the last render spanned (view coordinates).
+  vtkGetVector2Macro(SlicingRangeInUse, double);
+  /// Share of clusters that held fragments in the last depth-aware render (1 otherwise).
+  vtkGetMacro(NonEmptyClusterFraction, double);
+  /// Fragments of the last shading render that passed the depth test (so were shaded by a
+  /// GPU with early depth tests), per pixel showing opaque geometry, with MeasureTimings
+  /// on (a GL_SAMPLES_PASSED query); 0 when not measured. 1.0 means no hidden fragment
+  /// was shaded.
+  vtkGetMacro(ShadedFragmentsPerVisiblePixel, double);
   /// Number of lights split into near and far parts in the last render.
   vtkGetMacro(NumberOfFarFieldLights, int);
   /// Time in ms of the last far-field build.
@@ -556,6 +606,8 @@ protected:
   bool MortonOrder = true;
   int BoundsMethod = BOUNDS_TANGENT;
   bool PerClusterCulling = true;
+  bool DepthPrepass = true;
+  bool DepthAwareClusters = true;
   int MaximumTextureSize = 0;
   bool MeasureTimings = false;
   bool FarField = true;
@@ -587,6 +639,13 @@ protected:
   int FarFieldDimensions[3] = { 0, 0, 0 };
   vtkTypeUInt64 FarFieldTextureBytes = 0;
   double LastShadingTime = 0.0;
+  bool DepthPrepassUsed = false;
+  double LastDepthPrepassTime = 0.0;
+  bool DepthAwareClustersUsed = false;
+  double VisibleDepthRange[2] = { 0.0, 0.0 };
+  double SlicingRangeInUse[2] = { 0.0, 0.0 };
+  double NonEmptyClusterFraction = 1.0;
+  double ShadedFragmentsPerVisiblePixel = 0.0;
   bool LastAssignmentUpdated = false;
   int NumberOfLightUploads = 0;
   int NumberOfAssignmentUpdates = 0;
@@ -611,6 +670,8 @@ private:
   void RenderDelegate(const vtkRenderState* s, const vtkClusteredLightingLightCollection& lights,
     vtkClusteredLightingAssigner* assigner);
   void RenderDelegateOnce(const vtkRenderState* s);
+  bool RenderDepthPrepass(
+    const vtkRenderState* s, vtkOpenGLRenderWindow* rw, vtkClusteredLightingAssignerInputs& inputs);
   void SetPixelCounts(const vtkRenderState* s, vtkOpenGLRenderWindow* rw);
 
   // Test hook (Testing/Cxx/vtkClusteredLightingInspector.h): the assigners of the renderers.

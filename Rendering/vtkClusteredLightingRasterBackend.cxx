@@ -16,6 +16,7 @@
 #include "vtkClusteredLightingMasterFS.h"
 
 #include <algorithm> // for std::max
+#include <string>    // for std::string
 
 using namespace vtkClusteredLighting;
 
@@ -85,6 +86,7 @@ void vtkClusteredLightingRasterBackend::ReleaseGraphicsResources(vtkWindow* w)
   this->Quads.Release(w);
   Release(this->List, w);
   Release(this->Master, w);
+  Release(this->ClusterDepths, w);
   if (this->FBO)
   {
     if (w)
@@ -114,6 +116,7 @@ int vtkClusteredLightingRasterBackend::GetNumberOfGLObjects() const
 {
   return this->Quads.GetNumberOfGLObjects() + ((this->List && this->List->GetHandle()) ? 1 : 0) +
     ((this->Master && this->Master->GetHandle()) ? 1 : 0) +
+    ((this->ClusterDepths && this->ClusterDepths->GetHandle()) ? 1 : 0) +
     ((this->FBO && this->FBO->GetFBOIndex()) ? 1 : 0) + ((this->VAO && this->VAOCreated) ? 1 : 0);
 }
 
@@ -121,7 +124,7 @@ void vtkClusteredLightingRasterBackend::GetGLObjectNames(
   std::vector<std::pair<unsigned int, unsigned int>>& names) const
 {
   this->Quads.GetGLObjectNames(names);
-  for (vtkTextureObject* tex : { this->List, this->Master })
+  for (vtkTextureObject* tex : { this->List, this->Master, this->ClusterDepths })
   {
     if (tex && tex->GetHandle())
     {
@@ -215,6 +218,43 @@ bool vtkClusteredLightingRasterBackend::Assign(vtkOpenGLRenderWindow* rw,
 }
 
 //------------------------------------------------------------------------------
+// Each cluster's depth interval as an RG32F texel (s * X + tx, ty).
+bool vtkClusteredLightingRasterBackend::UploadClusterDepths(
+  vtkOpenGLRenderWindow* rw, const ClusterDepthBounds& bounds)
+{
+  vtkTextureObject*& tex = this->ClusterDepths;
+  if (tex &&
+    (static_cast<int>(tex->GetWidth()) != bounds.Width ||
+      static_cast<int>(tex->GetHeight()) != bounds.Height))
+  {
+    Release(tex, rw);
+  }
+  if (!tex)
+  {
+    tex = vtkTextureObject::New();
+    tex->SetContext(rw);
+    tex->SetInternalFormat(GL_RG32F);
+    tex->SetFormat(GL_RG);
+    tex->SetDataType(GL_FLOAT);
+    tex->SetMinificationFilter(vtkTextureObject::Nearest);
+    tex->SetMagnificationFilter(vtkTextureObject::Nearest);
+    tex->SetWrapS(vtkTextureObject::ClampToEdge);
+    tex->SetWrapT(vtkTextureObject::ClampToEdge);
+    if (!tex->Allocate2D(static_cast<unsigned int>(bounds.Width),
+          static_cast<unsigned int>(bounds.Height), 2, VTK_FLOAT))
+    {
+      Release(tex, rw);
+      return false;
+    }
+  }
+  tex->Bind();
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  glTexSubImage2D(
+    GL_TEXTURE_2D, 0, 0, 0, bounds.Width, bounds.Height, GL_RG, GL_FLOAT, bounds.LoHi.data());
+  return true;
+}
+
+//------------------------------------------------------------------------------
 // One instanced quad per (light, slice) rectangle, bits OR-ed into the list texture.
 bool vtkClusteredLightingRasterBackend::RunListPass(vtkOpenGLRenderWindow* rw,
   const ClusterTextureLayout& layout, int numberOfQuads, const ListPassParameters& parameters,
@@ -228,15 +268,35 @@ bool vtkClusteredLightingRasterBackend::RunListPass(vtkOpenGLRenderWindow* rw,
   rw->GetState()->vtkglViewport(0, 0, layout.ListWidth, layout.ListHeight);
   const GLuint zero[4] = { 0u, 0u, 0u, 0u };
   glClearBufferuiv(GL_COLOR, 0, zero);
+  const bool depthAware = parameters.DepthBounds != nullptr;
+  if (depthAware && !this->UploadClusterDepths(rw, *parameters.DepthBounds))
+  {
+    return false;
+  }
+  if (!depthAware)
+  {
+    Release(this->ClusterDepths, rw); // held only while the clusters are depth-aware
+  }
   if (numberOfQuads <= 0 || !this->Quads.GetTexture() || !lightView)
   {
     return true;
   }
-  vtkShaderProgram* program = rw->GetShaderCache()->ReadyShaderProgram(
-    vtkClusteredLightingListVS, vtkClusteredLightingListFS, "");
+  // Two programs: the depth-aware one declares the cluster-depth sampler.
+  std::string fs = vtkClusteredLightingListFS;
+  if (depthAware)
+  {
+    vtkShaderProgram::Substitute(fs, "//CL_DEPTH_AWARE", "#define CL_DEPTH_AWARE");
+  }
+  vtkShaderProgram* program =
+    rw->GetShaderCache()->ReadyShaderProgram(vtkClusteredLightingListVS, fs.c_str(), "");
   if (!program)
   {
     return false;
+  }
+  if (depthAware)
+  {
+    this->ClusterDepths->Activate();
+    program->SetUniformi("clClusterDepths", this->ClusterDepths->GetTextureUnit());
   }
   vtkTextureObject* quads = this->Quads.GetTexture();
   quads->Activate();
@@ -270,6 +330,10 @@ bool vtkClusteredLightingRasterBackend::RunListPass(vtkOpenGLRenderWindow* rw,
   this->VAO->Release();
   lightView->Deactivate();
   quads->Deactivate();
+  if (depthAware)
+  {
+    this->ClusterDepths->Deactivate();
+  }
   return true;
 }
 
@@ -301,6 +365,12 @@ bool vtkClusteredLightingRasterBackend::RunMasterPass(
   this->VAO->Release();
   this->List->Deactivate();
   return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkClusteredLightingRasterBackend::ReleaseDepthResources(vtkOpenGLRenderWindow* rw)
+{
+  Release(this->ClusterDepths, rw);
 }
 
 //------------------------------------------------------------------------------

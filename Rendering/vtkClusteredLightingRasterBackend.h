@@ -45,6 +45,7 @@ public:
     const vtkClusteredLighting::ListPassParameters& parameters,
     vtkTextureObject* lightView) override;
 
+  void ReleaseDepthResources(vtkOpenGLRenderWindow* rw) override;
   void ActivateShadingTextures() override;
   void DeactivateShadingTextures() override;
   int GetListUnit() const override;
@@ -74,11 +75,14 @@ private:
   bool RunMasterPass(
     vtkOpenGLRenderWindow* rw, const vtkClusteredLighting::ClusterTextureLayout& layout);
   bool BindTarget(vtkTextureObject* tex);
+  bool UploadClusterDepths(
+    vtkOpenGLRenderWindow* rw, const vtkClusteredLighting::ClusterDepthBounds& bounds);
   void BindVAO();
 
   vtkClusteredLightingTextureBuffer Quads;
   vtkTextureObject* List = nullptr;
   vtkTextureObject* Master = nullptr;
+  vtkTextureObject* ClusterDepths = nullptr; ///< RG32F, depth-aware clusters only
   vtkOpenGLFramebufferObject* FBO = nullptr;
   vtkOpenGLVertexArrayObject* VAO = nullptr;
   bool VAOCreated = false;

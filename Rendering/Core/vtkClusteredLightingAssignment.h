@@ -23,6 +23,7 @@
 #ifndef vtkClusteredLightingAssignment_h
 #define vtkClusteredLightingAssignment_h
 
+#include "vtkClusteredLightingDepthBounds.h"
 #include "vtkClusteredLightingLayout.h"
 #include "vtkClusteredLightingLights.h"
 #include "vtkClusteredLightingSphereBounds.h"
@@ -173,15 +174,23 @@ struct ListPassParameters
   float ProjectionW[2] = { -1, 0 };   ///< P32, P33
   float Slicing[4] = { 0, 0, 0, 0 };  ///< ComputeSliceShaderParameters
   float DepthRange[2] = { 0, 1 };     ///< camera near depth, deepest fragment depth
+  /// Depth-aware clusters (vtkClusteredLightingDepthBounds.h): each cluster's cell is cut
+  /// to the depths its fragments have; nullptr or not Valid: whole cells.
+  const ClusterDepthBounds* DepthBounds = nullptr;
 };
 
-inline ListPassParameters ComputeListPassParameters(
-  const ViewParameters& view, bool perClusterCulling)
+inline ListPassParameters ComputeListPassParameters(const ViewParameters& view,
+  bool perClusterCulling, const ClusterDepthBounds* depthBounds = nullptr)
 {
   ListPassParameters p;
   const glm::dmat4& P = view.VCDC; // column-major: P[column][row]
-  p.CullClusters =
-    perClusterCulling && P[1][0] == 0.0 && P[0][1] == 0.0 && P[0][3] == 0.0 && P[1][3] == 0.0;
+  const bool usualForm = P[1][0] == 0.0 && P[0][1] == 0.0 && P[0][3] == 0.0 && P[1][3] == 0.0;
+  const bool depthAware = depthBounds && depthBounds->Valid && usualForm &&
+    depthBounds->Width == view.Grid.TilesX * view.Grid.Slices &&
+    depthBounds->Height == view.Grid.TilesY;
+  p.DepthBounds = depthAware ? depthBounds : nullptr;
+  // The depth-aware test is the per-cluster test on cut cells.
+  p.CullClusters = (perClusterCulling || depthAware) && usualForm;
   p.ProjectionX[0] = static_cast<float>(P[0][0]);
   p.ProjectionX[1] = static_cast<float>(P[2][0]);
   p.ProjectionX[2] = static_cast<float>(P[3][0]);

@@ -11,18 +11,21 @@
  *   s  = ComputeSliceIndex(depth)                                            clamped to [0, Z-1]
  *
  * where depth = -z of the fragment in view coordinates (VC: eye at the origin looking
- * down -z). Depth slicing runs between the clustering near and far depths NearVC and
- * FarVC (the pass uses the camera clipping range of the current frame):
+ * down -z). Fragments exist between the camera's near and far depths NearVC and FarVC.
+ * Depth slicing runs between the slicing depths n = GetSlicingNear() and
+ * f = GetSlicingFar(): the camera's range by default, or the range of depths actually
+ * visible (SlicingNearVC, SlicingFarVC: the pass measures them in a depth prepass):
  *
- *   Exponential:  s = floor(Z * ln(depth / NearVC) / ln(FarVC / NearVC))
- *   Linear:       s = floor(Z * (depth - NearVC) / (FarVC - NearVC))
+ *   Exponential:  s = floor(Z * ln(depth / n) / ln(f / n))
+ *   Linear:       s = floor(Z * (depth - n) / (f - n))
  *
- * Both are clamped to [0, Z-1] and monotonic in depth. A depth at or below NearVC
+ * Both are clamped to [0, Z-1] and monotonic in depth. A depth at or below n
  * (including 0 and negative depths: a light that reaches the camera or straddles the
  * near plane) maps to slice 0 without evaluating a logarithm of a non-positive number;
- * depths beyond FarVC land in the last slice. Slice k spans
- * [ComputeSliceBoundary(k), ComputeSliceBoundary(k+1)) and ComputeSliceIndex of a
- * boundary returns exactly k (pinned by unit tests).
+ * depths beyond f land in the last slice. So slice 0 always starts at the camera's NearVC
+ * and the last slice always ends at GetMaxFragmentDepth(), whatever the slicing range. Slice k
+ * spans [ComputeSliceBoundary(k), ComputeSliceBoundary(k+1)) and ComputeSliceIndex of a boundary
+ * returns exactly k (pinned by unit tests).
  *
  * The GLSL function clComputeSliceIndex mirrors ComputeSliceIndex with the values of
  * ComputeSliceShaderParameters.
@@ -54,7 +57,19 @@ struct ClusterGridParams
   int ViewportHeight = 1; ///< pixels
   double NearVC = 0.1;    ///< clustering near depth (> 0)
   double FarVC = 1000.0;  ///< clustering far depth (> NearVC)
+  /// Slicing range; 0 (the default) slices the camera range [NearVC, FarVC].
+  double SlicingNearVC = 0.0;
+  double SlicingFarVC = 0.0;
   SlicingScheme Scheme = SlicingScheme::Exponential;
+
+  double GetSlicingNear() const
+  {
+    return this->SlicingNearVC > 0.0 ? this->SlicingNearVC : this->NearVC;
+  }
+  double GetSlicingFar() const
+  {
+    return this->SlicingFarVC > this->GetSlicingNear() ? this->SlicingFarVC : this->FarVC;
+  }
 
   int GetNumberOfClusters() const { return this->TilesX * this->TilesY * this->Slices; }
 
@@ -94,27 +109,30 @@ inline void SanitizeDepthRange(double& nearVC, double& farVC)
 inline double ComputeSliceCoordinate(double depthVC, const ClusterGridParams& grid)
 {
   const double z = static_cast<double>(grid.Slices);
+  const double n = grid.GetSlicingNear(), f = grid.GetSlicingFar();
   if (grid.Scheme == SlicingScheme::Linear)
   {
-    return z * (depthVC - grid.NearVC) / (grid.FarVC - grid.NearVC);
+    return z * (depthVC - n) / (f - n);
   }
-  if (!(depthVC > grid.NearVC))
+  if (!(depthVC > n))
   {
     return 0.0; // no log of a non-positive (or tiny) number: near slice
   }
-  return z * std::log(depthVC / grid.NearVC) / std::log(grid.FarVC / grid.NearVC);
+  return z * std::log(depthVC / n) / std::log(f / n);
 }
 
 /// Depth where slice k begins (k in [0, Slices]). For assignment, slice 0 also holds
-/// every depth below NearVC and the last slice every depth beyond FarVC.
+/// every depth below the slicing near depth and the last slice every depth beyond the
+/// slicing far depth.
 inline double ComputeSliceBoundary(int k, const ClusterGridParams& grid)
 {
   const double t = static_cast<double>(k) / static_cast<double>(grid.Slices);
+  const double n = grid.GetSlicingNear(), f = grid.GetSlicingFar();
   if (grid.Scheme == SlicingScheme::Linear)
   {
-    return grid.NearVC + t * (grid.FarVC - grid.NearVC);
+    return n + t * (f - n);
   }
-  return grid.NearVC * std::pow(grid.FarVC / grid.NearVC, t);
+  return n * std::pow(f / n, t);
 }
 
 /// Slice index of a view depth, clamped to [0, Slices-1]. NaN maps to slice 0.
@@ -164,7 +182,7 @@ inline int ComputeClusterId(int tx, int ty, int s, const ClusterGridParams& grid
 
 /**
  * Uniform values for the GLSL mirror clComputeSliceIndex(depth):
- *   exponential: s = floor(log(depth * P[0]) * P[1])   (depth <= NearVC -> 0)
+ *   exponential: s = floor(log(depth * P[0]) * P[1])   (depth <= n -> 0)
  *   linear:      s = floor((depth - P[2]) * P[1])
  * P[3] is 0 for exponential and 1 for linear. The values are uploaded as 32-bit floats:
  * they are clamped to the finite float range, so that a degenerate range (far/near
@@ -174,20 +192,12 @@ inline int ComputeClusterId(int tx, int ty, int s, const ClusterGridParams& grid
 inline void ComputeSliceShaderParameters(const ClusterGridParams& grid, double p[4])
 {
   const double floatMax = static_cast<double>(std::numeric_limits<float>::max());
-  if (grid.Scheme == SlicingScheme::Linear)
-  {
-    p[0] = 1.0 / grid.NearVC;
-    p[1] = grid.Slices / (grid.FarVC - grid.NearVC);
-    p[2] = grid.NearVC;
-    p[3] = 1.0;
-  }
-  else
-  {
-    p[0] = 1.0 / grid.NearVC;
-    p[1] = grid.Slices / std::log(grid.FarVC / grid.NearVC);
-    p[2] = grid.NearVC;
-    p[3] = 0.0;
-  }
+  const double n = grid.GetSlicingNear(), f = grid.GetSlicingFar();
+  p[0] = 1.0 / n;
+  p[1] =
+    grid.Scheme == SlicingScheme::Linear ? grid.Slices / (f - n) : grid.Slices / std::log(f / n);
+  p[2] = n;
+  p[3] = grid.Scheme == SlicingScheme::Linear ? 1.0 : 0.0;
   for (int k = 0; k < 3; ++k)
   {
     p[k] = std::isnan(p[k]) ? 0.0 : std::clamp(p[k], -floatMax, floatMax);

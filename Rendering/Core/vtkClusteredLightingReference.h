@@ -19,6 +19,9 @@
  * ClusterGridParams::GetMaxFragmentDepth() as `far`: GL's float clipping lets fragments
  * exist slightly beyond the far plane at large far/near ratios.
  *
+ * Depth-aware clusters (vtkClusteredLightingDepthBounds.h): each cell's depth range is
+ * further cut to the cluster's recorded interval, and a cluster without one is empty.
+ *
  * For speed, each light is first tested only against the cells that its clipped
  * axis-aligned box can touch: the projection of a box in front of the eye lies in the
  * convex hull of its projected corners, so that prefilter is conservative too (and
@@ -27,6 +30,7 @@
 #ifndef vtkClusteredLightingReference_h
 #define vtkClusteredLightingReference_h
 
+#include "vtkClusteredLightingDepthBounds.h"
 #include "vtkClusteredLightingLayout.h"
 #include "vtkClusteredLightingSphereBounds.h"
 
@@ -66,13 +70,23 @@ inline glm::dvec3 UnprojectAtDepth(double ndcX, double ndcY, double depth, const
   return glm::dvec3((r0 * B.y - A.y * r1) / det, (A.x * r1 - r0 * B.x) / det, pz);
 }
 
+/// Cell of cluster (tx, ty, s); with depth-aware bounds, cut to the cluster's depths.
 inline ClusterCell ComputeClusterCell(int tx, int ty, int s, const ClusterGridParams& grid,
-  const glm::dmat4& vcdc, double nearVC, double farVC)
+  const glm::dmat4& vcdc, double nearVC, double farVC, const ClusterDepthBounds* depths = nullptr)
 {
   ClusterCell cell;
-  const double z0 = s == 0 ? nearVC : std::max(ComputeSliceBoundary(s, grid), nearVC);
-  const double z1 =
-    s == grid.Slices - 1 ? farVC : std::min(ComputeSliceBoundary(s + 1, grid), farVC);
+  double z0 = s == 0 ? nearVC : std::max(ComputeSliceBoundary(s, grid), nearVC);
+  double z1 = s == grid.Slices - 1 ? farVC : std::min(ComputeSliceBoundary(s + 1, grid), farVC);
+  if (depths && depths->Valid)
+  {
+    double lo = 0.0, hi = 0.0;
+    if (!depths->GetInterval(tx, ty, s, grid.TilesX, lo, hi))
+    {
+      return cell;
+    }
+    z0 = std::max(z0, lo);
+    z1 = std::min(z1, hi);
+  }
   if (!(z1 > z0))
   {
     return cell;
@@ -187,7 +201,8 @@ struct ReferenceAssignment
 };
 
 inline ReferenceAssignment ComputeReferenceAssignment(const std::vector<ReferenceLight>& lights,
-  const ClusterGridParams& grid, const glm::dmat4& vcdc, double nearVC, double farVC)
+  const ClusterGridParams& grid, const glm::dmat4& vcdc, double nearVC, double farVC,
+  const ClusterDepthBounds* depths = nullptr)
 {
   ReferenceAssignment ref;
   const int n = static_cast<int>(lights.size());
@@ -202,7 +217,7 @@ inline ReferenceAssignment ComputeReferenceAssignment(const std::vector<Referenc
       for (int s = 0; s < grid.Slices; ++s)
       {
         cells[ComputeClusterId(tx, ty, s, grid)] =
-          ComputeClusterCell(tx, ty, s, grid, vcdc, nearVC, farVC);
+          ComputeClusterCell(tx, ty, s, grid, vcdc, nearVC, farVC, depths);
       }
     }
   }

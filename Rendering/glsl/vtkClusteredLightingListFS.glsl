@@ -9,6 +9,11 @@
 // spanned by the 8 corners (x and y are bilinear in NDC and depth). A light whose sphere
 // misses the box, grown by a margin far above float error, cannot reach any fragment the
 // shading pass puts in that cluster.
+//
+// Depth-aware clusters (CL_DEPTH_AWARE): the cell is cut to the depths the cluster's
+// fragments really have (clClusterDepths, from the depth prepass,
+// vtkClusteredLightingDepthBounds.h); a cluster without fragments gets no light.
+//CL_DEPTH_AWARE
 
 uniform ivec4 clGrid;        // tilesX, tilesY, slices, batchRows
 uniform int clCullClusters;  // 0: whole rectangle x slice range
@@ -17,20 +22,24 @@ uniform vec3 clProjectionY;  // (P11, P12, P13)
 uniform vec2 clProjectionW;  // (P32, P33); P30 = P31 = 0
 uniform vec4 clSlicing;      // ComputeSliceShaderParameters
 uniform vec2 clDepthRange;   // camera near depth, deepest fragment (GetMaxFragmentDepth)
+#ifdef CL_DEPTH_AWARE
+uniform sampler2D clClusterDepths; // (lo, hi) per cluster, texel (s * X + tx, ty)
+#endif
 
 flat in uint clBitVSOutput;
 flat in vec4 clSphereVSOutput;
 
 out uvec4 clListOutput;
 
-// Mirrors ComputeSliceBoundary (Rendering/Core/vtkClusteredLightingGrid.h).
+// Mirrors ComputeSliceBoundary (Rendering/Core/vtkClusteredLightingGrid.h); clSlicing.z is
+// the slicing near depth.
 float clSliceBoundary(int k)
 {
   if (clSlicing.w == 0.0)
   {
-    return clDepthRange.x * exp(float(k) / clSlicing.y);
+    return clSlicing.z * exp(float(k) / clSlicing.y);
   }
-  return clDepthRange.x + float(k) / clSlicing.y;
+  return clSlicing.z + float(k) / clSlicing.y;
 }
 
 // View-space coordinate on an axis (row = (Paa, Pa2, Pa3)) for an NDC value and depth.
@@ -43,7 +52,11 @@ float clUnproject(vec3 row, float ndc, float depth)
 
 void main()
 {
+#ifdef CL_DEPTH_AWARE
+  if (clCullClusters != 0)
+#else
   if (clCullClusters != 0 && clSphereVSOutput.w < 1e29)
+#endif
   {
     ivec2 texel = ivec2(gl_FragCoord.xy);
     int inBlock = texel.x % (clGrid.x * clGrid.z);
@@ -52,6 +65,22 @@ void main()
     int ty = texel.y % clGrid.y;
     float z0 = slice == 0 ? clDepthRange.x : max(clSliceBoundary(slice), clDepthRange.x);
     float z1 = slice == clGrid.z - 1 ? clDepthRange.y : min(clSliceBoundary(slice + 1), clDepthRange.y);
+#ifdef CL_DEPTH_AWARE
+    // Slice edges in float may be off by a little: cut only where the recorded depths lie
+    // inside the slice's own range widened by the same relative margin as below.
+    vec2 recorded = texelFetch(clClusterDepths, ivec2(inBlock, ty), 0).xy;
+    if (recorded.x > recorded.y)
+    {
+      discard; // no fragment in this cluster
+    }
+    z0 = max(z0, recorded.x);
+    z1 = min(z1, recorded.y);
+    if (z0 > z1 * (1.0 + 1e-4) + 1e-6)
+    {
+      discard; // the fragments of this tile lie in other slices
+    }
+    z1 = max(z1, z0);
+#endif
     vec2 ndc0 = 2.0 * vec2(tx, ty) / vec2(clGrid.xy) - 1.0;
     vec2 ndc1 = 2.0 * vec2(tx + 1, ty + 1) / vec2(clGrid.xy) - 1.0;
     vec4 xs = vec4(clUnproject(clProjectionX, ndc0.x, z0), clUnproject(clProjectionX, ndc1.x, z0),

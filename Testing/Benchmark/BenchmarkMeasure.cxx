@@ -171,6 +171,8 @@ void Context::ResetPassDefaults()
   p->SetBoundsMethod(vtkClusteredLightingPass::BOUNDS_TANGENT);
   p->SetMortonOrder(true);
   p->SetPerClusterCulling(true);
+  p->SetDepthPrepass(true);
+  p->SetDepthAwareClusters(true);
   p->SetShadingMode(vtkClusteredLightingPass::SHADING_CLUSTERED);
   p->SetDebugView(vtkClusteredLightingPass::DEBUG_NONE);
 }
@@ -285,7 +287,7 @@ Row Context::Measure(const Step& step)
   this->Pass->SetMeasureTimings(clustered);
   row.FirstFrameMs = ClusteredLightingScenes::TimeRender(this->Window); // shaders, assignment
   ClusteredLightingScenes::TimeRender(this->Window);
-  std::vector<double> ms, assign, update, shade;
+  std::vector<double> ms, assign, update, shade, prepass, shaded;
   for (int f = 0; f < step.Frames; ++f)
   {
     if (step.Moving)
@@ -304,6 +306,8 @@ Row Context::Measure(const Step& step)
         this->Pass->GetLastAssignmentUpdated() ? this->Pass->GetLastAssignmentTime() : 0.0);
       update.push_back(this->Pass->GetLastLightUpdateTime());
       shade.push_back(this->Pass->GetLastShadingTime());
+      prepass.push_back(this->Pass->GetLastDepthPrepassTime());
+      shaded.push_back(this->Pass->GetShadedFragmentsPerVisiblePixel());
     }
   }
   if (step.AnimateLights)
@@ -319,6 +323,8 @@ Row Context::Measure(const Step& step)
     row.AssignMs = Median(assign);
     row.LightUpdateMs = Median(update);
     row.ShadeMs = Median(shade);
+    row.PrepassMs = Median(prepass);
+    row.ShadedPerVisible = Median(shaded);
     row.ListMiB = this->Pass->GetListTextureBytes() / 1048576.0;
     row.MasterMiB = this->Pass->GetMasterTextureBytes() / 1048576.0;
     row.LightsMiB = this->Pass->GetLightBufferBytes() / 1048576.0;
@@ -341,11 +347,12 @@ Row Context::Measure(const Step& step)
     this->Renderer->SetPass(this->Pass);
   }
   std::printf("%-6s %-8s %6d %-9s %-9s %-14s %8.1f ms [%7.1f, %7.1f]  assign %6s  lights %6s  "
-              "eval/px %6s reach/px %6s  max err %5s  rmse %7s\n",
+              "eval/px %6s reach/px %6s  max err %5s  rmse %7s  prepass %6s  shaded/px %5s\n",
     row.Scene.c_str(), row.Layout.c_str(), row.Lights, row.Method.c_str(), row.Sweep.c_str(),
     row.Value.c_str(), row.MsMedian, row.MsMin, row.MsMax, Num(row.AssignMs).c_str(),
     Num(row.LightUpdateMs).c_str(), Num(row.Evaluated).c_str(), Num(row.Reached).c_str(),
-    Num(row.MaxError * 255.0).c_str(), Num(row.RMSE * 255.0).c_str());
+    Num(row.MaxError * 255.0).c_str(), Num(row.RMSE * 255.0).c_str(), Num(row.PrepassMs).c_str(),
+    Num(row.ShadedPerVisible).c_str());
   std::fflush(stdout);
   return row;
 }

@@ -44,6 +44,7 @@ struct Row
   double MsMedian = NAN, MsMin = NAN, MsMax = NAN;
   double AssignMs = NAN, LightUpdateMs = NAN, ShadeMs = NAN, FirstFrameMs = NAN;
   double Evaluated = NAN, Reached = NAN;
+  double PrepassMs = NAN, ShadedPerVisible = NAN; ///< depth prepass; fragments shaded per pixel
   double MaxError = NAN, RMSE = NAN, OverOneStep = NAN;
   double ListMiB = NAN, MasterMiB = NAN, LightsMiB = NAN;
   double Cutoff = NAN, Budget = NAN;

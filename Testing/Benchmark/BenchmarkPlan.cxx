@@ -172,6 +172,26 @@ std::vector<Step> MakePlan(const PlanOptions& options)
       plan.push_back(s);
     }
 
+    // The depth prepass and depth-aware clusters (on by default), off one by one at 4,096
+    // uniform lights, on every scene: their gain depends on the scene's depth complexity.
+    auto depthRows = [&]()
+    {
+      Step off = base;
+      off.Sweep = "depth";
+      off.Value = "prepass and depth-aware off";
+      off.Apply = [](vtkClusteredLightingPass* p)
+      {
+        p->SetDepthPrepass(false);
+        p->SetDepthAwareClusters(false);
+      };
+      plan.push_back(off);
+      Step prepassOnly = base;
+      prepassOnly.Sweep = "depth";
+      prepassOnly.Value = "prepass only";
+      prepassOnly.Apply = [](vtkClusteredLightingPass* p) { p->SetDepthAwareClusters(false); };
+      plan.push_back(prepassOnly);
+    };
+    depthRows();
     if (!main)
     {
       continue;

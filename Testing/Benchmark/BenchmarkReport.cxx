@@ -77,6 +77,8 @@ const std::vector<Column>& Columns()
     CL_NUMBER_COLUMN("first_frame_ms", FirstFrameMs),
     CL_NUMBER_COLUMN("evaluated_px", Evaluated),
     CL_NUMBER_COLUMN("reached_px", Reached),
+    CL_NUMBER_COLUMN("prepass_ms", PrepassMs),
+    CL_NUMBER_COLUMN("shaded_per_visible_px", ShadedPerVisible),
     CL_NUMBER_COLUMN("max_error", MaxError),
     CL_NUMBER_COLUMN("rmse", RMSE),
     CL_NUMBER_COLUMN("over_one_step", OverOneStep),
@@ -241,8 +243,8 @@ void WriteMarkdown(const std::vector<Row>& rows, const std::string& path)
   std::ofstream out(path);
   out << "| scene | layout | lights | method | knob | value | ms (median) | [min, max] | "
          "assign ms | evaluated/px | reaching/px | max err (steps) | RMSE (steps) | "
-         "px > 1 step | list MiB |\n";
-  out << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+         "px > 1 step | list MiB | prepass ms | shaded/visible px |\n";
+  out << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const Row& r : rows)
   {
     out << "| " << r.Scene << " | " << r.Layout << " | " << r.Lights << " | " << r.Method << " | "
@@ -251,7 +253,8 @@ void WriteMarkdown(const std::vector<Row>& rows, const std::string& path)
         << " | " << Num(r.Reached, 3) << " | " << Num(r.MaxError * 255.0, 3) << " | "
         << Num(r.RMSE * 255.0, 3) << " | "
         << (std::isnan(r.OverOneStep) ? std::string() : Num(100.0 * r.OverOneStep, 3) + "%")
-        << " | " << Num(r.ListMiB, 3) << " |\n";
+        << " | " << Num(r.ListMiB, 3) << " | " << Num(r.PrepassMs, 3) << " | "
+        << Num(r.ShadedPerVisible, 3) << " |\n";
   }
 }
 

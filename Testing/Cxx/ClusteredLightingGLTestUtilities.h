@@ -90,14 +90,17 @@ inline GLNames TakeGLNameCensus(vtkRenderWindow* rw)
 
 /// GL objects one renderer's assignment holds: 10 (light data and view textures and
 /// buffers, the list and master textures, framebuffers, vertex array), plus the far field's
-/// 7 moment textures while the renderer's lights have a far field.
+/// 7 moment textures while the renderer's lights have a far field, plus the cluster-depth
+/// texture while its clusters are depth-aware.
 constexpr int AssignmentGLObjects = 10;
 constexpr int FarFieldGLObjects = 7;
+constexpr int DepthAwareGLObjects = 1;
 
 /// GL objects per renderer for the lights the pass last rendered.
 inline int GLObjectsPerRenderer(vtkClusteredLightingPass* pass)
 {
-  return AssignmentGLObjects + (pass->GetNumberOfFarFieldLights() > 0 ? FarFieldGLObjects : 0);
+  return AssignmentGLObjects + (pass->GetNumberOfFarFieldLights() > 0 ? FarFieldGLObjects : 0) +
+    (pass->GetDepthAwareClustersUsed() ? DepthAwareGLObjects : 0);
 }
 
 /// The pass's own list of its GL objects (all renderers).

@@ -234,7 +234,7 @@ inline vtkClusteredLighting::AssignmentComparison CheckAssignment(
   }
   const auto ref = vtkClusteredLighting::ComputeReferenceAssignment(
     vtkClusteredLightingInspector::ComputeLightsVC(frame), frame.Grid, frame.VCDC,
-    frame.Grid.NearVC, frame.Grid.GetMaxFragmentDepth());
+    frame.Grid.NearVC, frame.Grid.GetMaxFragmentDepth(), &frame.DepthBounds);
   cmp = vtkClusteredLighting::CompareWithReference(ref, list, master, frame.Layout, frame.Grid);
   std::printf("%s: %llu reference pairs, %llu GPU pairs, false negatives %llu, "
               "false-positive rate %.3f, master mismatches %llu%s%s\n",

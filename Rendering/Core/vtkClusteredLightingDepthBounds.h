@@ -1,0 +1,405 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @file vtkClusteredLightingDepthBounds.h
+ * @brief GL-free depth-aware clusters: the depths each cluster really holds.
+ *
+ * A cluster (tx, ty, s) of the frustum grid (vtkClusteredLightingGrid.h) is a box of
+ * the view volume, but the fragments the shading pass puts in it lie on the visible
+ * surfaces only: a thin sheet inside the box, or nothing at all. After a depth prepass
+ * (opaque geometry, depth only) the pass reads the window depth of its viewport back and
+ * this header turns it into, per cluster, the interval of view depths [lo, hi] that its
+ * fragments can have (Olsson, Billeter and Assarsson, "Clustered Deferred and Forward
+ * Shading", HPG 2012: clusters from the actual samples). The list pass then tests each
+ * light against the cluster's cell cut to that interval, and drops empty clusters.
+ *
+ * Conservative by construction: every fragment the shading pass shades in cluster c has
+ * a view depth inside c's interval.
+ *  - A pixel's window depth w is read as the interval [w - m, w + m]: m covers the
+ *    depth buffer's quantization (24 bits) and VTK's coincident-topology offsets (the
+ *    mappers write gl_FragDepth = gl_FragCoord.z + cOffset / 65000; the pass reads the
+ *    largest |cOffset| of the prepass), then it is mapped to view depth (the map is
+ *    monotonic) and widened by a relative RelativeMargin for float interpolation.
+ *  - The shader finds a fragment's tile from its own projected position and its slice
+ *    in float: a pixel within TileSlack of a tile edge counts in both tiles, and an
+ *    interval is added to every slice it touches after the relative widening.
+ *  - A pixel left at the cleared depth 1 may still hold a fragment exactly on the far
+ *    plane: its tile's last slice includes [depth(1 - m), GetMaxFragmentDepth()].
+ *  - Translucent geometry is not in the opaque depth buffer. With Translucent set, a
+ *    tile's clusters hold every depth from the camera's near plane to the tile's deepest
+ *    opaque depth (or the far plane where the tile shows background): translucent
+ *    fragments are depth-tested against the opaque ones, so none lies deeper.
+ *
+ * The visible range (VisibleNear, VisibleFar: the nearest and deepest opaque pixels)
+ * sets the slicing range (ChooseSlicingRange): slices where the geometry is. Slicing is
+ * only a matter of speed: slice 0 still starts at the camera's near plane and the last
+ * still ends at the far plane.
+ *
+ * The window-to-view map needs VTK's usual projection form, where clip z and w depend
+ * on view z only; for any other form (or no usable pixels) the bounds are not Valid
+ * and the pass uses the whole cells.
+ */
+#ifndef vtkClusteredLightingDepthBounds_h
+#define vtkClusteredLightingDepthBounds_h
+
+#include "vtkClusteredLightingGrid.h"
+
+#include <algorithm> // for std::min, std::max
+#include <cmath>     // for std::floor
+#include <cstddef>   // for std::size_t
+#include <glm/glm.hpp>
+#include <limits> // for std::numeric_limits
+#include <vector> // for std::vector
+
+namespace vtkClusteredLighting
+{
+
+/// Margins of the depth readback.
+struct DepthBoundsOptions
+{
+  /// Window-depth margin: quantization plus the largest coincident offset seen.
+  double WindowMargin = 1.0 / 4194304.0; // 2^-22: four steps of a 24-bit depth buffer
+  double RelativeMargin = 1e-5;          ///< relative widening of each view-depth interval
+  double TileSlack = 1e-3;               ///< in tiles: pixels this close to an edge count twice
+  bool Translucent = false;              ///< translucent geometry is shaded too
+};
+
+/// The largest |cOffset| of VTK's coincident topology as a window-depth margin.
+inline double ComputeWindowMargin(double maxAbsCoincidentOffset)
+{
+  return 1.0 / 4194304.0 + std::abs(maxAbsCoincidentOffset) / 65000.0;
+}
+
+/// True when clip z and w depend on view z only (VTK's perspective and parallel forms).
+inline bool HasDepthOnlyClipZ(const glm::dmat4& vcdc)
+{
+  // column-major: vcdc[column][row]
+  return vcdc[0][2] == 0.0 && vcdc[1][2] == 0.0 && vcdc[0][3] == 0.0 && vcdc[1][3] == 0.0;
+}
+
+/// View depth (-z in VC) of window depth w (glDepthRange 0..1) under `vcdc`.
+inline double ViewDepthFromWindowDepth(double w, const glm::dmat4& vcdc)
+{
+  const double ndc = 2.0 * w - 1.0;
+  const double a = vcdc[2][2], b = vcdc[3][2], c = vcdc[2][3], d = vcdc[3][3];
+  // ndc = (a z + b) / (c z + d)  =>  z = (b - ndc d) / (ndc c - a)
+  return -(b - ndc * d) / (ndc * c - a);
+}
+
+/// Window depth of a view depth (the inverse of ViewDepthFromWindowDepth).
+inline double WindowDepthFromViewDepth(double depth, const glm::dmat4& vcdc)
+{
+  const double z = -depth;
+  const double ndc = (vcdc[2][2] * z + vcdc[3][2]) / (vcdc[2][3] * z + vcdc[3][3]);
+  return 0.5 * ndc + 0.5;
+}
+
+/// A renderer viewport's window depths, row-major from the bottom row.
+struct DepthImage
+{
+  const float* Depth = nullptr;
+  int Width = 0;
+  int Height = 0;
+};
+
+/// Per-cluster view-depth intervals; texel (s * X + tx, ty) of a (X * Z) x Y image.
+struct ClusterDepthBounds
+{
+  bool Valid = false;
+  int Width = 0;            ///< TilesX * Slices
+  int Height = 0;           ///< TilesY
+  std::vector<float> LoHi;  ///< 2 floats per texel; an empty cluster has lo > hi
+  double VisibleNear = 0.0; ///< nearest opaque depth (0 when none is visible)
+  double VisibleFar = 0.0;  ///< deepest opaque depth
+  std::size_t VisiblePixels = 0;
+  std::size_t NonEmptyClusters = 0;
+
+  bool operator==(const ClusterDepthBounds& o) const
+  {
+    return this->Valid == o.Valid && this->Width == o.Width && this->Height == o.Height &&
+      this->LoHi == o.LoHi;
+  }
+  bool operator!=(const ClusterDepthBounds& o) const { return !(*this == o); }
+
+  /// Interval of cluster (tx, ty, s): false when it holds no fragment.
+  bool GetInterval(int tx, int ty, int s, int tilesX, double& lo, double& hi) const
+  {
+    const std::size_t t =
+      static_cast<std::size_t>(ty) * this->Width + static_cast<std::size_t>(s) * tilesX + tx;
+    lo = this->LoHi[2 * t];
+    hi = this->LoHi[2 * t + 1];
+    return lo <= hi;
+  }
+};
+
+/// The nearest and deepest opaque view depths of an image (background excluded).
+inline bool MeasureVisibleRange(
+  const DepthImage& image, const glm::dmat4& vcdc, double& nearest, double& deepest)
+{
+  float wMin = 2.0f, wMax = -1.0f;
+  const std::size_t n = static_cast<std::size_t>(image.Width) * image.Height;
+  for (std::size_t p = 0; p < n; ++p)
+  {
+    const float w = image.Depth[p];
+    if (w < 1.0f)
+    {
+      wMin = std::min(wMin, w);
+      wMax = std::max(wMax, w);
+    }
+  }
+  if (!(wMin <= wMax) || !HasDepthOnlyClipZ(vcdc))
+  {
+    return false;
+  }
+  nearest = ViewDepthFromWindowDepth(wMin, vcdc);
+  deepest = ViewDepthFromWindowDepth(wMax, vcdc);
+  return nearest > 0.0 && deepest >= nearest;
+}
+
+/**
+ * Slices where the geometry is: the slicing range becomes the visible range (grown by 1%,
+ * kept inside the camera range and at least 1e-3 of its near depth thick). Without a
+ * visible range the camera's range stays.
+ */
+inline void ChooseSlicingRange(
+  bool visible, double nearest, double deepest, ClusterGridParams& grid)
+{
+  grid.SlicingNearVC = 0.0;
+  grid.SlicingFarVC = 0.0;
+  if (!visible)
+  {
+    return;
+  }
+  const double n = std::max(grid.NearVC, nearest * 0.99);
+  double f = std::min(grid.FarVC, deepest * 1.01);
+  f = std::max(f, n * 1.001);
+  if (n >= grid.FarVC || !(f > n))
+  {
+    return;
+  }
+  grid.SlicingNearVC = n;
+  grid.SlicingFarVC = f;
+}
+
+namespace Detail
+{
+/// Tile (and a second tile when the pixel centre is within `slack` of an edge) of a pixel.
+struct PixelTiles
+{
+  int First = 0;
+  int Second = -1;
+};
+
+inline std::vector<PixelTiles> ComputePixelTiles(int pixels, int tiles, double slack)
+{
+  std::vector<PixelTiles> out(static_cast<std::size_t>(pixels));
+  for (int p = 0; p < pixels; ++p)
+  {
+    const double u = (p + 0.5) / pixels * tiles;
+    const int t = std::clamp(static_cast<int>(std::floor(u)), 0, tiles - 1);
+    out[p].First = t;
+    const double f = u - std::floor(u);
+    if (f < slack && t > 0)
+    {
+      out[p].Second = t - 1;
+    }
+    else if (f > 1.0 - slack && t < tiles - 1)
+    {
+      out[p].Second = t + 1;
+    }
+  }
+  return out;
+}
+} // namespace Detail
+
+/**
+ * Per-cluster depth intervals of one image for `grid` (its slicing range already chosen).
+ * Rows [rowBegin, rowEnd) of tiles only, so that callers may split the work; call
+ * InitializeClusterDepthBounds first and FinishClusterDepthBounds after.
+ */
+inline void InitializeClusterDepthBounds(const ClusterGridParams& grid, ClusterDepthBounds& out)
+{
+  out.Width = grid.TilesX * grid.Slices;
+  out.Height = grid.TilesY;
+  out.LoHi.assign(2 * static_cast<std::size_t>(out.Width) * out.Height, 0.0f);
+  for (std::size_t t = 0; t < out.LoHi.size(); t += 2)
+  {
+    out.LoHi[t] = std::numeric_limits<float>::max();
+    out.LoHi[t + 1] = -std::numeric_limits<float>::max();
+  }
+}
+
+inline void ComputeClusterDepthBoundsRows(const DepthImage& image, const glm::dmat4& vcdc,
+  const ClusterGridParams& grid, const DepthBoundsOptions& options, int tileRowBegin,
+  int tileRowEnd, ClusterDepthBounds& out)
+{
+  const int X = grid.TilesX, Z = grid.Slices;
+  const std::vector<Detail::PixelTiles> columns =
+    Detail::ComputePixelTiles(image.Width, X, options.TileSlack);
+  const std::vector<Detail::PixelTiles> rows =
+    Detail::ComputePixelTiles(image.Height, grid.TilesY, options.TileSlack);
+  std::vector<double> boundary(static_cast<std::size_t>(Z) + 1);
+  for (int k = 0; k <= Z; ++k)
+  {
+    boundary[k] = ComputeSliceBoundary(k, grid);
+  }
+  const double nearest = grid.NearVC;
+  const double deepest = grid.GetMaxFragmentDepth();
+  const double m = options.WindowMargin;
+  const double rel = options.RelativeMargin;
+  auto toView = [&](double w)
+  {
+    if (w <= 0.0)
+    {
+      return nearest;
+    }
+    if (w >= 1.0)
+    {
+      return deepest;
+    }
+    const double d = ViewDepthFromWindowDepth(w, vcdc);
+    return d > 0.0 ? std::min(d, deepest) : nearest;
+  };
+  // Slice of a depth (boundary(s) <= d < boundary(s+1), clamped), from a cached guess.
+  auto sliceOf = [&](double d, int guess)
+  {
+    int s = guess;
+    while (s > 0 && d < boundary[s])
+    {
+      --s;
+    }
+    while (s < Z - 1 && d >= boundary[s + 1])
+    {
+      ++s;
+    }
+    return s;
+  };
+  // Texel of cluster (tx, ty, s) in the (X * Z) x Y image.
+  auto texel = [&](int tx, int ty, int s)
+  { return static_cast<std::size_t>(ty) * out.Width + static_cast<std::size_t>(s) * X + tx; };
+  auto grow = [&](std::size_t t, const float interval[2])
+  {
+    float* b = &out.LoHi[2 * t];
+    b[0] = std::min(b[0], interval[0]);
+    b[1] = std::max(b[1], interval[1]);
+  };
+  std::vector<float> tileDeepest(static_cast<std::size_t>(X));
+  std::vector<char> tileBackground(static_cast<std::size_t>(X));
+  for (int ty = tileRowBegin; ty < tileRowEnd; ++ty)
+  {
+    std::fill(tileDeepest.begin(), tileDeepest.end(), 0.0f);
+    std::fill(tileBackground.begin(), tileBackground.end(), 0);
+    for (int y = 0; y < image.Height; ++y)
+    {
+      if (rows[y].First != ty && rows[y].Second != ty)
+      {
+        continue;
+      }
+      const float* line = image.Depth + static_cast<std::size_t>(y) * image.Width;
+      int guess = 0;
+      for (int x = 0; x < image.Width; ++x)
+      {
+        const double w = line[x];
+        const Detail::PixelTiles& c = columns[x];
+        if (!(w < 1.0))
+        {
+          tileBackground[c.First] = 1;
+          if (c.Second >= 0)
+          {
+            tileBackground[c.Second] = 1;
+          }
+          continue;
+        }
+        const double lo = toView(w - m) * (1.0 - rel);
+        const double hi = std::min(toView(w + m) * (1.0 + rel), deepest);
+        const float interval[2] = { static_cast<float>(lo) * (1.0f - 1e-6f),
+          static_cast<float>(hi) * (1.0f + 1e-6f) };
+        tileDeepest[c.First] = std::max(tileDeepest[c.First], interval[1]);
+        if (c.Second >= 0)
+        {
+          tileDeepest[c.Second] = std::max(tileDeepest[c.Second], interval[1]);
+        }
+        if (options.Translucent)
+        {
+          continue;
+        }
+        const int s0 = sliceOf(lo, guess);
+        const int s1 = sliceOf(hi, s0);
+        guess = s0;
+        for (int s = s0; s <= s1; ++s)
+        {
+          grow(texel(c.First, ty, s), interval);
+          if (c.Second >= 0)
+          {
+            grow(texel(c.Second, ty, s), interval);
+          }
+        }
+      }
+    }
+    const float farLo = static_cast<float>(toView(1.0 - m) * (1.0 - rel));
+    for (int tx = 0; tx < X; ++tx)
+    {
+      if (options.Translucent)
+      {
+        // Anything from the near plane to the deepest opaque depth (or the far plane).
+        const float interval[2] = { static_cast<float>(nearest),
+          tileBackground[tx] ? static_cast<float>(deepest) : tileDeepest[tx] };
+        if (interval[1] > 0.0f)
+        {
+          const int s1 = sliceOf(interval[1], Z - 1);
+          for (int s = 0; s <= s1; ++s)
+          {
+            grow(texel(tx, ty, s), interval);
+          }
+        }
+      }
+      else if (tileBackground[tx])
+      {
+        const float interval[2] = { farLo, static_cast<float>(deepest) };
+        grow(texel(tx, ty, Z - 1), interval);
+      }
+    }
+  }
+}
+
+inline void FinishClusterDepthBounds(
+  const DepthImage& image, const glm::dmat4& vcdc, ClusterDepthBounds& out)
+{
+  out.NonEmptyClusters = 0;
+  for (std::size_t t = 0; t < out.LoHi.size(); t += 2)
+  {
+    out.NonEmptyClusters += out.LoHi[t] <= out.LoHi[t + 1] ? 1 : 0;
+  }
+  std::size_t visible = 0;
+  const std::size_t n = static_cast<std::size_t>(image.Width) * image.Height;
+  for (std::size_t p = 0; p < n; ++p)
+  {
+    visible += image.Depth[p] < 1.0f ? 1 : 0;
+  }
+  out.VisiblePixels = visible;
+  double nearest = 0.0, deepest = 0.0;
+  if (MeasureVisibleRange(image, vcdc, nearest, deepest))
+  {
+    out.VisibleNear = nearest;
+    out.VisibleFar = deepest;
+  }
+  out.Valid = true;
+}
+
+/// All of the above in one call (single-threaded).
+inline ClusterDepthBounds ComputeClusterDepthBounds(const DepthImage& image, const glm::dmat4& vcdc,
+  const ClusterGridParams& grid, const DepthBoundsOptions& options)
+{
+  ClusterDepthBounds out;
+  if (!HasDepthOnlyClipZ(vcdc) || image.Width < 1 || image.Height < 1 || !image.Depth)
+  {
+    return out;
+  }
+  InitializeClusterDepthBounds(grid, out);
+  ComputeClusterDepthBoundsRows(image, vcdc, grid, options, 0, grid.TilesY, out);
+  FinishClusterDepthBounds(image, vcdc, out);
+  return out;
+}
+
+} // namespace vtkClusteredLighting
+
+#endif

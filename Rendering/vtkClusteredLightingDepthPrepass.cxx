@@ -1,0 +1,237 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "vtkClusteredLightingDepthPrepass.h"
+
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLState.h"
+#include "vtkProp.h"
+#include "vtkRenderState.h"
+#include "vtkRenderer.h"
+#include "vtkShader.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureUnitManager.h"
+#include "vtk_glew.h" // for GL calls
+
+#include <algorithm> // for std::max
+#include <chrono>    // for the render time
+#include <cmath>     // for std::abs
+#include <vector>    // for std::vector
+
+namespace
+{
+/// Number of non-overlapping occurrences of `what` in `text`.
+std::size_t Count(const std::string& text, const std::string& what)
+{
+  std::size_t n = 0;
+  for (std::size_t p = text.find(what); p != std::string::npos; p = text.find(what, p + 1))
+  {
+    ++n;
+  }
+  return n;
+}
+}
+
+//------------------------------------------------------------------------------
+int vtkClusteredLightingDepthPrepass::Render(const vtkRenderState* s, vtkOpenGLRenderWindow* rw,
+  const std::function<void()>& pre, const std::function<void()>& post, bool finish)
+{
+  if (finish)
+  {
+    glFinish();
+  }
+  const auto t0 = std::chrono::steady_clock::now();
+  vtkRenderer* ren = s->GetRenderer();
+  vtkOpenGLState* state = rw->GetState();
+  this->MaxCoincidentOffset = 0.0;
+  this->UnknownDepthWrites = false;
+
+  // The viewport and scissor as vtkCameraPass sets them.
+  int size[2] = { 0, 0 };
+  int origin[2] = { 0, 0 };
+  if (auto* fbo = vtkOpenGLFramebufferObject::SafeDownCast(s->GetFrameBuffer()))
+  {
+    fbo->GetLastSize(size);
+  }
+  else
+  {
+    ren->GetTiledSizeAndOrigin(size, size + 1, origin, origin + 1);
+  }
+  this->Size[0] = size[0];
+  this->Size[1] = size[1];
+  this->Origin[0] = origin[0];
+  this->Origin[1] = origin[1];
+
+  vtkTextureUnitManager* units = state->GetTextureUnitManager();
+  this->Units.clear();
+  for (int k = 0; k < 16; ++k)
+  {
+    const int unit = units->Allocate();
+    if (unit < 0)
+    {
+      break;
+    }
+    this->Units.push_back(unit);
+  }
+
+  // vtkOpenGLState does not track the vertex array binding (the mappers' VAOs bind 0 when
+  // they release): restore the application's.
+  GLint vertexArray = 0;
+  glGetIntegerv(GL_VERTEX_ARRAY_BINDING, &vertexArray);
+  int rendered = 0;
+  {
+    vtkOpenGLState::ScopedglViewport savedViewport(state);
+    vtkOpenGLState::ScopedglScissor savedScissor(state);
+    vtkOpenGLState::ScopedglEnableDisable savedScissorTest(state, GL_SCISSOR_TEST);
+    vtkOpenGLState::ScopedglColorMask savedColorMask(state);
+    vtkOpenGLState::ScopedglDepthMask savedDepthMask(state);
+    state->vtkglViewport(origin[0], origin[1], size[0], size[1]);
+    state->vtkglEnable(GL_SCISSOR_TEST);
+    state->vtkglScissor(origin[0], origin[1], size[0], size[1]);
+    state->vtkglDepthMask(GL_TRUE);
+    if (rw->GetErase() && ren->GetErase() && !ren->GetPreserveDepthBuffer())
+    {
+      state->vtkglClearDepth(1.0);
+      state->vtkglClear(GL_DEPTH_BUFFER_BIT);
+    }
+    state->vtkglEnable(GL_DEPTH_TEST);
+    state->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+
+    this->Rendering = true;
+    pre();
+    for (int i = 0; i < s->GetPropArrayCount(); ++i)
+    {
+      vtkProp* prop = s->GetPropArray()[i];
+      if (prop->GetVisibility())
+      {
+        rendered += prop->RenderOpaqueGeometry(ren);
+      }
+    }
+    post();
+    this->Rendering = false;
+  }
+  glBindVertexArray(static_cast<GLuint>(vertexArray));
+  if (finish)
+  {
+    glFinish();
+  }
+  for (int unit : this->Units)
+  {
+    units->Free(unit);
+  }
+  this->Units.clear();
+  this->RenderTime =
+    std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  return rendered;
+}
+
+//------------------------------------------------------------------------------
+bool vtkClusteredLightingDepthPrepass::ReadDepth(vtkOpenGLRenderWindow* rw)
+{
+  const auto t0 = std::chrono::steady_clock::now();
+  this->Problem.clear();
+  this->Depth.clear();
+  vtkOpenGLState* state = rw->GetState();
+  GLint samples = 0;
+  glGetIntegerv(GL_SAMPLE_BUFFERS, &samples);
+  if (samples > 0)
+  {
+    this->Problem = "the framebuffer is multisampled (its depth cannot be read back)";
+    return false;
+  }
+  if (this->Size[0] < 1 || this->Size[1] < 1)
+  {
+    this->Problem = "the viewport is empty";
+    return false;
+  }
+  while (glGetError() != GL_NO_ERROR)
+  {
+  }
+  unsigned int drawBinding = 0, drawBuffer = 0;
+  state->GetCurrentDrawFramebufferState(drawBinding, drawBuffer);
+  this->Depth.resize(static_cast<std::size_t>(this->Size[0]) * this->Size[1]);
+  state->PushReadFramebufferBinding();
+  state->vtkglBindFramebuffer(GL_READ_FRAMEBUFFER, drawBinding);
+  state->vtkglPixelStorei(GL_PACK_ALIGNMENT, 4);
+  // A packed depth-stencil read is a plain copy for the usual D24S8 buffer (a float read
+  // converts every pixel in the driver, several times slower on llvmpipe); the float read
+  // is the fallback for buffers without stencil.
+  bool ok = false;
+  {
+    std::vector<GLuint> packed(this->Depth.size());
+    glReadPixels(this->Origin[0], this->Origin[1], this->Size[0], this->Size[1], GL_DEPTH_STENCIL,
+      GL_UNSIGNED_INT_24_8, packed.data());
+    ok = glGetError() == GL_NO_ERROR;
+    if (ok)
+    {
+      const float scale = 1.0f / 16777215.0f;
+      for (std::size_t p = 0; p < packed.size(); ++p)
+      {
+        const GLuint z = packed[p] >> 8;
+        this->Depth[p] = z == 0xFFFFFFu ? 1.0f : static_cast<float>(z) * scale;
+      }
+    }
+  }
+  if (!ok)
+  {
+    glReadPixels(this->Origin[0], this->Origin[1], this->Size[0], this->Size[1], GL_DEPTH_COMPONENT,
+      GL_FLOAT, this->Depth.data());
+    ok = glGetError() == GL_NO_ERROR;
+  }
+  state->PopReadFramebufferBinding();
+  if (!ok)
+  {
+    this->Problem = "reading the depth buffer failed";
+    this->Depth.clear();
+  }
+  this->RenderTime +=
+    std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  return ok;
+}
+
+//------------------------------------------------------------------------------
+vtkClusteredLighting::DepthImage vtkClusteredLightingDepthPrepass::GetImage() const
+{
+  vtkClusteredLighting::DepthImage image;
+  if (!this->Depth.empty())
+  {
+    image.Depth = this->Depth.data();
+    image.Width = this->Size[0];
+    image.Height = this->Size[1];
+  }
+  return image;
+}
+
+//------------------------------------------------------------------------------
+void vtkClusteredLightingDepthPrepass::NoteProgram(vtkShaderProgram* program)
+{
+  if (!program || !program->GetFragmentShader())
+  {
+    return;
+  }
+  const std::string fs = program->GetFragmentShader()->GetSource();
+  const std::size_t writes = Count(fs, "gl_FragDepth =");
+  if (writes == 0)
+  {
+    return;
+  }
+  // VTK 9.1's coincident-topology offset (vtkOpenGLPolyDataMapper::ReplaceShaderCoincidentOffset).
+  const std::size_t offsets = Count(fs, "gl_FragDepth = gl_FragCoord.z + 1.0*cOffset/65000;");
+  if (offsets != writes)
+  {
+    this->UnknownDepthWrites = true;
+    return;
+  }
+  const GLint location = glGetUniformLocation(static_cast<GLuint>(program->GetHandle()), "cOffset");
+  if (location >= 0)
+  {
+    GLfloat value = 0.0f;
+    glGetUniformfv(static_cast<GLuint>(program->GetHandle()), location, &value);
+    this->MaxCoincidentOffset = std::max(this->MaxCoincidentOffset, std::abs(double(value)));
+  }
+}
+
+//------------------------------------------------------------------------------
+int vtkClusteredLightingDepthPrepass::GetSamplerUnit(int index) const
+{
+  return index >= 0 && index < static_cast<int>(this->Units.size()) ? this->Units[index] : -1;
+}

@@ -1,0 +1,304 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The depth prepass and depth-aware clusters (issue 12), against the pass without them:
+//  - lights with an explicit radius and windowed falloff (each light's contribution is
+//    exactly 0 outside its radius, so dropping a light that does not reach changes no
+//    pixel): the image with depth-aware clusters equals the image without them, bit for
+//    bit, and the GPU lists have zero false negatives against the double-precision
+//    reference cut to the recorded depths;
+//  - every visible pixel's exact view depth (read back after the frame and unprojected)
+//    lies inside the recorded interval of the cluster the shader computes for it;
+//  - in the hard placements: occluders, a parallel projection, a camera inside lights, a
+//    scene far from the origin, translucent geometry, VTK's coincident-topology offsets
+//    (edges on a surface), two viewports;
+//  - the culling helps: fewer lights evaluated per pixel than without (a count that could
+//    fail), most clusters empty, and the slices span the visible depths;
+//  - the prepass shades each visible pixel once: fragments passing the depth test per
+//    visible pixel are 1.0 with it, more than 1 without it in an occluding scene;
+//  - a mapper that writes its own depth (points as spheres) turns depth-aware clusters
+//    off with one warning, and the image stays correct.
+#include "ClusteredLightingTestUtilities.h"
+#include "vtkClusteredLightingInspector.h"
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkClusteredLightSet.h"
+#include "vtkClusteredLightingPass.h"
+#include "vtkMapper.h"
+#include "vtkNew.h"
+#include "vtkPointSource.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkSphereSource.h"
+
+#include <cstdio>
+#include <random>
+#include <string>
+
+namespace
+{
+int Failed = 0;
+
+void Check(bool ok, const std::string& what)
+{
+  std::printf("%s: %s\n", ok ? "ok" : "FAILED", what.c_str());
+  Failed += ok ? 0 : 1;
+}
+
+/// n lights with an explicit radius in a box around AddTestScene (shifted by `offset`).
+void MakeLights(vtkClusteredLightSet* lights, int n, double radius, const double offset[3])
+{
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  lights->SetNumberOfLights(n);
+  for (int i = 0; i < n; ++i)
+  {
+    lights->SetPosition(i, offset[0] - 3.0 + 6.0 * u(rng), offset[1] - 0.9 + 2.7 * u(rng),
+      offset[2] - 3.0 + 6.0 * u(rng));
+    lights->SetColor(i, 0.3 + 0.7 * u(rng), 0.3 + 0.7 * u(rng), 0.3 + 0.7 * u(rng));
+    lights->SetIntensity(i, 0.6);
+    lights->SetRadius(i, radius);
+  }
+}
+
+/// Every visible pixel's exact depth inside its cluster's recorded interval.
+int CountPixelsOutside(vtkClusteredLightingPass* pass, vtkRenderWindow* rw, vtkRenderer* ren)
+{
+  vtkClusteredLightingInspector inspect(pass);
+  const vtkClusteredLightingAssignmentSnapshot frame = inspect.GetFrame(ren);
+  if (!frame.DepthBounds.Valid)
+  {
+    return -1;
+  }
+  int w = 0, h = 0;
+  const std::vector<float> z = ClusteredLightingTest::CaptureDepth(rw, ren, w, h);
+  const glm::dmat4 inverse = glm::inverse(frame.VCDC);
+  const vtkClusteredLighting::ClusterGridParams& g = frame.Grid;
+  int outside = 0;
+  for (int y = 0; y < h; ++y)
+  {
+    for (int x = 0; x < w; ++x)
+    {
+      const float d = z[static_cast<std::size_t>(y) * w + x];
+      if (!(d < 1.0f))
+      {
+        continue;
+      }
+      const glm::dvec3 p = ClusteredLightingTest::UnprojectPixel(x, y, d, w, h, inverse);
+      const double depth = -p.z;
+      const int tx = vtkClusteredLighting::ComputeTileIndex(x + 0.5, w, g.TilesX);
+      const int ty = vtkClusteredLighting::ComputeTileIndex(y + 0.5, h, g.TilesY);
+      const int s = vtkClusteredLighting::ComputeSliceIndex(depth, g);
+      double lo = 0.0, hi = 0.0;
+      if (!frame.DepthBounds.GetInterval(tx, ty, s, g.TilesX, lo, hi) || depth < lo || depth > hi)
+      {
+        ++outside;
+      }
+    }
+  }
+  return outside;
+}
+
+/// Renders with and without depth-aware clusters and the prepass; checks the images are
+/// identical, the assignment has no false negative, every pixel lies in its cluster, and
+/// returns (evaluated per pixel with, without).
+void CheckCase(const std::string& what, vtkRenderWindow* rw, vtkRenderer* ren,
+  vtkClusteredLightingPass* pass, bool expectDepthAware = true, bool translucent = false)
+{
+  pass->SetDepthPrepass(false);
+  pass->SetDepthAwareClusters(false);
+  pass->SetDebugView(vtkClusteredLightingPass::DEBUG_EVALUATED_COUNT);
+  rw->Render();
+  const double evaluatedOff = pass->GetMeanLightsEvaluatedPerPixel();
+  pass->SetDebugView(vtkClusteredLightingPass::DEBUG_NONE);
+  rw->Render();
+  const std::vector<float> off = ClusteredLightingTest::CapturePixels(rw);
+  Check(!pass->GetDepthPrepassUsed() && !pass->GetDepthAwareClustersUsed(),
+    what + ": both off renders neither");
+
+  pass->SetDepthPrepass(true);
+  pass->SetDepthAwareClusters(true);
+  rw->Render();
+  const std::vector<float> on = ClusteredLightingTest::CapturePixels(rw);
+  Check(pass->GetDepthPrepassUsed(), what + ": the prepass ran");
+  Check(pass->GetDepthAwareClustersUsed() == expectDepthAware,
+    what + (expectDepthAware ? ": depth-aware clusters in use" : ": depth-aware clusters off"));
+  const auto cmp = ClusteredLightingTest::CompareImages(on, off);
+  ClusteredLightingTest::PrintComparison((what + ": depth-aware vs off").c_str(), cmp);
+  Check(cmp.MaxAbsError == 0.0, what + ": the image is the same, bit for bit");
+  const auto assignment = ClusteredLightingTest::CheckAssignment(pass, ren, what.c_str());
+  Check(assignment.FalseNegatives == 0 && assignment.MasterMismatches == 0,
+    what + ": zero false negatives against the reference");
+  if (expectDepthAware)
+  {
+    const int outside = CountPixelsOutside(pass, rw, ren);
+    Check(outside == 0,
+      what + ": every visible pixel inside its cluster's depths (" + std::to_string(outside) +
+        " outside)");
+    pass->SetDebugView(vtkClusteredLightingPass::DEBUG_EVALUATED_COUNT);
+    rw->Render();
+    const double evaluatedOn = pass->GetMeanLightsEvaluatedPerPixel();
+    pass->SetDebugView(vtkClusteredLightingPass::DEBUG_NONE);
+    std::printf("%s: evaluated per pixel %.2f depth-aware, %.2f without; non-empty clusters "
+                "%.1f%%, visible depths %.3g to %.3g, slices %.3g to %.3g\n",
+      what.c_str(), evaluatedOn, evaluatedOff, 100.0 * pass->GetNonEmptyClusterFraction(),
+      pass->GetVisibleDepthRange()[0], pass->GetVisibleDepthRange()[1],
+      pass->GetSlicingRangeInUse()[0], pass->GetSlicingRangeInUse()[1]);
+    Check(evaluatedOn < evaluatedOff, what + ": fewer lights evaluated per pixel");
+    // With translucent geometry every cluster in front of the opaque surfaces stays.
+    Check(translucent ? pass->GetNonEmptyClusterFraction() < 0.9
+                      : pass->GetNonEmptyClusterFraction() < 0.2,
+      what +
+        (translucent ? ": the clusters behind the opaque surfaces are empty"
+                     : ": most clusters are empty"));
+  }
+}
+}
+
+int TestClusteredLightingDepthAware(int, char*[])
+{
+  vtkNew<vtkRenderWindow> rw;
+  vtkNew<vtkRenderer> ren;
+  ClusteredLightingTest::SetUpTestScene(rw, ren, 300, 200);
+  vtkNew<vtkClusteredLightingPass> pass;
+  pass->SetFalloff(vtkClusteredLightingPass::FALLOFF_WINDOWED);
+  vtkNew<vtkClusteredLightSet> lights;
+  const double origin[3] = { 0.0, 0.0, 0.0 };
+  MakeLights(lights, 600, 0.6, origin);
+  pass->AddLightSet(lights);
+  ren->SetPass(pass);
+  vtkNew<ClusteredLightingTest::MessageCollector> messages;
+  messages->Watch(pass);
+
+  // 1. The usual scene: a sphere occluding a floor.
+  CheckCase("occluding sphere", rw, ren, pass);
+
+  // 2. Fragments passing the depth test per visible pixel, with and without the prepass.
+  pass->SetMeasureTimings(true);
+  pass->SetDepthPrepass(false);
+  pass->SetDepthAwareClusters(false);
+  rw->Render();
+  const double shadedOff = pass->GetShadedFragmentsPerVisiblePixel();
+  pass->SetDepthPrepass(true);
+  pass->SetDepthAwareClusters(true);
+  rw->Render();
+  const double shadedOn = pass->GetShadedFragmentsPerVisiblePixel();
+  pass->SetMeasureTimings(false);
+  std::printf("fragments passing the depth test per visible pixel: %.4f with the prepass, "
+              "%.4f without\n",
+    shadedOn, shadedOff);
+  Check(shadedOn > 0.999 && shadedOn < 1.001, "the prepass shades each visible pixel once");
+  Check(shadedOff > shadedOn, "without it hidden fragments are shaded too");
+
+  // 3. Camera inside lights, looking at the sphere from close by.
+  ren->GetActiveCamera()->SetPosition(0.3, 0.4, 2.2);
+  ren->GetActiveCamera()->SetFocalPoint(0.0, 0.0, 0.0);
+  ren->ResetCameraClippingRange();
+  CheckCase("camera inside lights", rw, ren, pass);
+
+  // 4. Parallel projection.
+  ren->GetActiveCamera()->SetPosition(0.5, 2.5, 7.0);
+  ren->GetActiveCamera()->SetFocalPoint(0.0, -0.3, 0.0);
+  ren->GetActiveCamera()->ParallelProjectionOn();
+  ren->GetActiveCamera()->SetParallelScale(3.0);
+  ren->ResetCameraClippingRange();
+  CheckCase("parallel projection", rw, ren, pass);
+  ren->GetActiveCamera()->ParallelProjectionOff();
+
+  // 5. Coincident topology: edges drawn on the surfaces, polygons offset back.
+  vtkMapper::SetResolveCoincidentTopologyToPolygonOffset();
+  vtkMapper::SetResolveCoincidentTopologyPolygonOffsetParameters(2.0, 4.0);
+  vtkActorCollection* actors = ren->GetActors();
+  actors->InitTraversal();
+  while (vtkActor* a = actors->GetNextActor())
+  {
+    a->GetProperty()->EdgeVisibilityOn();
+  }
+  ren->ResetCameraClippingRange();
+  CheckCase("edges on surfaces, polygon offset", rw, ren, pass);
+  actors->InitTraversal();
+  while (vtkActor* a = actors->GetNextActor())
+  {
+    a->GetProperty()->EdgeVisibilityOff();
+  }
+  vtkMapper::SetResolveCoincidentTopologyToOff();
+
+  // 6. Translucent geometry in front of the opaque.
+  vtkNew<vtkSphereSource> glassSource;
+  glassSource->SetCenter(-1.2, 0.2, 1.8);
+  glassSource->SetRadius(0.7);
+  vtkNew<vtkPolyDataMapper> glassMapper;
+  glassMapper->SetInputConnection(glassSource->GetOutputPort());
+  vtkNew<vtkActor> glass;
+  glass->SetMapper(glassMapper);
+  glass->GetProperty()->SetOpacity(0.4);
+  ren->AddActor(glass);
+  ren->ResetCameraClippingRange();
+  CheckCase("translucent sphere", rw, ren, pass, true, true);
+  ren->RemoveActor(glass);
+
+  // 7. A scene far from the origin (the lights and geometry moved by 1e5).
+  const double far[3] = { 1e5, -2e5, 1e5 };
+  actors->InitTraversal();
+  while (vtkActor* a = actors->GetNextActor())
+  {
+    a->SetPosition(far[0], far[1], far[2]);
+  }
+  MakeLights(lights, 600, 0.6, far);
+  ren->GetActiveCamera()->SetPosition(far[0] + 0.5, far[1] + 2.5, far[2] + 7.0);
+  ren->GetActiveCamera()->SetFocalPoint(far[0], far[1] - 0.3, far[2]);
+  ren->ResetCameraClippingRange();
+  CheckCase("scene far from the origin", rw, ren, pass);
+  actors->InitTraversal();
+  while (vtkActor* a = actors->GetNextActor())
+  {
+    a->SetPosition(0, 0, 0);
+  }
+  MakeLights(lights, 600, 0.6, origin);
+  ren->GetActiveCamera()->SetPosition(0.5, 2.5, 7.0);
+  ren->GetActiveCamera()->SetFocalPoint(0.0, -0.3, 0.0);
+  ren->ResetCameraClippingRange();
+
+  // 8. Two viewports, each with its own assignment.
+  vtkNew<vtkRenderer> right;
+  ren->SetViewport(0.0, 0.0, 0.5, 1.0);
+  right->SetViewport(0.5, 0.0, 1.0, 1.0);
+  right->SetBackground(0.05, 0.05, 0.08);
+  ClusteredLightingTest::AddTestScene(right);
+  right->GetActiveCamera()->SetPosition(-3.0, 1.5, 5.0);
+  right->GetActiveCamera()->SetFocalPoint(0.0, -0.3, 0.0);
+  right->ResetCameraClippingRange();
+  right->SetPass(pass);
+  rw->AddRenderer(right);
+  CheckCase("two viewports (left)", rw, ren, pass);
+  const auto rightCheck = ClusteredLightingTest::CheckAssignment(pass, right, "right viewport");
+  Check(rightCheck.FalseNegatives == 0, "two viewports (right): zero false negatives");
+  Check(CountPixelsOutside(pass, rw, right) == 0, "two viewports (right): pixels inside");
+  rw->RemoveRenderer(right);
+  ren->SetViewport(0.0, 0.0, 1.0, 1.0);
+
+  // 9. A mapper that writes its own depth: depth-aware clusters off, said once.
+  Check(messages->Warnings.empty(), "no warning so far");
+  vtkNew<vtkPointSource> points;
+  points->SetNumberOfPoints(30);
+  points->SetRadius(1.5);
+  vtkNew<vtkPolyDataMapper> pointMapper;
+  pointMapper->SetInputConnection(points->GetOutputPort());
+  vtkNew<vtkActor> spheres;
+  spheres->SetMapper(pointMapper);
+  spheres->GetProperty()->SetRepresentationToPoints();
+  spheres->GetProperty()->RenderPointsAsSpheresOn();
+  spheres->GetProperty()->SetPointSize(12);
+  spheres->SetPosition(0.0, 1.5, 0.0);
+  ren->AddActor(spheres);
+  ren->ResetCameraClippingRange();
+  CheckCase("points as spheres", rw, ren, pass, false);
+  rw->Render();
+  Check(messages->Warnings.size() == 1 &&
+      messages->Warnings[0].find("writes its own fragment depth") != std::string::npos,
+    "one warning names the impostor mapper");
+  ren->RemoveActor(spheres);
+  Check(messages->Errors.empty(), "no error");
+  return Failed == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}

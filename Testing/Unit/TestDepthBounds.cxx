@@ -1,0 +1,278 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Depth-aware clusters (vtkClusteredLightingDepthBounds.h): every fragment's exact view
+// depth lies inside the interval of the cluster the shader puts it in, for depth images
+// synthesized the way a 24-bit depth buffer stores them (quantized, with VTK's coincident
+// offsets), at scene scales from 1e-3 to 1e6, perspective and parallel; and the intervals
+// are tight (they could fail: a test that everything is non-empty would pass trivially).
+#include "TestUtilities.h"
+#include "vtkClusteredLightingDepthBounds.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+using namespace vtkClusteredLighting;
+
+namespace
+{
+struct Synthetic
+{
+  std::vector<float> Depth;       ///< window depth as a 24-bit buffer holds it
+  std::vector<double> ExactDepth; ///< exact view depth of each pixel's fragment (0: none)
+  int Width = 0, Height = 0;
+  DepthImage Image() const { return { this->Depth.data(), this->Width, this->Height }; }
+};
+
+/// A floor plane tilted away from the camera and a sphere in front of it, at `scale`.
+/// View space: eye at the origin looking down -z. `offset` is a coincident-topology
+/// cOffset added to the stored window depth (as VTK's shader does).
+Synthetic Render(const glm::dmat4& P, int width, int height, double scale, bool parallel,
+  double offset = 0.0, bool sphere = true)
+{
+  Synthetic out;
+  out.Width = width;
+  out.Height = height;
+  out.Depth.assign(static_cast<std::size_t>(width) * height, 1.0f);
+  out.ExactDepth.assign(out.Depth.size(), 0.0);
+  const glm::dmat4 inv = glm::inverse(P);
+  const glm::dvec3 centre(0.1 * scale, -0.2 * scale, -5.0 * scale);
+  const double radius = 1.2 * scale;
+  for (int y = 0; y < height; ++y)
+  {
+    for (int x = 0; x < width; ++x)
+    {
+      const double nx = 2.0 * (x + 0.5) / width - 1.0;
+      const double ny = 2.0 * (y + 0.5) / height - 1.0;
+      glm::dvec4 a = inv * glm::dvec4(nx, ny, -1.0, 1.0);
+      glm::dvec4 b = inv * glm::dvec4(nx, ny, 1.0, 1.0);
+      const glm::dvec3 o = glm::dvec3(a) / a.w;
+      const glm::dvec3 d = glm::normalize(glm::dvec3(b) / b.w - o);
+      double t = std::numeric_limits<double>::infinity();
+      // Floor: y = -1.5 scale - 0.1 (z + 5 scale), seen from above.
+      const glm::dvec3 n = glm::normalize(glm::dvec3(0.0, 1.0, 0.1));
+      const double pd = glm::dot(n, glm::dvec3(0.0, -1.5 * scale, -5.0 * scale));
+      const double den = glm::dot(n, d);
+      if (std::abs(den) > 1e-12)
+      {
+        const double tp = (pd - glm::dot(n, o)) / den;
+        if (tp > 0.0)
+        {
+          t = tp;
+        }
+      }
+      if (sphere)
+      {
+        const glm::dvec3 oc = o - centre;
+        const double bq = glm::dot(oc, d);
+        const double c = glm::dot(oc, oc) - radius * radius;
+        const double disc = bq * bq - c;
+        if (disc >= 0.0)
+        {
+          const double ts = -bq - std::sqrt(disc);
+          if (ts > 0.0)
+          {
+            t = std::min(t, ts);
+          }
+        }
+      }
+      if (!std::isfinite(t))
+      {
+        continue;
+      }
+      const double depth = -(o + t * d).z;
+      const double w = WindowDepthFromViewDepth(depth, P) + offset / 65000.0;
+      if (!(w > 0.0 && w < 1.0))
+      {
+        continue; // clipped
+      }
+      const std::size_t p = static_cast<std::size_t>(y) * width + x;
+      out.Depth[p] = static_cast<float>(std::round(w * 16777216.0) / 16777216.0);
+      out.ExactDepth[p] = depth;
+    }
+  }
+  (void)parallel;
+  return out;
+}
+
+/// Checks that each fragment's exact depth is inside the interval of its cluster, for the
+/// slice the shader could compute in float (the exact one and its neighbours within 1e-6).
+int CountMisses(const Synthetic& s, const ClusterDepthBounds& b, const ClusterGridParams& g)
+{
+  int misses = 0;
+  for (int y = 0; y < s.Height; ++y)
+  {
+    for (int x = 0; x < s.Width; ++x)
+    {
+      const double d = s.ExactDepth[static_cast<std::size_t>(y) * s.Width + x];
+      if (d == 0.0)
+      {
+        continue;
+      }
+      const int tx = ComputeTileIndex(x + 0.5, s.Width, g.TilesX);
+      const int ty = ComputeTileIndex(y + 0.5, s.Height, g.TilesY);
+      for (double f : { 1.0 - 1e-6, 1.0, 1.0 + 1e-6 })
+      {
+        const int slice = ComputeSliceIndex(d * f, g);
+        double lo = 0.0, hi = 0.0;
+        if (!b.GetInterval(tx, ty, slice, g.TilesX, lo, hi) || d < lo || d > hi)
+        {
+          ++misses;
+        }
+      }
+    }
+  }
+  return misses;
+}
+}
+
+TEST(DepthBounds, WindowAndViewDepthsAreInverse)
+{
+  for (bool parallel : { false, true })
+  {
+    const glm::dmat4 P = parallel ? ClusteredLightingTest::Parallel(3.0, 4.0 / 3.0, 0.1, 100.0)
+                                  : ClusteredLightingTest::Perspective(30.0, 4.0 / 3.0, 0.1, 100.0);
+    EXPECT_TRUE(HasDepthOnlyClipZ(P));
+    for (double d : { 0.1, 0.5, 3.0, 42.0, 100.0 })
+    {
+      const double w = WindowDepthFromViewDepth(d, P);
+      EXPECT_GE(w, -1e-12);
+      EXPECT_LE(w, 1.0 + 1e-12);
+      EXPECT_NEAR(ViewDepthFromWindowDepth(w, P), d, 1e-9 * d);
+    }
+  }
+}
+
+TEST(DepthBounds, EveryFragmentIsInsideItsClusterAtEveryScale)
+{
+  for (double scale : { 1e-3, 1.0, 1e6 })
+  {
+    for (bool parallel : { false, true })
+    {
+      const double nearVC = 0.5 * scale, farVC = 40.0 * scale;
+      const glm::dmat4 P = parallel
+        ? ClusteredLightingTest::Parallel(4.0 * scale, 4.0 / 3.0, nearVC, farVC)
+        : ClusteredLightingTest::Perspective(40.0, 4.0 / 3.0, nearVC, farVC);
+      const Synthetic s = Render(P, 160, 120, scale, parallel);
+      ClusterGridParams g = ClusteredLightingTest::MakeGrid(16, 8, 32, 160, 120, nearVC, farVC,
+        parallel ? SlicingScheme::Linear : SlicingScheme::Exponential);
+      double nearest = 0.0, deepest = 0.0;
+      ASSERT_TRUE(MeasureVisibleRange(s.Image(), P, nearest, deepest));
+      ChooseSlicingRange(true, nearest, deepest, g);
+      EXPECT_GE(g.GetSlicingNear(), g.NearVC);
+      EXPECT_LE(g.GetSlicingFar(), g.FarVC);
+      const ClusterDepthBounds b = ComputeClusterDepthBounds(s.Image(), P, g, DepthBoundsOptions());
+      ASSERT_TRUE(b.Valid);
+      EXPECT_EQ(CountMisses(s, b, g), 0) << "scale " << scale << (parallel ? " parallel" : "");
+      // Tight: most clusters hold no fragment (a floor and a sphere are thin sheets).
+      const double fraction = double(b.NonEmptyClusters) / (b.LoHi.size() / 2);
+      EXPECT_LT(fraction, 0.35) << "scale " << scale;
+      EXPECT_GT(fraction, 0.0);
+    }
+  }
+}
+
+TEST(DepthBounds, CoincidentOffsetsAreCoveredByTheMargin)
+{
+  const glm::dmat4 P = ClusteredLightingTest::Perspective(40.0, 4.0 / 3.0, 0.5, 40.0);
+  ClusterGridParams g =
+    ClusteredLightingTest::MakeGrid(16, 8, 32, 160, 120, 0.5, 40.0, SlicingScheme::Exponential);
+  for (double offset : { -8.0, -4.0, 2.0 })
+  {
+    const Synthetic s = Render(P, 160, 120, 1.0, false, offset);
+    DepthBoundsOptions options;
+    options.WindowMargin = ComputeWindowMargin(offset);
+    const ClusterDepthBounds b = ComputeClusterDepthBounds(s.Image(), P, g, options);
+    EXPECT_EQ(CountMisses(s, b, g), 0) << "cOffset " << offset;
+    // Without the offset in the margin, fragments fall outside: the margin matters.
+    const ClusterDepthBounds tight =
+      ComputeClusterDepthBounds(s.Image(), P, g, DepthBoundsOptions());
+    EXPECT_GT(CountMisses(s, tight, g), 0) << "cOffset " << offset;
+  }
+}
+
+TEST(DepthBounds, BackgroundKeepsTheFarPlaneInTheLastSlice)
+{
+  const glm::dmat4 P = ClusteredLightingTest::Perspective(40.0, 4.0 / 3.0, 0.5, 40.0);
+  const ClusterGridParams g =
+    ClusteredLightingTest::MakeGrid(16, 8, 32, 160, 120, 0.5, 40.0, SlicingScheme::Exponential);
+  const std::vector<float> empty(160 * 120, 1.0f);
+  const ClusterDepthBounds b = ComputeClusterDepthBounds({ empty.data(), 160, 120 }, P, g, {});
+  ASSERT_TRUE(b.Valid);
+  EXPECT_EQ(b.VisiblePixels, 0u);
+  for (int ty = 0; ty < g.TilesY; ++ty)
+  {
+    for (int tx = 0; tx < g.TilesX; ++tx)
+    {
+      double lo = 0.0, hi = 0.0;
+      ASSERT_TRUE(b.GetInterval(tx, ty, g.Slices - 1, g.TilesX, lo, hi));
+      EXPECT_GE(hi, g.FarVC);
+      EXPECT_FALSE(b.GetInterval(tx, ty, 0, g.TilesX, lo, hi)); // nothing nearer
+    }
+  }
+}
+
+TEST(DepthBounds, TranslucentGeometryKeepsEverythingInFrontOfTheOpaque)
+{
+  const glm::dmat4 P = ClusteredLightingTest::Perspective(40.0, 4.0 / 3.0, 0.5, 40.0);
+  const ClusterGridParams g =
+    ClusteredLightingTest::MakeGrid(16, 8, 32, 160, 120, 0.5, 40.0, SlicingScheme::Exponential);
+  const Synthetic s = Render(P, 160, 120, 1.0, false);
+  DepthBoundsOptions options;
+  options.Translucent = true;
+  const ClusterDepthBounds b = ComputeClusterDepthBounds(s.Image(), P, g, options);
+  // A translucent fragment anywhere between the near plane and a pixel's opaque depth.
+  for (int y = 0; y < s.Height; y += 7)
+  {
+    for (int x = 0; x < s.Width; x += 5)
+    {
+      double d = s.ExactDepth[static_cast<std::size_t>(y) * s.Width + x];
+      d = d == 0.0 ? g.FarVC : d;
+      const int tx = ComputeTileIndex(x + 0.5, s.Width, g.TilesX);
+      const int ty = ComputeTileIndex(y + 0.5, s.Height, g.TilesY);
+      for (double t : { 0.0, 0.3, 0.9, 1.0 })
+      {
+        const double z = g.NearVC + t * (d - g.NearVC);
+        double lo = 0.0, hi = 0.0;
+        ASSERT_TRUE(b.GetInterval(tx, ty, ComputeSliceIndex(z, g), g.TilesX, lo, hi));
+        EXPECT_LE(lo, z);
+        EXPECT_GE(hi, z * (1.0 - 1e-6));
+      }
+    }
+  }
+}
+
+TEST(DepthBounds, SlicingRangeStaysInsideTheCameraRange)
+{
+  ClusterGridParams g =
+    ClusteredLightingTest::MakeGrid(16, 8, 32, 160, 120, 0.5, 40.0, SlicingScheme::Exponential);
+  ChooseSlicingRange(true, 3.0, 9.0, g);
+  EXPECT_NEAR(g.GetSlicingNear(), 2.97, 1e-12);
+  EXPECT_NEAR(g.GetSlicingFar(), 9.09, 1e-12);
+  // Slice 0 still holds everything down to the camera's near plane, the last slice
+  // everything up to the far plane.
+  EXPECT_EQ(ComputeSliceIndex(0.5, g), 0);
+  EXPECT_EQ(ComputeSliceIndex(39.0, g), g.Slices - 1);
+  EXPECT_NEAR(ComputeSliceBoundary(0, g), 2.97, 1e-12);
+  // A flat view (one depth) still gets a valid range; nothing visible keeps the camera's.
+  ChooseSlicingRange(true, 5.0, 5.0, g);
+  EXPECT_GT(g.GetSlicingFar(), g.GetSlicingNear());
+  ChooseSlicingRange(false, 0.0, 0.0, g);
+  EXPECT_EQ(g.GetSlicingNear(), g.NearVC);
+  EXPECT_EQ(g.GetSlicingFar(), g.FarVC);
+  // A visible range beyond the camera range is clamped to it.
+  ChooseSlicingRange(true, 0.1, 100.0, g);
+  EXPECT_GE(g.GetSlicingNear(), g.NearVC);
+  EXPECT_LE(g.GetSlicingFar(), g.FarVC);
+}
+
+TEST(DepthBounds, AnObliqueProjectionIsNotUsed)
+{
+  glm::dmat4 P = ClusteredLightingTest::Perspective(40.0, 4.0 / 3.0, 0.5, 40.0);
+  P[0][2] = 0.1; // clip z depends on view x
+  EXPECT_FALSE(HasDepthOnlyClipZ(P));
+  const ClusterGridParams g =
+    ClusteredLightingTest::MakeGrid(16, 8, 32, 160, 120, 0.5, 40.0, SlicingScheme::Exponential);
+  const std::vector<float> depth(160 * 120, 0.5f);
+  EXPECT_FALSE(ComputeClusterDepthBounds({ depth.data(), 160, 120 }, P, g, {}).Valid);
+}

@@ -93,11 +93,10 @@ struct PixelCounts
   vtkIdType Pixels = 0;
 };
 
-/// Reads the renderer's viewport back from the framebuffer the delegate drew into and
-/// decodes the evaluated counts (R + 256 G) of the pixels covered by geometry (depth
-/// below the far plane). Zero counts when the framebuffer cannot be read.
-/// Pixels of the renderer's viewport whose depth is below the far plane.
-std::size_t CountVisiblePixels(const vtkRenderState* s, vtkOpenGLRenderWindow* rw)
+/// Reads the renderer's viewport back from the framebuffer the delegate drew into: its
+/// window depths and (when asked) its RGBA bytes. False when it cannot be read.
+bool ReadViewport(const vtkRenderState* s, vtkOpenGLRenderWindow* rw, std::vector<float>& depth,
+  std::vector<unsigned char>* rgba)
 {
   int width = 0, height = 0, x0 = 0, y0 = 0;
   if (auto* fbo = vtkOpenGLFramebufferObject::SafeDownCast(s->GetFrameBuffer()))
@@ -113,42 +112,7 @@ std::size_t CountVisiblePixels(const vtkRenderState* s, vtkOpenGLRenderWindow* r
   }
   if (width <= 0 || height <= 0)
   {
-    return 0;
-  }
-  vtkOpenGLState* state = rw->GetState();
-  unsigned int drawBinding = 0, drawBuffer = 0;
-  state->GetCurrentDrawFramebufferState(drawBinding, drawBuffer);
-  state->PushReadFramebufferBinding();
-  state->vtkglBindFramebuffer(GL_READ_FRAMEBUFFER, drawBinding);
-  state->vtkglPixelStorei(GL_PACK_ALIGNMENT, 4);
-  std::vector<float> depth(static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
-  glReadPixels(x0, y0, width, height, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
-  const bool ok = glGetError() == GL_NO_ERROR;
-  state->PopReadFramebufferBinding();
-  return ok ? static_cast<std::size_t>(
-                std::count_if(depth.begin(), depth.end(), [](float z) { return z < 1.0f; }))
-            : 0;
-}
-
-PixelCounts CountEvaluatedLights(const vtkRenderState* s, vtkOpenGLRenderWindow* rw)
-{
-  PixelCounts counts;
-  int width = 0, height = 0, x0 = 0, y0 = 0;
-  if (vtkOpenGLFramebufferObject* fbo =
-        vtkOpenGLFramebufferObject::SafeDownCast(s->GetFrameBuffer()))
-  {
-    int size[2] = { 0, 0 };
-    fbo->GetLastSize(size);
-    width = size[0];
-    height = size[1];
-  }
-  else
-  {
-    s->GetRenderer()->GetTiledSizeAndOrigin(&width, &height, &x0, &y0);
-  }
-  if (width <= 0 || height <= 0)
-  {
-    return counts;
+    return false;
   }
   vtkOpenGLState* state = rw->GetState();
   unsigned int drawBinding = 0, drawBuffer = 0;
@@ -158,18 +122,43 @@ PixelCounts CountEvaluatedLights(const vtkRenderState* s, vtkOpenGLRenderWindow*
   state->vtkglReadBuffer(drawBuffer);
   state->vtkglPixelStorei(GL_PACK_ALIGNMENT, 1);
   const std::size_t n = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
-  std::vector<unsigned char> rgba(4 * n);
-  std::vector<float> depth(n);
-  glReadPixels(x0, y0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+  depth.resize(n);
+  if (rgba)
+  {
+    rgba->resize(4 * n);
+    glReadPixels(x0, y0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rgba->data());
+  }
   glReadPixels(x0, y0, width, height, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
   const bool ok = glGetError() == GL_NO_ERROR;
   state->PopReadFramebufferBinding();
-  if (!ok)
+  return ok;
+}
+
+/// Pixels of the renderer's viewport whose depth is below the far plane.
+std::size_t CountVisiblePixels(const vtkRenderState* s, vtkOpenGLRenderWindow* rw)
+{
+  std::vector<float> depth;
+  if (!ReadViewport(s, rw, depth, nullptr))
+  {
+    return 0;
+  }
+  return static_cast<std::size_t>(
+    std::count_if(depth.begin(), depth.end(), [](float z) { return z < 1.0f; }));
+}
+
+/// Decodes the evaluated counts (R + 256 G) of the pixels covered by geometry (depth below
+/// the far plane). Zero counts when the framebuffer cannot be read.
+PixelCounts CountEvaluatedLights(const vtkRenderState* s, vtkOpenGLRenderWindow* rw)
+{
+  PixelCounts counts;
+  std::vector<float> depth;
+  std::vector<unsigned char> rgba;
+  if (!ReadViewport(s, rw, depth, &rgba))
   {
     return counts;
   }
   double sum = 0.0;
-  for (std::size_t i = 0; i < n; ++i)
+  for (std::size_t i = 0; i < depth.size(); ++i)
   {
     if (depth[i] < 1.0f)
     {

@@ -27,8 +27,8 @@ struct Synthetic
 /// A floor plane tilted away from the camera and a sphere in front of it, at `scale`.
 /// View space: eye at the origin looking down -z. `offset` is a coincident-topology
 /// cOffset added to the stored window depth (as VTK's shader does).
-Synthetic Render(const glm::dmat4& P, int width, int height, double scale, bool parallel,
-  double offset = 0.0, bool sphere = true)
+Synthetic Render(
+  const glm::dmat4& P, int width, int height, double scale, double offset = 0.0, bool sphere = true)
 {
   Synthetic out;
   out.Width = width;
@@ -91,7 +91,6 @@ Synthetic Render(const glm::dmat4& P, int width, int height, double scale, bool 
       out.ExactDepth[p] = depth;
     }
   }
-  (void)parallel;
   return out;
 }
 
@@ -153,7 +152,7 @@ TEST(DepthBounds, EveryFragmentIsInsideItsClusterAtEveryScale)
       const glm::dmat4 P = parallel
         ? ClusteredLightingTest::Parallel(4.0 * scale, 4.0 / 3.0, nearVC, farVC)
         : ClusteredLightingTest::Perspective(40.0, 4.0 / 3.0, nearVC, farVC);
-      const Synthetic s = Render(P, 160, 120, scale, parallel);
+      const Synthetic s = Render(P, 160, 120, scale);
       ClusterGridParams g = ClusteredLightingTest::MakeGrid(16, 8, 32, 160, 120, nearVC, farVC,
         parallel ? SlicingScheme::Linear : SlicingScheme::Exponential);
       double nearest = 0.0, deepest = 0.0;
@@ -179,7 +178,7 @@ TEST(DepthBounds, CoincidentOffsetsAreCoveredByTheMargin)
     ClusteredLightingTest::MakeGrid(16, 8, 32, 160, 120, 0.5, 40.0, SlicingScheme::Exponential);
   for (double offset : { -8.0, -4.0, 2.0 })
   {
-    const Synthetic s = Render(P, 160, 120, 1.0, false, offset);
+    const Synthetic s = Render(P, 160, 120, 1.0, offset);
     DepthBoundsOptions options;
     options.WindowMargin = ComputeWindowMargin(offset);
     const ClusterDepthBounds b = ComputeClusterDepthBounds(s.Image(), P, g, options);
@@ -217,7 +216,7 @@ TEST(DepthBounds, TranslucentGeometryKeepsEverythingInFrontOfTheOpaque)
   const glm::dmat4 P = ClusteredLightingTest::Perspective(40.0, 4.0 / 3.0, 0.5, 40.0);
   const ClusterGridParams g =
     ClusteredLightingTest::MakeGrid(16, 8, 32, 160, 120, 0.5, 40.0, SlicingScheme::Exponential);
-  const Synthetic s = Render(P, 160, 120, 1.0, false);
+  const Synthetic s = Render(P, 160, 120, 1.0);
   DepthBoundsOptions options;
   options.Translucent = true;
   const ClusterDepthBounds b = ComputeClusterDepthBounds(s.Image(), P, g, options);

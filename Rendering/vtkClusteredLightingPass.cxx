@@ -481,6 +481,8 @@ bool vtkClusteredLightingPass::RenderDepthPrepass(
     return false;
   }
   vtkClusteredLightingDepthPrepass& prepass = this->Internals->Prepass;
+  // The mappers read VTK's lighting complexity from the renderer's last UpdateLights (the
+  // delegate's lights step), so the prepass draws with the shading render's programs.
   prepass.Render(
     s, rw, [this, s]() { this->PreRender(s); }, [this, s]() { this->PostRender(s); },
     this->MeasureTimings);
@@ -675,31 +677,10 @@ void vtkClusteredLightingPass::RenderDelegate(const vtkRenderState* s,
 {
   vtkRenderer* ren = s->GetRenderer();
   vtkOpenGLRenderWindow* rw = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
-  vtkLightCollection* rendererLights = ren->GetLights();
   const bool enabled = assigner->GetResult().Enabled;
   if (enabled)
   {
-    rendererLights->RemoveAllItems();
-    std::vector<vtkLight*> stock;
-    bool stockOn = false;
-    for (const auto& l : lights.StockLights)
-    {
-      rendererLights->AddItem(l);
-      stock.push_back(l);
-      stockOn = stockOn || l->GetSwitch();
-    }
-    if (!stockOn)
-    {
-      // Nothing of VTK's lighting shows: the cheapest code (complexity 1) will do.
-      rendererLights->AddItem(this->Internals->PlaceholderLight);
-    }
-    else if (vtkClusteredLightingLightCollector::ComputeVTKLightingComplexity(stock) <
-      lights.RendererComplexity)
-    {
-      // VTK's own lights must be shaded by the code VTK would generate for the whole
-      // collection (the headlight's specular differs between complexity 1 and 3).
-      rendererLights->AddItem(this->Internals->ComplexityLight);
-    }
+    this->HideClusteredLights(ren, lights);
     assigner->ActivateShading();
   }
   // A heat map scaled to the data first counts the lights evaluated per pixel: one render
@@ -764,11 +745,48 @@ void vtkClusteredLightingPass::RenderDelegate(const vtkRenderState* s,
   if (enabled)
   {
     assigner->DeactivateShading();
-    rendererLights->RemoveAllItems();
-    for (const auto& l : lights.RendererLights)
-    {
-      rendererLights->AddItem(l);
-    }
+    this->RestoreRendererLights(ren, lights);
+  }
+}
+
+//------------------------------------------------------------------------------
+// VTK's lighting code sees only the lights it shades itself (or a placeholder that keeps
+// its cheapest code), never VTK's unrolled code for the clustered lights.
+void vtkClusteredLightingPass::HideClusteredLights(
+  vtkRenderer* ren, const vtkClusteredLightingLightCollection& lights)
+{
+  vtkLightCollection* rendererLights = ren->GetLights();
+  rendererLights->RemoveAllItems();
+  std::vector<vtkLight*> stock;
+  bool stockOn = false;
+  for (const auto& l : lights.StockLights)
+  {
+    rendererLights->AddItem(l);
+    stock.push_back(l);
+    stockOn = stockOn || l->GetSwitch();
+  }
+  if (!stockOn)
+  {
+    // Nothing of VTK's lighting shows: the cheapest code (complexity 1) will do.
+    rendererLights->AddItem(this->Internals->PlaceholderLight);
+  }
+  else if (vtkClusteredLightingLightCollector::ComputeVTKLightingComplexity(stock) <
+    lights.RendererComplexity)
+  {
+    // VTK's own lights must be shaded by the code VTK would generate for the whole
+    // collection (the headlight's specular differs between complexity 1 and 3).
+    rendererLights->AddItem(this->Internals->ComplexityLight);
+  }
+}
+
+void vtkClusteredLightingPass::RestoreRendererLights(
+  vtkRenderer* ren, const vtkClusteredLightingLightCollection& lights)
+{
+  vtkLightCollection* rendererLights = ren->GetLights();
+  rendererLights->RemoveAllItems();
+  for (const auto& l : lights.RendererLights)
+  {
+    rendererLights->AddItem(l);
   }
 }
 

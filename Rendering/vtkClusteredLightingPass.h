@@ -670,6 +670,8 @@ private:
   void RenderDelegate(const vtkRenderState* s, const vtkClusteredLightingLightCollection& lights,
     vtkClusteredLightingAssigner* assigner);
   void RenderDelegateOnce(const vtkRenderState* s);
+  void HideClusteredLights(vtkRenderer* ren, const vtkClusteredLightingLightCollection& lights);
+  void RestoreRendererLights(vtkRenderer* ren, const vtkClusteredLightingLightCollection& lights);
   bool RenderDepthPrepass(
     const vtkRenderState* s, vtkOpenGLRenderWindow* rw, vtkClusteredLightingAssignerInputs& inputs);
   void SetPixelCounts(const vtkRenderState* s, vtkOpenGLRenderWindow* rw);

@@ -15,7 +15,9 @@
 //  - the prepass shades each visible pixel once: fragments passing the depth test per
 //    visible pixel are 1.0 with it, more than 1 without it in an occluding scene;
 //  - a mapper that writes its own depth (points as spheres) turns depth-aware clusters
-//    off with one warning, and the image stays correct.
+//    off with one warning, and the image stays correct;
+//  - with 40 positional vtkLights in the renderer (clustered), the prepass and the shading
+//    render use the same programs: no shader is rebuilt from frame to frame.
 #include "ClusteredLightingTestUtilities.h"
 #include "vtkClusteredLightingInspector.h"
 
@@ -23,6 +25,7 @@
 #include "vtkCamera.h"
 #include "vtkClusteredLightSet.h"
 #include "vtkClusteredLightingPass.h"
+#include "vtkLight.h"
 #include "vtkMapper.h"
 #include "vtkNew.h"
 #include "vtkPointSource.h"
@@ -299,6 +302,32 @@ int TestClusteredLightingDepthAware(int, char*[])
       messages->Warnings[0].find("writes its own fragment depth") != std::string::npos,
     "one warning names the impostor mapper");
   ren->RemoveActor(spheres);
+
+  // 10. Renderer vtkLights: the prepass draws with the shading render's programs, so
+  // moving frames rebuild no shader.
+  for (int i = 0; i < 40; ++i)
+  {
+    vtkNew<vtkLight> light;
+    light->SetPositional(true);
+    light->SetConeAngle(180.0);
+    light->SetPosition(-2.5 + 0.125 * i, 1.0, -2.0 + 0.1 * i);
+    light->SetAttenuationValues(1.0, 0.0, 4.0);
+    light->SetIntensity(0.2);
+    ren->AddLight(light);
+  }
+  rw->Render();
+  rw->Render();
+  const int builds = pass->GetNumberOfShaderBuilds();
+  for (int frame = 0; frame < 3; ++frame)
+  {
+    ren->GetActiveCamera()->Azimuth(2.0);
+    rw->Render();
+  }
+  Check(pass->GetNumberOfClusteredLights() == 640, "the 40 vtkLights are clustered too");
+  Check(pass->GetDepthPrepassUsed(), "the prepass runs with renderer lights");
+  Check(pass->GetNumberOfShaderBuilds() == builds,
+    "no shader rebuilt in 3 moving frames (" +
+      std::to_string(pass->GetNumberOfShaderBuilds() - builds) + ")");
   Check(messages->Errors.empty(), "no error");
   return Failed == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -214,20 +214,29 @@ void vtkClusteredLightingDepthPrepass::NoteProgram(vtkShaderProgram* program)
   {
     return;
   }
-  // VTK 9.1's coincident-topology offset (vtkOpenGLPolyDataMapper::ReplaceShaderCoincidentOffset).
-  const std::size_t offsets = Count(fs, "gl_FragDepth = gl_FragCoord.z + 1.0*cOffset/65000;");
-  if (offsets != writes)
+  // VTK's coincident-topology offset (vtkOpenGLPolyDataMapper::ReplaceShaderCoincidentOffset):
+  // 9.1 adds cOffset / 65000; 9.2 also adds cFactor times the depth slope, which no fixed
+  // margin bounds, so only cFactor = 0 is accepted there.
+  const std::size_t offsets91 = Count(fs, "gl_FragDepth = gl_FragCoord.z + 1.0*cOffset/65000;");
+  const std::size_t offsets92 =
+    Count(fs, "gl_FragDepth = gl_FragCoord.z + cFactor*cscale + 1.0*cOffset/65000;");
+  const GLuint handle = static_cast<GLuint>(program->GetHandle());
+  auto uniform = [handle](const char* name)
+  {
+    GLfloat value = 0.0f;
+    const GLint location = glGetUniformLocation(handle, name);
+    if (location >= 0)
+    {
+      glGetUniformfv(handle, location, &value);
+    }
+    return static_cast<double>(value);
+  };
+  if (offsets91 + offsets92 != writes || (offsets92 > 0 && uniform("cFactor") != 0.0))
   {
     this->UnknownDepthWrites = true;
     return;
   }
-  const GLint location = glGetUniformLocation(static_cast<GLuint>(program->GetHandle()), "cOffset");
-  if (location >= 0)
-  {
-    GLfloat value = 0.0f;
-    glGetUniformfv(static_cast<GLuint>(program->GetHandle()), location, &value);
-    this->MaxCoincidentOffset = std::max(this->MaxCoincidentOffset, std::abs(double(value)));
-  }
+  this->MaxCoincidentOffset = std::max(this->MaxCoincidentOffset, std::abs(uniform("cOffset")));
 }
 
 //------------------------------------------------------------------------------

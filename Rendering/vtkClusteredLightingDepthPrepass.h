@@ -18,7 +18,8 @@
  * While rendering it notes what each program writes to depth (NoteProgram): VTK's
  * coincident-topology offset (gl_FragDepth = gl_FragCoord.z + cOffset / 65000) widens
  * the readback's margin by the largest |cOffset|; any other gl_FragDepth write (impostor
- * spheres and tubes) makes the depths unusable for depth-aware clusters this frame.
+ * spheres and tubes, or VTK 9.2's offset with a non-zero slope factor cFactor) makes the
+ * depths unusable for depth-aware clusters this frame.
  *
  * The clustered samplers of a program never sample in a depth-only render, but GL still
  * rejects a draw whose samplers of different types share a unit: the prepass allocates

@@ -492,7 +492,8 @@ bool vtkClusteredLightingPass::RenderDepthPrepass(
     std::string problem;
     if (prepass.GetUnknownDepthWrites())
     {
-      problem = "a mapper writes its own fragment depth (impostor spheres or tubes)";
+      problem = "a mapper writes its own fragment depth (impostor spheres or tubes, or a "
+                "coincident-topology offset with a slope factor)";
     }
     else if (!prepass.ReadDepth(rw))
     {

@@ -601,9 +601,8 @@ void vtkClusteredLightingAssigner::UpdateDepthBounds(vtkClusteredLightingAssigne
   {
     const auto t0 = std::chrono::steady_clock::now();
     const DepthImage& image = *inputs.Depths;
-    double nearest = 0.0, deepest = 0.0;
-    const bool visible = MeasureVisibleRange(image, inputs.View.VCDC, nearest, deepest);
-    ChooseSlicingRange(visible, nearest, deepest, inputs.View.Grid);
+    const VisibleRange range = MeasureVisibleRange(image, inputs.View.VCDC);
+    ChooseSlicingRange(range.Visible, range.Nearest, range.Deepest, inputs.View.Grid);
     const ClusterGridParams& grid = inputs.View.Grid;
     InitializeClusterDepthBounds(grid, bounds);
     // Tile rows are independent: split them over the threads.
@@ -613,7 +612,7 @@ void vtkClusteredLightingAssigner::UpdateDepthBounds(vtkClusteredLightingAssigne
         ComputeClusterDepthBoundsRows(image, inputs.View.VCDC, grid, inputs.DepthOptions,
           static_cast<int>(begin), static_cast<int>(end), bounds);
       });
-    FinishClusterDepthBounds(image, inputs.View.VCDC, bounds);
+    FinishClusterDepthBounds(range, bounds);
     r.DepthBoundsTime = Milliseconds(t0, std::chrono::steady_clock::now());
     r.VisibleDepthRange[0] = bounds.VisibleNear;
     r.VisibleDepthRange[1] = bounds.VisibleFar;

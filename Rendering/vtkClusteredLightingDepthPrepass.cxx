@@ -157,7 +157,8 @@ bool vtkClusteredLightingDepthPrepass::ReadDepth(vtkOpenGLRenderWindow* rw)
   // is the fallback for buffers without stencil.
   bool ok = false;
   {
-    std::vector<GLuint> packed(this->Depth.size());
+    std::vector<unsigned int>& packed = this->Packed; // kept between frames
+    packed.resize(this->Depth.size());
     glReadPixels(this->Origin[0], this->Origin[1], this->Size[0], this->Size[1], GL_DEPTH_STENCIL,
       GL_UNSIGNED_INT_24_8, packed.data());
     ok = glGetError() == GL_NO_ERROR;
@@ -166,7 +167,7 @@ bool vtkClusteredLightingDepthPrepass::ReadDepth(vtkOpenGLRenderWindow* rw)
       const float scale = 1.0f / 16777215.0f;
       for (std::size_t p = 0; p < packed.size(); ++p)
       {
-        const GLuint z = packed[p] >> 8;
+        const unsigned int z = packed[p] >> 8;
         this->Depth[p] = z == 0xFFFFFFu ? 1.0f : static_cast<float>(z) * scale;
       }
     }

@@ -75,6 +75,7 @@ private:
   bool UnknownDepthWrites = false;
   std::vector<int> Units;
   std::vector<float> Depth;
+  std::vector<unsigned int> Packed; ///< the packed depth-stencil read (3 MiB at 1024x768)
   int Size[2] = { 0, 0 };
   int Origin[2] = { 0, 0 };
   std::string Problem;

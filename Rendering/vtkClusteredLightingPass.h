@@ -28,8 +28,12 @@
  * evaluates every light for every fragment: the exact reference.
  *
  * Algorithm (compute-less clustered lighting, after wizgrav/cl2): the view frustum is cut
- * into TilesX by TilesY screen tiles and Slices depth slices. When lights, camera or
- * viewport change, the CPU (GL-free core in Rendering/Core) gives every light an
+ * into TilesX by TilesY screen tiles and Slices depth slices. A depth prepass draws the
+ * opaque geometry depth-only first (DepthPrepass), so no hidden fragment is shaded; its
+ * depth, read back, cuts every cluster to the depths it holds and places the slices
+ * between the nearest and deepest visible surfaces (DepthAwareClusters, docs/depth.md).
+ * When lights, camera, viewport or visible depths change, the CPU (GL-free core in
+ * Rendering/Core) gives every light an
  * influence radius and exact screen and depth bounds; a list pass draws one quad per
  * light into a texture of per-cluster light bitmasks; a master pass folds it into one
  * bit per non-empty batch of 32 lights. The fragment shaders find their cluster, walk
@@ -259,8 +263,9 @@ public:
   };
   //@{
   /**
-   * How depth between the camera clipping planes is cut into slices. A value that is
-   * not a scheme is rejected with an error. Default is SLICING_AUTO.
+   * How depth is cut into slices: between the nearest and deepest visible surfaces with
+   * depth-aware clusters, else between the camera clipping planes. A value that is not a
+   * scheme is rejected with an error. Default is SLICING_AUTO.
    */
   virtual void SetSlicingScheme(int scheme);
   vtkGetMacro(SlicingScheme, int);

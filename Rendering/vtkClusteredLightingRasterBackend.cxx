@@ -22,19 +22,22 @@ using namespace vtkClusteredLighting;
 
 namespace
 {
-vtkTextureObject* NewIntegerTexture(vtkOpenGLRenderWindow* rw, int w, int h)
+/// A w x h texture read with texelFetch (nearest, clamped); nullptr when it cannot be
+/// allocated.
+vtkTextureObject* NewTexelTexture(vtkOpenGLRenderWindow* rw, int w, int h, unsigned int internal,
+  unsigned int format, unsigned int glType, int components, int vtkType)
 {
   vtkTextureObject* tex = vtkTextureObject::New();
   tex->SetContext(rw);
-  tex->SetInternalFormat(GL_R32UI);
-  tex->SetFormat(GL_RED_INTEGER);
-  tex->SetDataType(GL_UNSIGNED_INT);
+  tex->SetInternalFormat(internal);
+  tex->SetFormat(format);
+  tex->SetDataType(glType);
   tex->SetMinificationFilter(vtkTextureObject::Nearest);
   tex->SetMagnificationFilter(vtkTextureObject::Nearest);
   tex->SetWrapS(vtkTextureObject::ClampToEdge);
   tex->SetWrapT(vtkTextureObject::ClampToEdge);
   if (!tex->Allocate2D(
-        static_cast<unsigned int>(w), static_cast<unsigned int>(h), 1, VTK_UNSIGNED_INT))
+        static_cast<unsigned int>(w), static_cast<unsigned int>(h), components, vtkType))
   {
     tex->Delete();
     return nullptr;
@@ -54,7 +57,7 @@ bool Reallocate(vtkOpenGLRenderWindow* rw, vtkTextureObject*& tex, int size[2], 
     tex->ReleaseGraphicsResources(rw);
     tex->Delete();
   }
-  tex = NewIntegerTexture(rw, w, h);
+  tex = NewTexelTexture(rw, w, h, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, 1, VTK_UNSIGNED_INT);
   size[0] = tex ? w : 0;
   size[1] = tex ? h : 0;
   return tex != nullptr;
@@ -231,19 +234,9 @@ bool vtkClusteredLightingRasterBackend::UploadClusterDepths(
   }
   if (!tex)
   {
-    tex = vtkTextureObject::New();
-    tex->SetContext(rw);
-    tex->SetInternalFormat(GL_RG32F);
-    tex->SetFormat(GL_RG);
-    tex->SetDataType(GL_FLOAT);
-    tex->SetMinificationFilter(vtkTextureObject::Nearest);
-    tex->SetMagnificationFilter(vtkTextureObject::Nearest);
-    tex->SetWrapS(vtkTextureObject::ClampToEdge);
-    tex->SetWrapT(vtkTextureObject::ClampToEdge);
-    if (!tex->Allocate2D(static_cast<unsigned int>(bounds.Width),
-          static_cast<unsigned int>(bounds.Height), 2, VTK_FLOAT))
+    tex = NewTexelTexture(rw, bounds.Width, bounds.Height, GL_RG32F, GL_RG, GL_FLOAT, 2, VTK_FLOAT);
+    if (!tex)
     {
-      Release(tex, rw);
       return false;
     }
   }
@@ -275,7 +268,7 @@ bool vtkClusteredLightingRasterBackend::RunListPass(vtkOpenGLRenderWindow* rw,
   }
   if (!depthAware)
   {
-    Release(this->ClusterDepths, rw); // held only while the clusters are depth-aware
+    this->ReleaseDepthResources(rw); // held only while the clusters are depth-aware
   }
   if (numberOfQuads <= 0 || !this->Quads.GetTexture() || !lightView)
   {

@@ -29,8 +29,8 @@
  *    opaque depth (or the far plane where the tile shows background): translucent
  *    fragments are depth-tested against the opaque ones, so none lies deeper.
  *
- * The visible range (VisibleNear, VisibleFar: the nearest and deepest opaque pixels)
- * sets the slicing range (ChooseSlicingRange): slices where the geometry is. Slicing is
+ * The visible range (MeasureVisibleRange: the nearest and deepest opaque pixels) sets
+ * the slicing range (ChooseSlicingRange): slices where the geometry is. Slicing is
  * only a matter of speed: slice 0 still starts at the camera's near plane and the last
  * still ends at the far plane.
  *
@@ -131,10 +131,20 @@ struct ClusterDepthBounds
   }
 };
 
-/// The nearest and deepest opaque view depths of an image (background excluded).
-inline bool MeasureVisibleRange(
-  const DepthImage& image, const glm::dmat4& vcdc, double& nearest, double& deepest)
+/// What of an image shows opaque geometry: its nearest and deepest view depths and its
+/// pixel count (background excluded).
+struct VisibleRange
 {
+  bool Visible = false; ///< some pixel shows geometry and the projection is usable
+  double Nearest = 0.0;
+  double Deepest = 0.0;
+  std::size_t Pixels = 0;
+};
+
+/// One pass over the image.
+inline VisibleRange MeasureVisibleRange(const DepthImage& image, const glm::dmat4& vcdc)
+{
+  VisibleRange range;
   float wMin = 2.0f, wMax = -1.0f;
   const std::size_t n = static_cast<std::size_t>(image.Width) * image.Height;
   for (std::size_t p = 0; p < n; ++p)
@@ -144,15 +154,17 @@ inline bool MeasureVisibleRange(
     {
       wMin = std::min(wMin, w);
       wMax = std::max(wMax, w);
+      ++range.Pixels;
     }
   }
   if (!(wMin <= wMax) || !HasDepthOnlyClipZ(vcdc))
   {
-    return false;
+    return range;
   }
-  nearest = ViewDepthFromWindowDepth(wMin, vcdc);
-  deepest = ViewDepthFromWindowDepth(wMax, vcdc);
-  return nearest > 0.0 && deepest >= nearest;
+  range.Nearest = ViewDepthFromWindowDepth(wMin, vcdc);
+  range.Deepest = ViewDepthFromWindowDepth(wMax, vcdc);
+  range.Visible = range.Nearest > 0.0 && range.Deepest >= range.Nearest;
+  return range;
 }
 
 /**
@@ -361,27 +373,17 @@ inline void ComputeClusterDepthBoundsRows(const DepthImage& image, const glm::dm
   }
 }
 
-inline void FinishClusterDepthBounds(
-  const DepthImage& image, const glm::dmat4& vcdc, ClusterDepthBounds& out)
+/// Counts the non-empty clusters and records the visible range.
+inline void FinishClusterDepthBounds(const VisibleRange& range, ClusterDepthBounds& out)
 {
   out.NonEmptyClusters = 0;
   for (std::size_t t = 0; t < out.LoHi.size(); t += 2)
   {
     out.NonEmptyClusters += out.LoHi[t] <= out.LoHi[t + 1] ? 1 : 0;
   }
-  std::size_t visible = 0;
-  const std::size_t n = static_cast<std::size_t>(image.Width) * image.Height;
-  for (std::size_t p = 0; p < n; ++p)
-  {
-    visible += image.Depth[p] < 1.0f ? 1 : 0;
-  }
-  out.VisiblePixels = visible;
-  double nearest = 0.0, deepest = 0.0;
-  if (MeasureVisibleRange(image, vcdc, nearest, deepest))
-  {
-    out.VisibleNear = nearest;
-    out.VisibleFar = deepest;
-  }
+  out.VisiblePixels = range.Pixels;
+  out.VisibleNear = range.Visible ? range.Nearest : 0.0;
+  out.VisibleFar = range.Visible ? range.Deepest : 0.0;
   out.Valid = true;
 }
 
@@ -394,9 +396,10 @@ inline ClusterDepthBounds ComputeClusterDepthBounds(const DepthImage& image, con
   {
     return out;
   }
+  const VisibleRange range = MeasureVisibleRange(image, vcdc);
   InitializeClusterDepthBounds(grid, out);
   ComputeClusterDepthBoundsRows(image, vcdc, grid, options, 0, grid.TilesY, out);
-  FinishClusterDepthBounds(image, vcdc, out);
+  FinishClusterDepthBounds(range, out);
   return out;
 }
 

@@ -155,9 +155,9 @@ TEST(DepthBounds, EveryFragmentIsInsideItsClusterAtEveryScale)
       const Synthetic s = Render(P, 160, 120, scale);
       ClusterGridParams g = ClusteredLightingTest::MakeGrid(16, 8, 32, 160, 120, nearVC, farVC,
         parallel ? SlicingScheme::Linear : SlicingScheme::Exponential);
-      double nearest = 0.0, deepest = 0.0;
-      ASSERT_TRUE(MeasureVisibleRange(s.Image(), P, nearest, deepest));
-      ChooseSlicingRange(true, nearest, deepest, g);
+      const VisibleRange range = MeasureVisibleRange(s.Image(), P);
+      ASSERT_TRUE(range.Visible);
+      ChooseSlicingRange(true, range.Nearest, range.Deepest, g);
       EXPECT_GE(g.GetSlicingNear(), g.NearVC);
       EXPECT_LE(g.GetSlicingFar(), g.FarVC);
       const ClusterDepthBounds b = ComputeClusterDepthBounds(s.Image(), P, g, DepthBoundsOptions());

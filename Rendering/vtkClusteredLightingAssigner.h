@@ -268,6 +268,8 @@ private:
   void CheckCulling(const vtkClusteredLightingAssignerInputs& inputs);
   static bool ReachesEveryCluster(const vtkClusteredLighting::PreparedLight& light);
   void Assign(vtkOpenGLRenderWindow* rw, const vtkClusteredLightingAssignerInputs& inputs);
+  vtkClusteredLighting::ViewData ComputeViewDataInParallel(
+    const vtkClusteredLightingAssignerInputs& inputs) const;
   void UpdateDepthBounds(vtkClusteredLightingAssignerInputs& inputs);
 
   vtkWeakPointer<vtkOpenGLRenderWindow> Window;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkClusteredLightingDepthPrepass.h"
 
+#include "vtkObjectFactory.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
@@ -9,7 +10,6 @@
 #include "vtkRenderer.h"
 #include "vtkShader.h"
 #include "vtkShaderProgram.h"
-#include "vtkTextureUnitManager.h"
 #include "vtk_glew.h" // for GL calls
 
 #include <algorithm> // for std::max
@@ -31,9 +31,24 @@ std::size_t Count(const std::string& text, const std::string& what)
 }
 }
 
+vtkStandardNewMacro(vtkClusteredLightingDepthPrepass);
+
 //------------------------------------------------------------------------------
-int vtkClusteredLightingDepthPrepass::Render(const vtkRenderState* s, vtkOpenGLRenderWindow* rw,
-  const std::function<void()>& pre, const std::function<void()>& post, bool finish)
+void vtkClusteredLightingDepthPrepass::Render(const vtkRenderState* s)
+{
+  vtkRenderer* ren = s ? s->GetRenderer() : nullptr;
+  auto* rw = ren ? vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow()) : nullptr;
+  if (!rw)
+  {
+    vtkErrorMacro("The depth prepass needs an OpenGL render window.");
+    return;
+  }
+  this->NumberOfRenderedProps = this->RenderDepth(s, rw, false);
+}
+
+//------------------------------------------------------------------------------
+int vtkClusteredLightingDepthPrepass::RenderDepth(
+  const vtkRenderState* s, vtkOpenGLRenderWindow* rw, bool finish)
 {
   if (finish)
   {
@@ -61,18 +76,6 @@ int vtkClusteredLightingDepthPrepass::Render(const vtkRenderState* s, vtkOpenGLR
   this->Origin[0] = origin[0];
   this->Origin[1] = origin[1];
 
-  vtkTextureUnitManager* units = state->GetTextureUnitManager();
-  this->Units.clear();
-  for (int k = 0; k < 16; ++k)
-  {
-    const int unit = units->Allocate();
-    if (unit < 0)
-    {
-      break;
-    }
-    this->Units.push_back(unit);
-  }
-
   // vtkOpenGLState does not track the vertex array binding (the mappers' VAOs bind 0 when
   // they release): restore the application's.
   GLint vertexArray = 0;
@@ -96,8 +99,8 @@ int vtkClusteredLightingDepthPrepass::Render(const vtkRenderState* s, vtkOpenGLR
     state->vtkglEnable(GL_DEPTH_TEST);
     state->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
 
-    this->Rendering = true;
-    pre();
+    // The props carry this pass in their keys: the mappers build VTK's own program.
+    this->PreRender(s);
     for (int i = 0; i < s->GetPropArrayCount(); ++i)
     {
       vtkProp* prop = s->GetPropArray()[i];
@@ -106,19 +109,13 @@ int vtkClusteredLightingDepthPrepass::Render(const vtkRenderState* s, vtkOpenGLR
         rendered += prop->RenderOpaqueGeometry(ren);
       }
     }
-    post();
-    this->Rendering = false;
+    this->PostRender(s);
   }
   glBindVertexArray(static_cast<GLuint>(vertexArray));
   if (finish)
   {
     glFinish();
   }
-  for (int unit : this->Units)
-  {
-    units->Free(unit);
-  }
-  this->Units.clear();
   this->RenderTime =
     std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   return rendered;
@@ -241,7 +238,37 @@ void vtkClusteredLightingDepthPrepass::NoteProgram(vtkShaderProgram* program)
 }
 
 //------------------------------------------------------------------------------
-int vtkClusteredLightingDepthPrepass::GetSamplerUnit(int index) const
+void vtkClusteredLightingDepthPrepass::AddInvariantPosition(std::string& vertexShader)
 {
-  return index >= 0 && index < static_cast<int>(this->Units.size()) ? this->Units[index] : -1;
+  const std::string line = "\ninvariant gl_Position;\n";
+  if (vertexShader.find(line) == std::string::npos)
+  {
+    vtkShaderProgram::Substitute(vertexShader, "//VTK::System::Dec", "//VTK::System::Dec" + line);
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkClusteredLightingDepthPrepass::PostReplaceShaderValues(
+  std::string& vertexShader, std::string&, std::string&, vtkAbstractMapper*, vtkProp*)
+{
+  AddInvariantPosition(vertexShader);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkClusteredLightingDepthPrepass::SetShaderParameters(
+  vtkShaderProgram* program, vtkAbstractMapper*, vtkProp*, vtkOpenGLVertexArrayObject*)
+{
+  this->NoteProgram(program);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkClusteredLightingDepthPrepass::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Size: " << this->Size[0] << " x " << this->Size[1] << "\n";
+  os << indent << "MaximumCoincidentOffset: " << this->MaxCoincidentOffset << "\n";
+  os << indent << "UnknownDepthWrites: " << (this->UnknownDepthWrites ? "yes" : "no") << "\n";
+  os << indent << "RenderTime: " << this->RenderTime << " ms\n";
 }

@@ -5,25 +5,29 @@
  *
  * Private to the module; used by vtkClusteredLightingPass before the light assignment:
  *
- *   1. Render(): the viewport and scissor as vtkCameraPass sets them, the depth cleared
- *      when the renderer would clear it, colour writes masked, then every visible prop's
- *      opaque geometry. The pass's shader hook sets clDepthOnly = 1 meanwhile, so the
- *      clustered code walks no light (the mappers keep their one program).
- *   2. ReadDepth(): the viewport's window depths (glReadPixels, GL_FLOAT), the input of
- *      depth-aware clusters (Rendering/Core/vtkClusteredLightingDepthBounds.h).
- *   3. The pass then renders its delegate with the renderer's depth buffer preserved:
- *      the camera pass clears colour only, and every opaque fragment behind the visible
- *      surface fails the depth test (GL_LEQUAL, VTK's default) before it is shaded.
+ *   1. RenderDepth(): the viewport and scissor as vtkCameraPass sets them, the depth
+ *      cleared when the renderer would clear it, colour writes masked, then every visible
+ *      prop's opaque geometry. The props carry this pass (not the clustered pass) in their
+ *      render-pass keys meanwhile, so the mappers draw VTK's own program, without any
+ *      clustered code: a uniform that skips the light walk is not enough, because a
+ *      software rasterizer (llvmpipe) runs both sides of a branch under a mask, far-field
+ *      texture reads included. A mapper switching between its two programs rebuilds its
+ *      shader source, but VTK's shader cache keeps both compiled programs.
+ *   2. ReadDepth(): the viewport's window depths, the input of depth-aware clusters
+ *      (Rendering/Core/vtkClusteredLightingDepthBounds.h).
+ *   3. The clustered pass then renders its delegate with the renderer's depth buffer
+ *      preserved: the camera pass clears colour only, and every opaque fragment behind the
+ *      visible surface fails the depth test (GL_LEQUAL, VTK's default) before it is shaded.
+ *
+ * Both programs declare `invariant gl_Position` (here and in the clustered pass's shader
+ * hook), so the same vertex shader code gives the same depth in both, as the equal depth
+ * test needs.
  *
  * While rendering it notes what each program writes to depth (NoteProgram): VTK's
  * coincident-topology offset (gl_FragDepth = gl_FragCoord.z + cOffset / 65000) widens
  * the readback's margin by the largest |cOffset|; any other gl_FragDepth write (impostor
  * spheres and tubes, or VTK 9.2's offset with a non-zero slope factor cFactor) makes the
  * depths unusable for depth-aware clusters this frame.
- *
- * The clustered samplers of a program never sample in a depth-only render, but GL still
- * rejects a draw whose samplers of different types share a unit: the prepass allocates
- * distinct units for them (GetSamplerUnit) and frees them afterwards.
  *
  * @sa vtkClusteredLightingPass
  */
@@ -32,23 +36,29 @@
 
 #include "vtkClusteredLightingDepthBounds.h" // for DepthImage
 
-#include <functional> // for std::function
-#include <string>     // for std::string
-#include <vector>     // for std::vector
+#include "vtkOpenGLRenderPass.h"
+
+#include <string> // for std::string
+#include <vector> // for std::vector
 
 class vtkOpenGLRenderWindow;
 class vtkRenderState;
 class vtkShaderProgram;
 
-class vtkClusteredLightingDepthPrepass
+class vtkClusteredLightingDepthPrepass : public vtkOpenGLRenderPass
 {
 public:
-  /// Renders the opaque props of `s` depth-only; `pre` and `post` wrap the props (the
-  /// pass's PreRender/PostRender). With `finish`, waits for the GPU so that the render
-  /// time is the prepass's own (a deferred renderer would otherwise bill it to the next
-  /// GL work). Returns the number of props rendered.
-  int Render(const vtkRenderState* s, vtkOpenGLRenderWindow* rw, const std::function<void()>& pre,
-    const std::function<void()>& post, bool finish);
+  static vtkClusteredLightingDepthPrepass* New();
+  vtkTypeMacro(vtkClusteredLightingDepthPrepass, vtkOpenGLRenderPass)
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /// Renders the opaque props of `s` depth-only (RenderDepth, without waiting).
+  void Render(const vtkRenderState* s) override;
+
+  /// Renders the opaque props of `s` depth-only. With `finish`, waits for the GPU so that
+  /// the render time is the prepass's own (a deferred renderer would otherwise bill it to
+  /// the next GL work). Returns the number of props rendered.
+  int RenderDepth(const vtkRenderState* s, vtkOpenGLRenderWindow* rw, bool finish);
 
   /// Reads the viewport's depth back. False (with GetProblem()) when it cannot: a
   /// multisampled framebuffer, or a GL error.
@@ -57,23 +67,34 @@ public:
   /// The last readback (valid after ReadDepth returned true).
   vtkClusteredLighting::DepthImage GetImage() const;
 
-  /// Called by the pass's shader hook for every program drawn in Render().
-  void NoteProgram(vtkShaderProgram* program);
+  /// Declares `invariant gl_Position` in the vertex shader (AddInvariantPosition).
+  bool PostReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
+    std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
 
-  /// Distinct texture units for the clustered samplers during Render() (index < 16).
-  int GetSamplerUnit(int index) const;
+  /// Notes the depth writes of every program drawn (NoteProgram).
+  bool SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop,
+    vtkOpenGLVertexArrayObject* vao = nullptr) override;
 
-  bool IsRendering() const { return this->Rendering; }
+  /// Adds `invariant gl_Position;` after the vertex shader's //VTK::System::Dec, once.
+  static void AddInvariantPosition(std::string& vertexShader);
+
   double GetMaximumCoincidentOffset() const { return this->MaxCoincidentOffset; }
   bool GetUnknownDepthWrites() const { return this->UnknownDepthWrites; }
   const std::string& GetProblem() const { return this->Problem; }
   double GetRenderTime() const { return this->RenderTime; } ///< ms, render and readback
 
+protected:
+  vtkClusteredLightingDepthPrepass() = default;
+  ~vtkClusteredLightingDepthPrepass() override = default;
+
 private:
-  bool Rendering = false;
+  vtkClusteredLightingDepthPrepass(const vtkClusteredLightingDepthPrepass&) = delete;
+  void operator=(const vtkClusteredLightingDepthPrepass&) = delete;
+
+  void NoteProgram(vtkShaderProgram* program);
+
   double MaxCoincidentOffset = 0.0;
   bool UnknownDepthWrites = false;
-  std::vector<int> Units;
   std::vector<float> Depth;
   std::vector<unsigned int> Packed; ///< the packed depth-stencil read (3 MiB at 1024x768)
   int Size[2] = { 0, 0 };

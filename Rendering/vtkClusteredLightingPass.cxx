@@ -252,7 +252,8 @@ struct vtkClusteredLightingPass::vtkInternals
   vtkTimeStamp ShaderStageTime;
   vtkNew<vtkLight> PlaceholderLight; ///< keeps VTK's lit code when every light is clustered
   vtkNew<vtkLight> ComplexityLight;  ///< keeps VTK's lighting complexity (switched off)
-  vtkClusteredLightingDepthPrepass Prepass;
+  vtkNew<vtkClusteredLightingDepthPrepass> Prepass;
+  std::set<std::size_t> BuiltSources; ///< hashes of the shader sources built (NumberOfShaderBuilds)
   vtkClusteredLighting::DepthImage Depths; ///< the prepass's readback, during Render()
   std::string ReportedDepthProblem;        ///< why depth-aware clusters are off, said once
 
@@ -480,24 +481,26 @@ bool vtkClusteredLightingPass::RenderDepthPrepass(
   {
     return false;
   }
-  vtkClusteredLightingDepthPrepass& prepass = this->Internals->Prepass;
-  // The mappers read VTK's lighting complexity from the renderer's last UpdateLights (the
-  // delegate's lights step), so the prepass draws with the shading render's programs.
-  prepass.Render(
-    s, rw, [this, s]() { this->PreRender(s); }, [this, s]() { this->PostRender(s); },
-    this->MeasureTimings);
+  vtkClusteredLightingDepthPrepass* prepass = this->Internals->Prepass;
+  // VTK's lighting code in the prepass's programs follows the renderer's lights: the same
+  // as in the shading render (the clustered lights hidden), so that each mapper keeps
+  // the same two programs from the first frame on.
+  this->HideClusteredLights(ren, *inputs.Lights);
+  this->UpdateLights(ren);
+  prepass->RenderDepth(s, rw, this->MeasureTimings);
+  this->RestoreRendererLights(ren, *inputs.Lights);
   this->DepthPrepassUsed = true;
   if (this->DepthAwareClusters && inputs.Clustered)
   {
     std::string problem;
-    if (prepass.GetUnknownDepthWrites())
+    if (prepass->GetUnknownDepthWrites())
     {
       problem = "a mapper writes its own fragment depth (impostor spheres or tubes, or a "
                 "coincident-topology offset with a slope factor)";
     }
-    else if (!prepass.ReadDepth(rw))
+    else if (!prepass->ReadDepth(rw))
     {
-      problem = prepass.GetProblem();
+      problem = prepass->GetProblem();
     }
     if (problem.empty())
     {
@@ -508,10 +511,10 @@ bool vtkClusteredLightingPass::RenderDepthPrepass(
         translucent =
           translucent || (prop->GetVisibility() && prop->HasTranslucentPolygonalGeometry());
       }
-      this->Internals->Depths = prepass.GetImage();
+      this->Internals->Depths = prepass->GetImage();
       inputs.Depths = &this->Internals->Depths;
       inputs.DepthOptions.WindowMargin =
-        vtkClusteredLighting::ComputeWindowMargin(prepass.GetMaximumCoincidentOffset());
+        vtkClusteredLighting::ComputeWindowMargin(prepass->GetMaximumCoincidentOffset());
       inputs.DepthOptions.Translucent = translucent;
       this->Internals->ReportedDepthProblem.clear();
     }
@@ -522,7 +525,7 @@ bool vtkClusteredLightingPass::RenderDepthPrepass(
       this->Internals->ReportedDepthProblem = problem;
     }
   }
-  this->LastDepthPrepassTime = prepass.GetRenderTime();
+  this->LastDepthPrepassTime = prepass->GetRenderTime();
   return true;
 }
 
@@ -832,13 +835,31 @@ bool vtkClusteredLightingPass::PreReplaceShaderValues(
 }
 
 //------------------------------------------------------------------------------
-bool vtkClusteredLightingPass::PostReplaceShaderValues(
-  std::string&, std::string&, std::string& fragmentShader, vtkAbstractMapper*, vtkProp* prop)
+bool vtkClusteredLightingPass::PostReplaceShaderValues(std::string& vertexShader,
+  std::string& geometryShader, std::string& fragmentShader, vtkAbstractMapper*, vtkProp* prop)
 {
-  ++this->NumberOfShaderBuilds;
+  this->InjectShadingCode(fragmentShader, prop);
+  // The depth prepass draws VTK's own program: the same vertex code must give the same
+  // depth in both for the equal depth test.
+  vtkClusteredLightingDepthPrepass::AddInvariantPosition(vertexShader);
+  // Around the depth prepass a mapper switches between two programs every frame and
+  // rebuilds the source each time (VTK's shader cache keeps both compiled): only sources
+  // not built before count.
+  const std::size_t hash = std::hash<std::string>()(
+    vertexShader + "\n//GS\n" + geometryShader + "\n//FS\n" + fragmentShader);
+  if (this->Internals->BuiltSources.insert(hash).second)
+  {
+    ++this->NumberOfShaderBuilds;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkClusteredLightingPass::InjectShadingCode(std::string& fragmentShader, vtkProp* prop)
+{
   if (fragmentShader.find("//VTK::ClusteredLight::Impl") == std::string::npos)
   {
-    return true; // clustered lighting off for this build
+    return; // clustered lighting off for this build
   }
   vtkClusteredLightingShaderVariant variant = this->Internals->Variant;
   vtkActor* actor = vtkActor::SafeDownCast(prop);
@@ -860,7 +881,7 @@ bool vtkClusteredLightingPass::PostReplaceShaderValues(
   {
     vtkShaderProgram::Substitute(fragmentShader, "//VTK::ClusteredLight::Dec", "");
     vtkShaderProgram::Substitute(fragmentShader, "//VTK::ClusteredLight::Impl", "");
-    return true;
+    return;
   }
   vtkShaderProgram::Substitute(fragmentShader, "//VTK::System::Dec",
     "//VTK::System::Dec\n#extension GL_ARB_gpu_shader5 : enable\n");
@@ -878,42 +899,15 @@ bool vtkClusteredLightingPass::PostReplaceShaderValues(
     vtkShaderProgram::Substitute(fragmentShader, "//VTK::ClusteredLight::Impl",
       variant.GetImplementation() + variant.GetDebugImplementation());
   }
-  return true;
 }
 
 //------------------------------------------------------------------------------
 bool vtkClusteredLightingPass::SetShaderParameters(
   vtkShaderProgram* program, vtkAbstractMapper*, vtkProp*, vtkOpenGLVertexArrayObject*)
 {
-  if (program && this->Internals->Prepass.IsRendering())
-  {
-    // Depth only: no light is walked, but every sampler needs a unit of its own type.
-    this->Internals->Prepass.NoteProgram(program);
-    if (program->IsUniformUsed("clDepthOnly"))
-    {
-      program->SetUniformi("clDepthOnly", 1);
-      static const char* const names[] = { "clLightData", "clLightView", "clMaster", "clList",
-        "clFarField0", "clFarField1", "clFarField2", "clFarField3", "clFarField4", "clFarField5",
-        "clFarField6" };
-      int k = 0;
-      for (const char* name : names)
-      {
-        const int unit = this->Internals->Prepass.GetSamplerUnit(k++);
-        if (unit >= 0 && program->IsUniformUsed(name))
-        {
-          program->SetUniformi(name, unit);
-        }
-      }
-    }
-    return true;
-  }
   if (!this->Internals->Current || !program)
   {
     return true;
-  }
-  if (program->IsUniformUsed("clDepthOnly"))
-  {
-    program->SetUniformi("clDepthOnly", 0);
   }
   const vtkClusteredLightingAssignment& r = this->Internals->Current->GetResult();
   // Each uniform is set only if the program uses it: debug views let the compiler drop

@@ -482,8 +482,10 @@ public:
   /// Whether the last render shaded the lights in a plain loop, because every light
   /// reaches every cluster (same image as clustered shading, less work).
   vtkGetMacro(ClusteringBypassed, bool);
-  /// Lights assigned to a cluster, on average over the grid's clusters, at the last
-  /// assignment (before per-cluster culling); near GetNumberOfClusteredLights means that
+  /// Lights assigned to a cluster, on average over the grid's clusters (with depth-aware
+  /// clusters, over the clusters that hold fragments, counting the lights whose depth
+  /// extent reaches them), at the last assignment (before per-cluster culling); near
+  /// GetNumberOfClusteredLights means that
   /// clustering culls little (a warning names the cause and the fix once).
   vtkGetMacro(MeanLightsPerCluster, double);
   /// Lights evaluated per pixel of lit geometry, on average, in the last frame that
@@ -548,8 +550,11 @@ public:
 
   //@{
   /**
-   * Counters since construction: light-data uploads, list/master runs, shader rebuilds
-   * of mappers that use the pass.
+   * Counters since construction: light-data uploads, list/master runs, and shader
+   * programs built by mappers that use the pass (sources not built before: a mapper that
+   * switches back to a program VTK's shader cache holds, as every mapper does around the
+   * depth prepass each frame, rebuilds its source but compiles nothing, and is not
+   * counted).
    */
   vtkGetMacro(NumberOfLightUploads, int);
   vtkGetMacro(NumberOfAssignmentUpdates, int);
@@ -591,6 +596,9 @@ public:
   //@}
 
 protected:
+  /// The clustered shading code for one fragment shader (PostReplaceShaderValues).
+  void InjectShadingCode(std::string& fragmentShader, vtkProp* prop);
+
   vtkClusteredLightingPass();
   ~vtkClusteredLightingPass() override;
 

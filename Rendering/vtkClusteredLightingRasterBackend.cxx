@@ -211,7 +211,7 @@ bool vtkClusteredLightingRasterBackend::Assign(vtkOpenGLRenderWindow* rw,
     state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     this->FBO->Bind();
     ok = this->RunListPass(rw, layout, view.NumberOfQuads, parameters, lightView) &&
-      this->RunMasterPass(rw, layout);
+      this->RunMasterPass(rw, layout, parameters.DepthBounds != nullptr);
     this->FBO->RemoveColorAttachments(1);
     this->FBO->UnBind();
   }
@@ -333,7 +333,7 @@ bool vtkClusteredLightingRasterBackend::RunListPass(vtkOpenGLRenderWindow* rw,
 //------------------------------------------------------------------------------
 // One bit per non-empty 32-light batch of each cluster.
 bool vtkClusteredLightingRasterBackend::RunMasterPass(
-  vtkOpenGLRenderWindow* rw, const ClusterTextureLayout& layout)
+  vtkOpenGLRenderWindow* rw, const ClusterTextureLayout& layout, bool depthAware)
 {
   vtkClusteredLightingDebugGroup group("vtkClusteredLighting master pass");
   if (!this->BindTarget(this->Master))
@@ -341,11 +341,23 @@ bool vtkClusteredLightingRasterBackend::RunMasterPass(
     return false;
   }
   rw->GetState()->vtkglViewport(0, 0, layout.MasterWidth, layout.MasterHeight);
-  vtkShaderProgram* program = rw->GetShaderCache()->ReadyShaderProgram(
-    vtkClusteredLightingFullScreenVS, vtkClusteredLightingMasterFS, "");
+  // Two programs: the depth-aware one skips the clusters without fragments.
+  depthAware = depthAware && this->ClusterDepths;
+  std::string fs = vtkClusteredLightingMasterFS;
+  if (depthAware)
+  {
+    vtkShaderProgram::Substitute(fs, "//CL_DEPTH_AWARE", "#define CL_DEPTH_AWARE");
+  }
+  vtkShaderProgram* program =
+    rw->GetShaderCache()->ReadyShaderProgram(vtkClusteredLightingFullScreenVS, fs.c_str(), "");
   if (!program)
   {
     return false;
+  }
+  if (depthAware)
+  {
+    this->ClusterDepths->Activate();
+    program->SetUniformi("clClusterDepths", this->ClusterDepths->GetTextureUnit());
   }
   this->List->Activate();
   program->SetUniformi("clList", this->List->GetTextureUnit());
@@ -357,6 +369,10 @@ bool vtkClusteredLightingRasterBackend::RunMasterPass(
   glDrawArrays(GL_TRIANGLES, 0, 3);
   this->VAO->Release();
   this->List->Deactivate();
+  if (depthAware)
+  {
+    this->ClusterDepths->Deactivate();
+  }
   return true;
 }
 

@@ -12,7 +12,8 @@
  *     may first test the light's sphere against its cluster's view-space bounding box
  *     (ListPassParameters::CullClusters). Shaders: vtkClusteredLightingList{VS,FS}.glsl.
  *  2. Master pass (RunMasterPass): one full-screen triangle folds the list into the R32UI
- *     master texture, one bit per non-empty batch (vtkClusteredLightingMasterFS.glsl).
+ *     master texture, one bit per non-empty batch (vtkClusteredLightingMasterFS.glsl);
+ *     with depth-aware clusters it reads no list texel of a cluster without fragments.
  *
  * GL objects: clQuads (texture buffer, 2 RGBA32F texels per quad), list and master
  * textures (sized by ClusterTextureLayout, re-allocated only when it changes), one FBO,
@@ -72,8 +73,8 @@ private:
   bool RunListPass(vtkOpenGLRenderWindow* rw,
     const vtkClusteredLighting::ClusterTextureLayout& layout, int numberOfQuads,
     const vtkClusteredLighting::ListPassParameters& parameters, vtkTextureObject* lightView);
-  bool RunMasterPass(
-    vtkOpenGLRenderWindow* rw, const vtkClusteredLighting::ClusterTextureLayout& layout);
+  bool RunMasterPass(vtkOpenGLRenderWindow* rw,
+    const vtkClusteredLighting::ClusterTextureLayout& layout, bool depthAware);
   bool BindTarget(vtkTextureObject* tex);
   bool UploadClusterDepths(
     vtkOpenGLRenderWindow* rw, const vtkClusteredLighting::ClusterDepthBounds& bounds);

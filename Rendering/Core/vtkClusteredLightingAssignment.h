@@ -72,8 +72,9 @@ struct ViewData
   int NumberOfQuads = 0;
   int NumberOfAssignedLights = 0; ///< lights with at least one quad
   int NumberOfCulled = 0;         ///< lights with a radius that miss the view frustum
-  /// (light, cluster) pairs of the tile rectangles before per-cluster culling: divided by
-  /// the number of clusters, the lights an average cluster holds.
+  /// (light, cluster) pairs of the tile rectangles before per-cluster culling (with
+  /// depth-aware clusters, only the non-empty clusters the light's depth extent overlaps):
+  /// divided by the number of (non-empty) clusters, the lights an average cluster holds.
   double ClusterCoverage = 0.0;
 };
 
@@ -100,19 +101,71 @@ inline std::vector<float> PackLightData(const std::vector<PreparedLight>& lights
 }
 
 /**
- * View records and list-pass quads for the current view. Lights whose radius is 0, or
- * whose sphere misses the frustum, get no quad (they cost nothing in the list pass).
+ * Depth-aware clusters on the CPU, before the list pass: shrinks a (light, slice) tile
+ * rectangle to the clusters the light's depth extent [d - r, d + r] (d = -c.z) can reach,
+ * i.e. non-empty clusters whose recorded interval [lo, hi] it overlaps. Returns how many
+ * clusters of the rectangle are such (0: the quad is dropped). The margin is at least the list
+ * shader's box margin (1e-4 (z1 + |c|) + 1e-6, with z1 <= hi), and the shader cuts each cell to
+ * [max(slice near, lo), min(slice far, hi)], so every cluster left out here is one the
+ * shader would reject too: the lists are the same, the list pass draws fewer texels.
  */
-inline ViewData ComputeViewData(const std::vector<PreparedLight>& lights, const ViewParameters& v)
+inline int ShrinkToReachableClusters(const ClusterDepthBounds& depths, int tilesX,
+  const glm::dvec3& c, double radius, SliceTileRange& r)
 {
-  ViewData out;
-  const std::size_t n = lights.size();
-  out.LightView.resize(n * FloatsPerLightRecord);
-  out.Quads.reserve(n * FloatsPerQuad);
+  int reachable = 0;
+  const double d = -c.z;
+  const double length = glm::length(c);
+  int lo[2] = { r.TileMax[0] + 1, r.TileMax[1] + 1 };
+  int hi[2] = { r.TileMin[0] - 1, r.TileMin[1] - 1 };
+  for (int ty = r.TileMin[1]; ty <= r.TileMax[1]; ++ty)
+  {
+    for (int tx = r.TileMin[0]; tx <= r.TileMax[0]; ++tx)
+    {
+      double zLo = 0.0, zHi = 0.0;
+      if (!depths.GetInterval(tx, ty, r.Slice, tilesX, zLo, zHi))
+      {
+        continue; // no fragment in this cluster
+      }
+      const double reach = radius + 2e-4 * (std::abs(zHi) + length + radius) + 2e-6;
+      if (zLo > d + reach || zHi < d - reach)
+      {
+        continue;
+      }
+      ++reachable;
+      lo[0] = std::min(lo[0], tx);
+      lo[1] = std::min(lo[1], ty);
+      hi[0] = std::max(hi[0], tx);
+      hi[1] = std::max(hi[1], ty);
+    }
+  }
+  if (reachable > 0)
+  {
+    r.TileMin[0] = lo[0];
+    r.TileMin[1] = lo[1];
+    r.TileMax[0] = hi[0];
+    r.TileMax[1] = hi[1];
+  }
+  return reachable;
+}
+
+/**
+ * View records (into `lightView`, FloatsPerLightRecord per light, for every light) and
+ * list-pass quads (appended to `out`) for lights [begin, end) of the current view. Lights whose
+ * radius is 0, or whose sphere misses the frustum, get no quad (they cost nothing in the list
+ * pass). With depth-aware clusters (`depths` valid and of the view's grid) each quad is
+ * shrunk to the clusters the light can reach (ShrinkToReachableClusters). Ranges are
+ * independent: the assigner computes them in parallel and joins them in order.
+ */
+inline void ComputeViewDataRange(const std::vector<PreparedLight>& lights, const ViewParameters& v,
+  const ClusterDepthBounds* depths, std::size_t begin, std::size_t end, float* lightView,
+  ViewData& out)
+{
+  const bool depthAware = depths && depths->Valid &&
+    depths->Width == v.Grid.TilesX * v.Grid.Slices && depths->Height == v.Grid.TilesY;
   // Spot axes transform like vtkTransform::TransformNormal (inverse transpose), as VTK.
   const glm::dmat3 normalMatrix = glm::transpose(glm::inverse(glm::dmat3(v.WCVC)));
   std::vector<SliceTileRange> ranges;
-  for (std::size_t i = 0; i < n; ++i)
+  for (std::size_t i = begin; i < end; ++i)
   {
     const PreparedLight& l = lights[i];
     const glm::dvec3 c = glm::dvec3(v.WCVC * glm::dvec4(l.PositionWC, 1.0));
@@ -123,7 +176,7 @@ inline ViewData ComputeViewData(const std::vector<PreparedLight>& lights, const 
       const double len = glm::length(dir);
       dir = len > 0.0 ? dir / len : glm::dvec3(0.0);
     }
-    float* o = &out.LightView[i * FloatsPerLightRecord];
+    float* o = lightView + i * FloatsPerLightRecord;
     o[0] = static_cast<float>(c.x);
     o[1] = static_cast<float>(c.y);
     o[2] = static_cast<float>(c.z);
@@ -144,19 +197,48 @@ inline ViewData ComputeViewData(const std::vector<PreparedLight>& lights, const 
       ++out.NumberOfCulled;
       continue;
     }
-    for (const SliceTileRange& r : ranges)
+    int quads = 0;
+    for (SliceTileRange& r : ranges)
     {
+      const int reachable =
+        depthAware ? ShrinkToReachableClusters(*depths, v.Grid.TilesX, c, l.Radius, r) : -1;
+      if (reachable == 0)
+      {
+        continue;
+      }
+      ++quads;
       const float q[FloatsPerQuad] = { static_cast<float>(r.TileMin[0]),
         static_cast<float>(r.TileMin[1]), static_cast<float>(r.TileMax[0]),
         static_cast<float>(r.TileMax[1]), static_cast<float>(r.Slice), static_cast<float>(i), 0.0f,
         0.0f };
       out.Quads.insert(out.Quads.end(), q, q + FloatsPerQuad);
-      out.ClusterCoverage += static_cast<double>(r.TileMax[0] - r.TileMin[0] + 1) *
-        static_cast<double>(r.TileMax[1] - r.TileMin[1] + 1);
+      out.ClusterCoverage += reachable > 0 ? static_cast<double>(reachable)
+                                           : static_cast<double>(r.TileMax[0] - r.TileMin[0] + 1) *
+          static_cast<double>(r.TileMax[1] - r.TileMin[1] + 1);
     }
-    out.NumberOfQuads += static_cast<int>(ranges.size());
-    ++out.NumberOfAssignedLights;
+    out.NumberOfQuads += quads;
+    out.NumberOfAssignedLights += quads > 0 ? 1 : 0;
   }
+}
+
+/// Joins `part` (a later range of the same view) to `out`.
+inline void AppendViewData(ViewData& out, const ViewData& part)
+{
+  out.Quads.insert(out.Quads.end(), part.Quads.begin(), part.Quads.end());
+  out.NumberOfQuads += part.NumberOfQuads;
+  out.NumberOfAssignedLights += part.NumberOfAssignedLights;
+  out.NumberOfCulled += part.NumberOfCulled;
+  out.ClusterCoverage += part.ClusterCoverage;
+}
+
+/// ComputeViewDataRange over every light, in one thread.
+inline ViewData ComputeViewData(const std::vector<PreparedLight>& lights, const ViewParameters& v,
+  const ClusterDepthBounds* depths = nullptr)
+{
+  ViewData out;
+  out.LightView.resize(lights.size() * FloatsPerLightRecord);
+  out.Quads.reserve(lights.size() * FloatsPerQuad);
+  ComputeViewDataRange(lights, v, depths, 0, lights.size(), out.LightView.data(), out);
   return out;
 }
 

@@ -12,7 +12,10 @@
 //
 // Depth-aware clusters (CL_DEPTH_AWARE): the cell is cut to the depths the cluster's
 // fragments really have (clClusterDepths, from the depth prepass,
-// vtkClusteredLightingDepthBounds.h); a cluster without fragments gets no light.
+// vtkClusteredLightingDepthBounds.h); a cluster without fragments gets no light. The
+// CPU has already shrunk each quad to the clusters whose intervals the light's depth
+// extent overlaps (ShrinkToReachableClusters, vtkClusteredLightingAssignment.h), a subset
+// of what this test rejects, so it only saves texels.
 //CL_DEPTH_AWARE
 
 uniform ivec4 clGrid;        // tilesX, tilesY, slices, batchRows

@@ -25,7 +25,6 @@ int clFindLSB(uint v)
 //    (spot axis VC, explicit radius: the light model's own range, 1e30 when none)
 uniform samplerBuffer clLightData;
 uniform samplerBuffer clLightView;
-uniform int clDepthOnly; // 1 in the depth prepass: walk no light (colour is masked)
 //CL_IF(CLUSTERED)
 uniform usampler2D clMaster;
 uniform usampler2D clList;

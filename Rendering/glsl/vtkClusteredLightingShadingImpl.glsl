@@ -15,7 +15,7 @@
 //CL_ENDIF
 //CL_IF(CLUSTERED)
   ivec3 clCluster = clComputeCluster(vertexVC);
-  for (int clM = 0; clM < (clDepthOnly != 0 ? 0 : clMasterTexels); ++clM)
+  for (int clM = 0; clM < clMasterTexels; ++clM)
   {
     uint clMask = texelFetch(clMaster, clMasterTexel(clCluster, clM), 0).r;
     while (clMask != 0u)
@@ -29,7 +29,7 @@
         clBits &= clBits - 1u;
 //CL_ENDIF
 //CL_IF(BRUTE_FORCE)
-  for (int clLight = 0; clLight < (clDepthOnly != 0 ? 0 : clLightCount); ++clLight)
+  for (int clLight = 0; clLight < clLightCount; ++clLight)
   {
     {
       {
@@ -50,7 +50,6 @@
     }
   }
 //CL_IF(FAR_FIELD)
-  if (clDepthOnly == 0)
   {
     // The far field: the moments at the fragment (trilinear), then the diffuse kernel in
     // the normal's direction and the Phong lobe in the mirrored view's direction.

@@ -157,7 +157,7 @@ std::vector<Step> MakePlan(const PlanOptions& options)
 
     // Stock VTK 9.1 with the same lights as vtkLights (on the house too, where triangles
     // are large: the clustered/stock ratio depends on the mesh, see docs/benchmark).
-    const std::vector<int> stockCounts = quick ? std::vector<int>{ 8 }
+    const std::vector<int> stockCounts = quick ? std::vector<int>{ 1, 8 }
       : main                                   ? std::vector<int>{ 1, 8, 64, 256 }
                                                : std::vector<int>{ 1, 8 };
     for (int n : stockCounts)

@@ -238,6 +238,85 @@ void WriteCSV(const std::vector<Row>& rows, const std::string& path)
   }
 }
 
+//------------------------------------------------------------------------------
+// The floor of a clustered frame, from rows of the same run: the base frame (stock VTK
+// with one light: the geometry rasterized and shaded once) plus, per pixel, only the
+// lights that really reach it, each at the cost of one light evaluation of the same
+// shading code (the slope of the brute-force rows, which evaluate every light at every
+// pixel). The default frame is then split into that floor and what it pays above it.
+static void WriteFloors(const std::vector<Row>& rows, std::ostream& out)
+{
+  auto find = [&rows](const std::string& scene, int lights, const std::string& method,
+                const std::string& sweep) -> const Row*
+  {
+    for (const Row& r : rows)
+    {
+      if (r.Scene == scene && r.Layout == "uniform" && r.Lights == lights && r.Method == method &&
+        r.Sweep == sweep && !std::isnan(r.MsMedian))
+      {
+        return &r;
+      }
+    }
+    return nullptr;
+  };
+  std::vector<std::string> scenes;
+  for (const Row& r : rows)
+  {
+    if (std::find(scenes.begin(), scenes.end(), r.Scene) == scenes.end())
+    {
+      scenes.push_back(r.Scene);
+    }
+  }
+  bool header = false;
+  for (const std::string& scene : scenes)
+  {
+    const Row* base = find(scene, 1, "stock", "count");
+    const Row* stock8 = find(scene, 8, "stock", "count");
+    const Row* frame = find(scene, 4096, "clustered", "count");
+    // The per-light cost: the brute-force rows with the fewest and the most lights.
+    const Row* fewest = nullptr;
+    const Row* most = nullptr;
+    for (const Row& r : rows)
+    {
+      if (r.Scene == scene && r.Layout == "uniform" && r.Method == "brute" && r.Sweep == "count" &&
+        !std::isnan(r.MsMedian))
+      {
+        fewest = (!fewest || r.Lights < fewest->Lights) ? &r : fewest;
+        most = (!most || r.Lights > most->Lights) ? &r : most;
+      }
+    }
+    if (!base || !frame || !fewest || !most || fewest == most || std::isnan(frame->Reached))
+    {
+      continue;
+    }
+    if (!header)
+    {
+      out
+        << "\n## Floors (4,096 uniform lights)\n\n"
+           "floor = stock VTK with 1 light + (reaching/px - 1) x one light evaluation "
+           "(the brute-force rows' slope); the frame above it is split into the depth "
+           "prepass, the assignment, the lights evaluated beyond those that reach, and the "
+           "rest (cluster walk, far field).\n\n"
+           "| scene | frame ms | floor ms | frame / floor | floor / stock 8 | frame / stock 8 "
+           "| ms per light evaluation | prepass ms | assign ms | extra evaluations ms | rest ms |\n"
+           "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+      header = true;
+    }
+    const double perLight =
+      (most->MsMedian - fewest->MsMedian) / static_cast<double>(most->Lights - fewest->Lights);
+    const double floor = base->MsMedian + std::max(0.0, frame->Reached - 1.0) * perLight;
+    const double prepass = std::isnan(frame->PrepassMs) ? 0.0 : frame->PrepassMs;
+    const double assign = std::isnan(frame->AssignMs) ? 0.0 : frame->AssignMs;
+    const double extra = std::max(0.0, frame->Evaluated - frame->Reached) * perLight;
+    const double rest = frame->MsMedian - floor - prepass - assign - extra;
+    const double s8 = stock8 ? stock8->MsMedian : NAN;
+    out << "| " << scene << " | " << Num(frame->MsMedian) << " | " << Num(floor) << " | "
+        << Num(frame->MsMedian / floor, 3) << " | " << Num(floor / s8, 3) << " | "
+        << Num(frame->MsMedian / s8, 3) << " | " << Num(perLight, 3) << " | " << Num(prepass)
+        << " | " << Num(assign) << " | " << Num(extra) << " | " << Num(rest) << " |\n";
+  }
+}
+
 void WriteMarkdown(const std::vector<Row>& rows, const std::string& path)
 {
   std::ofstream out(path);
@@ -256,6 +335,7 @@ void WriteMarkdown(const std::vector<Row>& rows, const std::string& path)
         << " | " << Num(r.ListMiB, 3) << " | " << Num(r.PrepassMs, 3) << " | "
         << Num(r.ShadedPerVisible, 3) << " |\n";
   }
+  WriteFloors(rows, out);
 }
 
 static std::string ReadFirstLine(const char* path, const char* key)

@@ -5,11 +5,15 @@
 // offsets), at scene scales from 1e-3 to 1e6, perspective and parallel; and the intervals
 // are tight (they could fail: a test that everything is non-empty would pass trivially).
 #include "TestUtilities.h"
+#include "vtkClusteredLightingAssignment.h"
 #include "vtkClusteredLightingDepthBounds.h"
+#include "vtkClusteredLightingReference.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
+#include <random>
 #include <vector>
 
 using namespace vtkClusteredLighting;
@@ -274,4 +278,99 @@ TEST(DepthBounds, AnObliqueProjectionIsNotUsed)
     ClusteredLightingTest::MakeGrid(16, 8, 32, 160, 120, 0.5, 40.0, SlicingScheme::Exponential);
   const std::vector<float> depth(160 * 120, 0.5f);
   EXPECT_FALSE(ComputeClusterDepthBounds({ depth.data(), 160, 120 }, P, g, {}).Valid);
+}
+
+// The CPU side of depth-aware clusters: list-pass quads shrunk to the clusters a light's
+// depth extent reaches (ShrinkToReachableClusters) lose no cluster that the reference
+// (the cell cut to the recorded depths, exact sphere-cell distance) says the light
+// reaches; they do draw fewer clusters; and the quads computed in chunks, as the assigner
+// does over its threads, are the same quads in the same order.
+TEST(DepthBounds, QuadsShrinkToTheClustersALightCanReach)
+{
+  const double nearVC = 0.5, farVC = 40.0;
+  const glm::dmat4 P = ClusteredLightingTest::Perspective(40.0, 4.0 / 3.0, nearVC, farVC);
+  const Synthetic s = Render(P, 160, 120, 1.0);
+  ClusterGridParams g =
+    ClusteredLightingTest::MakeGrid(16, 8, 32, 160, 120, nearVC, farVC, SlicingScheme::Exponential);
+  const VisibleRange range = MeasureVisibleRange(s.Image(), P);
+  ASSERT_TRUE(range.Visible);
+  ChooseSlicingRange(true, range.Nearest, range.Deepest, g);
+  const ClusterDepthBounds b = ComputeClusterDepthBounds(s.Image(), P, g, DepthBoundsOptions());
+  ASSERT_TRUE(b.Valid);
+
+  ViewParameters v; // world = view
+  v.VCDC = P;
+  v.Grid = g;
+  std::mt19937 random(12);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<PreparedLight> lights;
+  for (int i = 0; i < 600; ++i)
+  {
+    PreparedLight l{};
+    l.PositionWC = glm::dvec3(-4.0 + 8.0 * unit(random), -3.0 + 5.0 * unit(random),
+      -12.0 + 11.8 * unit(random)); // some straddle the near plane
+    l.Radius = 0.05 + 1.5 * unit(random);
+    l.Color = glm::dvec3(1.0);
+    l.Attenuation = glm::dvec3(0.0, 0.0, 1.0);
+    l.CosCone = -2.0;
+    l.ExplicitRadius = std::numeric_limits<double>::infinity();
+    lights.push_back(l);
+  }
+  const ViewData whole = ComputeViewData(lights, v);
+  const ViewData cut = ComputeViewData(lights, v, &b);
+  EXPECT_LT(cut.NumberOfQuads, whole.NumberOfQuads);
+  EXPECT_LT(cut.ClusterCoverage, 0.5 * whole.ClusterCoverage);
+  EXPECT_EQ(cut.LightView, whole.LightView);
+
+  // (light, slice) -> shrunk rectangle.
+  std::map<std::pair<int, int>, std::array<int, 4>> rects;
+  for (int q = 0; q < cut.NumberOfQuads; ++q)
+  {
+    const float* f = &cut.Quads[static_cast<std::size_t>(q) * FloatsPerQuad];
+    rects[{ static_cast<int>(f[5]), static_cast<int>(f[4]) }] = { static_cast<int>(f[0]),
+      static_cast<int>(f[1]), static_cast<int>(f[2]), static_cast<int>(f[3]) };
+  }
+  int reached = 0, missed = 0;
+  std::vector<SliceTileRange> ranges;
+  for (std::size_t i = 0; i < lights.size(); ++i)
+  {
+    ranges.clear();
+    ComputeSliceTileRanges(lights[i].PositionWC, lights[i].Radius, P, g, ranges);
+    for (const SliceTileRange& r : ranges)
+    {
+      for (int ty = r.TileMin[1]; ty <= r.TileMax[1]; ++ty)
+      {
+        for (int tx = r.TileMin[0]; tx <= r.TileMax[0]; ++tx)
+        {
+          const ClusterCell cell = ComputeClusterCell(tx, ty, r.Slice, g, P, nearVC, farVC, &b);
+          if (cell.Empty || DistanceToCell(lights[i].PositionWC, cell) > lights[i].Radius)
+          {
+            continue;
+          }
+          ++reached;
+          const auto it = rects.find({ static_cast<int>(i), r.Slice });
+          const bool covered = it != rects.end() && tx >= it->second[0] && ty >= it->second[1] &&
+            tx <= it->second[2] && ty <= it->second[3];
+          missed += covered ? 0 : 1;
+        }
+      }
+    }
+  }
+  EXPECT_GT(reached, 1000);
+  EXPECT_EQ(missed, 0);
+
+  // In chunks of 7 lights, joined in order: the same records and quads.
+  ViewData joined;
+  joined.LightView.resize(lights.size() * FloatsPerLightRecord);
+  for (std::size_t begin = 0; begin < lights.size(); begin += 7)
+  {
+    ViewData part;
+    ComputeViewDataRange(
+      lights, v, &b, begin, std::min(begin + 7, lights.size()), joined.LightView.data(), part);
+    AppendViewData(joined, part);
+  }
+  EXPECT_EQ(joined.Quads, cut.Quads);
+  EXPECT_EQ(joined.LightView, cut.LightView);
+  EXPECT_EQ(joined.NumberOfQuads, cut.NumberOfQuads);
+  EXPECT_EQ(joined.NumberOfAssignedLights, cut.NumberOfAssignedLights);
 }

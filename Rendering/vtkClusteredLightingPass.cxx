@@ -845,8 +845,12 @@ bool vtkClusteredLightingPass::PostReplaceShaderValues(std::string& vertexShader
   // Around the depth prepass a mapper switches between two programs every frame and
   // rebuilds the source each time (VTK's shader cache keeps both compiled): only sources
   // not built before count.
-  const std::size_t hash = std::hash<std::string>()(
-    vertexShader + "\n//GS\n" + geometryShader + "\n//FS\n" + fragmentShader);
+  const std::hash<std::string> h;
+  std::size_t hash = h(vertexShader);
+  for (const std::string* source : { &geometryShader, &fragmentShader })
+  {
+    hash = hash * 1000003u ^ h(*source); // order matters: a source moved to another stage differs
+  }
   if (this->Internals->BuiltSources.insert(hash).second)
   {
     ++this->NumberOfShaderBuilds;

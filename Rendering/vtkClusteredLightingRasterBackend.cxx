@@ -248,6 +248,34 @@ bool vtkClusteredLightingRasterBackend::UploadClusterDepths(
 }
 
 //------------------------------------------------------------------------------
+// The list and master passes have two programs each: the depth-aware one (CL_DEPTH_AWARE)
+// reads the cluster-depth texture, activated here (DeactivateDepths after the draw).
+vtkShaderProgram* vtkClusteredLightingRasterBackend::ReadyProgram(
+  vtkOpenGLRenderWindow* rw, const char* vs, const char* fs, bool depthAware)
+{
+  std::string source = fs;
+  if (depthAware)
+  {
+    vtkShaderProgram::Substitute(source, "//CL_DEPTH_AWARE", "#define CL_DEPTH_AWARE");
+  }
+  vtkShaderProgram* program = rw->GetShaderCache()->ReadyShaderProgram(vs, source.c_str(), "");
+  if (program && depthAware)
+  {
+    this->ClusterDepths->Activate();
+    program->SetUniformi("clClusterDepths", this->ClusterDepths->GetTextureUnit());
+  }
+  return program;
+}
+
+void vtkClusteredLightingRasterBackend::DeactivateDepths(bool depthAware)
+{
+  if (depthAware)
+  {
+    this->ClusterDepths->Deactivate();
+  }
+}
+
+//------------------------------------------------------------------------------
 // One instanced quad per (light, slice) rectangle, bits OR-ed into the list texture.
 bool vtkClusteredLightingRasterBackend::RunListPass(vtkOpenGLRenderWindow* rw,
   const ClusterTextureLayout& layout, int numberOfQuads, const ListPassParameters& parameters,
@@ -274,22 +302,11 @@ bool vtkClusteredLightingRasterBackend::RunListPass(vtkOpenGLRenderWindow* rw,
   {
     return true;
   }
-  // Two programs: the depth-aware one declares the cluster-depth sampler.
-  std::string fs = vtkClusteredLightingListFS;
-  if (depthAware)
-  {
-    vtkShaderProgram::Substitute(fs, "//CL_DEPTH_AWARE", "#define CL_DEPTH_AWARE");
-  }
   vtkShaderProgram* program =
-    rw->GetShaderCache()->ReadyShaderProgram(vtkClusteredLightingListVS, fs.c_str(), "");
+    this->ReadyProgram(rw, vtkClusteredLightingListVS, vtkClusteredLightingListFS, depthAware);
   if (!program)
   {
     return false;
-  }
-  if (depthAware)
-  {
-    this->ClusterDepths->Activate();
-    program->SetUniformi("clClusterDepths", this->ClusterDepths->GetTextureUnit());
   }
   vtkTextureObject* quads = this->Quads.GetTexture();
   quads->Activate();
@@ -323,10 +340,7 @@ bool vtkClusteredLightingRasterBackend::RunListPass(vtkOpenGLRenderWindow* rw,
   this->VAO->Release();
   lightView->Deactivate();
   quads->Deactivate();
-  if (depthAware)
-  {
-    this->ClusterDepths->Deactivate();
-  }
+  this->DeactivateDepths(depthAware);
   return true;
 }
 
@@ -341,23 +355,13 @@ bool vtkClusteredLightingRasterBackend::RunMasterPass(
     return false;
   }
   rw->GetState()->vtkglViewport(0, 0, layout.MasterWidth, layout.MasterHeight);
-  // Two programs: the depth-aware one skips the clusters without fragments.
+  // The depth-aware program skips the clusters without fragments.
   depthAware = depthAware && this->ClusterDepths;
-  std::string fs = vtkClusteredLightingMasterFS;
-  if (depthAware)
-  {
-    vtkShaderProgram::Substitute(fs, "//CL_DEPTH_AWARE", "#define CL_DEPTH_AWARE");
-  }
-  vtkShaderProgram* program =
-    rw->GetShaderCache()->ReadyShaderProgram(vtkClusteredLightingFullScreenVS, fs.c_str(), "");
+  vtkShaderProgram* program = this->ReadyProgram(
+    rw, vtkClusteredLightingFullScreenVS, vtkClusteredLightingMasterFS, depthAware);
   if (!program)
   {
     return false;
-  }
-  if (depthAware)
-  {
-    this->ClusterDepths->Activate();
-    program->SetUniformi("clClusterDepths", this->ClusterDepths->GetTextureUnit());
   }
   this->List->Activate();
   program->SetUniformi("clList", this->List->GetTextureUnit());
@@ -369,10 +373,7 @@ bool vtkClusteredLightingRasterBackend::RunMasterPass(
   glDrawArrays(GL_TRIANGLES, 0, 3);
   this->VAO->Release();
   this->List->Deactivate();
-  if (depthAware)
-  {
-    this->ClusterDepths->Deactivate();
-  }
+  this->DeactivateDepths(depthAware);
   return true;
 }
 

@@ -32,6 +32,7 @@
 
 class vtkOpenGLFramebufferObject;
 class vtkOpenGLVertexArrayObject;
+class vtkShaderProgram;
 
 class vtkClusteredLightingRasterBackend : public vtkClusteredLightingAssignmentBackend
 {
@@ -76,6 +77,9 @@ private:
   bool RunMasterPass(vtkOpenGLRenderWindow* rw,
     const vtkClusteredLighting::ClusterTextureLayout& layout, bool depthAware);
   bool BindTarget(vtkTextureObject* tex);
+  vtkShaderProgram* ReadyProgram(
+    vtkOpenGLRenderWindow* rw, const char* vs, const char* fs, bool depthAware);
+  void DeactivateDepths(bool depthAware);
   bool UploadClusterDepths(
     vtkOpenGLRenderWindow* rw, const vtkClusteredLighting::ClusterDepthBounds& bounds);
   void BindVAO();

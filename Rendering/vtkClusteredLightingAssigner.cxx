@@ -406,12 +406,13 @@ void vtkClusteredLightingAssigner::PrepareLights(const vtkClusteredLightingAssig
   LightPreparationOptions options = inputs.Preparation;
   if (inputs.ErrorBudget > 0.0)
   {
-    // Validate once, then pick the cutoff that meets the budget (vtkClusteredLightingLights.h).
+    // Validate once, then pick the cutoff that meets the budget over the lights that are
+    // culled, not split by the far field (ChooseBudgetCutoff).
     LightPreparationOptions probe = options;
     probe.MortonOrder = false;
     const PreparedLights valid = vtkClusteredLighting::PrepareLights(lights.Sources, probe, nameOf);
-    options.Cutoff = ChooseCutoffForErrorBudget(
-      valid.Lights, inputs.ErrorBudget, ComputeErrorBudgetSamples(valid.Lights), inputs.Windowed);
+    options.Cutoff = vtkClusteredLighting::ChooseBudgetCutoff(
+      valid.Lights, inputs.ErrorBudget, inputs.FarField.Enabled, options.Cutoff, inputs.Windowed);
   }
   this->EffectiveCutoff = options.Cutoff;
   this->Prepared = vtkClusteredLighting::PrepareLights(lights.Sources, options, nameOf);

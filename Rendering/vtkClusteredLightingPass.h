@@ -171,8 +171,11 @@ public:
    * ContributionCutoff and, whenever the lights change, picks the largest cutoff whose
    * summed cut tails stay within the budget at sample points spread over the lights'
    * bounding box and at the lights themselves (a conservative bound: N.L is taken as 1).
-   * GetEffectiveCutoff() reports the choice. Range [0, 255]. Default is 0 (use
-   * ContributionCutoff).
+   * With FarField on, the lights it splits have no cut tail (their far parts are added
+   * back, within ComputeFarFieldErrorBound), so only the culled lights (spot lights,
+   * explicit radii) choose the cutoff; with none, ContributionCutoff is kept. The budget
+   * does not bound the far field's own error. GetEffectiveCutoff() reports the choice.
+   * Range [0, 255]. Default is 0 (use ContributionCutoff).
    */
   void SetErrorBudgetInSteps(double steps);
   double GetErrorBudgetInSteps() { return 255.0 * this->ErrorBudget; }

@@ -100,6 +100,34 @@ inline bool IsFarFieldLight(const PreparedLight& l)
   return std::isinf(l.ExplicitRadius) && l.CosCone < -1.5;
 }
 
+/**
+ * The cutoff an error budget asks for (vtkClusteredLightingPass::ErrorBudget). The budget
+ * bounds the cut tails. With the far field on, a light it splits has no cut tail: its far
+ * part is added back, within the far field's own stated bound (ComputeFarFieldErrorBound).
+ * So only the lights that are culled (spot lights and lights with an explicit radius; every
+ * light with the far field off) choose the cutoff, with ChooseCutoffForErrorBudget over
+ * their tails; with none, `cutoff` (the pass's ContributionCutoff) is kept. Lowering the
+ * cutoff of split lights would only move work from the far field to the near field.
+ */
+inline double ChooseBudgetCutoff(const std::vector<PreparedLight>& lights, double budget,
+  bool farField, double cutoff, bool windowed = false)
+{
+  std::vector<PreparedLight> culled;
+  culled.reserve(farField ? 0 : lights.size());
+  for (const PreparedLight& l : lights)
+  {
+    if (!farField || !IsFarFieldLight(l))
+    {
+      culled.push_back(l);
+    }
+  }
+  if (culled.empty())
+  {
+    return cutoff;
+  }
+  return ChooseCutoffForErrorBudget(culled, budget, ComputeErrorBudgetSamples(culled), windowed);
+}
+
 /// A regular grid of nodes over an axis-aligned box.
 struct FarFieldGrid
 {

@@ -121,6 +121,11 @@
     {
       clFarDiffuse = vec3(0.0);
       clFarSpecular = vec3(0.0);
+//CL_IF(PHONG)
+      // Every far part adds light (never less than 0), so the sum so far is a lower bound:
+      // once it saturates every channel, the lights left cannot change the pixel.
+      vec3 clNearSum = gl_FragData[0].rgb + clDiffuse * diffuseColor + clSpecular * specularColor;
+//CL_ENDIF
       for (int clI = 0; clI < clLightCount; ++clI)
       {
         vec3 clL;
@@ -140,6 +145,13 @@
         }
 //CL_IF(COUNT)
         ++clEvaluated;
+//CL_ENDIF
+//CL_IF(PHONG)
+        if (all(greaterThanEqual(
+              clNearSum + clFarDiffuse * diffuseColor + clFarSpecular * specularColor, vec3(1.0))))
+        {
+          break;
+        }
 //CL_ENDIF
       }
     }

@@ -139,16 +139,42 @@ void Context::SetView()
 //------------------------------------------------------------------------------
 void Context::MakeLights(int n, const std::string& layout)
 {
+  this->RemoveRendererLights();
   this->Layout = layout;
   ClusteredLightingScenes::LightParameters params;
   params.Intensity = this->Current->Intensity;
   params.TargetRadius = this->Current->Radius;
+  if (layout == "dense")
+  {
+    params.Intensity = 1.0;
+    params.Quadratic = 8.0;
+  }
   using ClusteredLightingScenes::Layout;
   const Layout kind = layout == "clumped" ? Layout::Clumped
     : layout == "hard"                    ? Layout::Hard
                                           : Layout::Uniform;
   ClusteredLightingScenes::MakeLights(this->Lights, n, kind, this->Current->LightBoxLo,
     this->Current->LightBoxHi, params, 7, this->Current->CameraPosition);
+  if (layout == "always-on")
+  {
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      this->Lights->SetIntensity(i, 0.005);
+      this->Lights->SetAttenuation(i, 1.0, 0.0, 0.0);
+    }
+    this->AddStockLights(this->RendererLights);
+    this->Lights->SetNumberOfLights(0);
+  }
+}
+
+//------------------------------------------------------------------------------
+void Context::RemoveRendererLights()
+{
+  for (auto& l : this->RendererLights)
+  {
+    this->Renderer->RemoveLight(l);
+  }
+  this->RendererLights.clear();
 }
 
 //------------------------------------------------------------------------------
@@ -272,7 +298,7 @@ Row Context::Measure(const Step& step)
   row.Method = step.Method;
   row.Sweep = step.Sweep;
   row.Value = step.Value;
-  row.Lights = static_cast<int>(this->Lights->GetNumberOfLights());
+  row.Lights = static_cast<int>(this->Lights->GetNumberOfLights() + this->RendererLights.size());
   row.Frames = step.Frames;
   row.Note = step.Note;
   const bool clustered = step.Method == "clustered";
@@ -287,7 +313,7 @@ Row Context::Measure(const Step& step)
   this->Pass->SetMeasureTimings(clustered);
   row.FirstFrameMs = ClusteredLightingScenes::TimeRender(this->Window); // shaders, assignment
   ClusteredLightingScenes::TimeRender(this->Window);
-  std::vector<double> ms, assign, update, shade, prepass, shaded;
+  std::vector<double> ms, assign, update, shade, prepass, shaded, farBuild;
   for (int f = 0; f < step.Frames; ++f)
   {
     if (step.Moving)
@@ -308,6 +334,7 @@ Row Context::Measure(const Step& step)
       shade.push_back(this->Pass->GetLastShadingTime());
       prepass.push_back(this->Pass->GetLastDepthPrepassTime());
       shaded.push_back(this->Pass->GetShadedFragmentsPerVisiblePixel());
+      farBuild.push_back(this->Pass->GetLastFarFieldBuildTime());
     }
   }
   if (step.AnimateLights)
@@ -325,6 +352,11 @@ Row Context::Measure(const Step& step)
     row.ShadeMs = Median(shade);
     row.PrepassMs = Median(prepass);
     row.ShadedPerVisible = Median(shaded);
+    if (this->Pass->GetNumberOfFarFieldLights() > 0)
+    {
+      row.FarBuildMs = Median(farBuild);
+      row.FarBoundSteps = this->Pass->ComputeFarFieldErrorBound(); // in steps
+    }
     row.ListMiB = this->Pass->GetListTextureBytes() / 1048576.0;
     row.MasterMiB = this->Pass->GetMasterTextureBytes() / 1048576.0;
     row.LightsMiB = this->Pass->GetLightBufferBytes() / 1048576.0;
@@ -346,13 +378,15 @@ Row Context::Measure(const Step& step)
     }
     this->Renderer->SetPass(this->Pass);
   }
-  std::printf("%-6s %-8s %6d %-9s %-9s %-14s %8.1f ms [%7.1f, %7.1f]  assign %6s  lights %6s  "
-              "eval/px %6s reach/px %6s  max err %5s  rmse %7s  prepass %6s  shaded/px %5s\n",
+  std::printf(
+    "%-6s %-8s %6d %-9s %-9s %-14s %8.1f ms [%7.1f, %7.1f]  assign %6s  lights %6s  "
+    "eval/px %6s reach/px %6s  max err %5s  rmse %7s  prepass %6s  shaded/px %5s  far build "
+    "%6s bound %5s\n",
     row.Scene.c_str(), row.Layout.c_str(), row.Lights, row.Method.c_str(), row.Sweep.c_str(),
     row.Value.c_str(), row.MsMedian, row.MsMin, row.MsMax, Num(row.AssignMs).c_str(),
     Num(row.LightUpdateMs).c_str(), Num(row.Evaluated).c_str(), Num(row.Reached).c_str(),
     Num(row.MaxError * 255.0).c_str(), Num(row.RMSE * 255.0).c_str(), Num(row.PrepassMs).c_str(),
-    Num(row.ShadedPerVisible).c_str());
+    Num(row.ShadedPerVisible).c_str(), Num(row.FarBuildMs).c_str(), Num(row.FarBoundSteps).c_str());
   std::fflush(stdout);
   return row;
 }

@@ -45,6 +45,8 @@ struct Row
   double AssignMs = NAN, LightUpdateMs = NAN, ShadeMs = NAN, FirstFrameMs = NAN;
   double Evaluated = NAN, Reached = NAN;
   double PrepassMs = NAN, ShadedPerVisible = NAN; ///< depth prepass; fragments shaded per pixel
+  double FarBuildMs = NAN;    ///< the far field's last build (every frame when lights move)
+  double FarBoundSteps = NAN; ///< the far field's stated bound (ComputeFarFieldErrorBound)
   double MaxError = NAN, RMSE = NAN, OverOneStep = NAN;
   double ListMiB = NAN, MasterMiB = NAN, LightsMiB = NAN;
   double Cutoff = NAN, Budget = NAN;
@@ -59,7 +61,15 @@ public:
   /// Loads a scene's geometry (quick: the bunny without subdivision); returns its
   /// triangle count, or -1 if its data is missing.
   long long LoadScene(const Scene& scene, bool quick);
-  /// Fills the light set for a step (seeded: the same lights every run).
+  /**
+   * Fills the light set for a step (seeded: the same lights every run). Layouts uniform,
+   * clumped and hard use the scene's lights (attenuation for its radius at the default
+   * cutoff); two more are lights as users write them (issue 11):
+   *  - dense: inverse-square lights with attenuation (1, 0, 8), intensity 1, no radius;
+   *  - always-on: n positional vtkLights of the renderer (not the light set) with VTK's
+   *    default attenuation (1, 0, 0), which never falls off, intensity 0.005 each (at
+   *    VTK's default 1, 300 of them turn every pixel white in both images).
+   */
   void MakeLights(int n, const std::string& layout);
   /// The exact reference image of the current lights at the scene's view.
   void MakeReference();
@@ -80,6 +90,7 @@ private:
   void MeasureCounts(Row& row);
   void NudgeLights(int frame);
   void AddStockLights(std::vector<vtkSmartPointer<vtkLight>>& added);
+  void RemoveRendererLights();
 
   vtkNew<vtkRenderWindow> Window;
   vtkNew<vtkRenderer> Renderer;
@@ -90,6 +101,7 @@ private:
   std::vector<float> Reference;        ///< exact image of the current lights at the view
   std::vector<unsigned char> Geometry; ///< pixels that show geometry at the view
   double Nudged = 0.0;                 ///< how far NudgeLights moved the lights
+  std::vector<vtkSmartPointer<vtkLight>> RendererLights; ///< the "always-on" layout's lights
 };
 
 /// Max error, RMSE and share of pixels off by more than one 8-bit step, into row.

@@ -105,7 +105,9 @@ std::vector<Step> MakePlan(const PlanOptions& options)
         s.Layout = layout;
         s.Lights = n;
         s.Value = std::to_string(n);
-        s.Reference = n <= 16384; // brute force takes minutes per frame above
+        // Brute force takes seconds to minutes per frame: a reference up to 16,384 lights,
+        // and one at 65,536 uniform lights (about 4 minutes, rendered once).
+        s.Reference = n <= 16384 || (layout == "uniform" && n == 65536);
         plan.push_back(s);
         if (layout == "uniform" && n <= 16384)
         {
@@ -118,21 +120,37 @@ std::vector<Step> MakePlan(const PlanOptions& options)
         }
       }
     }
+    // Lights as users write them (issue 11), each with its brute-force peer: 2,000 dense
+    // inverse-square lights (attenuation (1, 0, 8), intensity 1, no radius), and 300
+    // vtkLights of the renderer with VTK's default attenuation (1, 0, 0).
+    if (main && !quick)
+    {
+      static const char* const layouts[2] = { "dense", "always-on" };
+      static const int lights[2] = { 2000, 300 };
+      for (int k = 0; k < 2; ++k)
+      {
+        Step s = base;
+        s.Layout = layouts[k];
+        s.Lights = lights[k];
+        s.Value = std::to_string(lights[k]);
+        plan.push_back(s);
+        s.Method = "brute";
+        s.Counts = false;
+        s.Apply = [](vtkClusteredLightingPass* p)
+        { p->SetShadingMode(vtkClusteredLightingPass::SHADING_BRUTE_FORCE); };
+        plan.push_back(s);
+      }
+    }
     // Animated lights: every light moves every frame, so they are read, prepared and
     // uploaded every frame on top of the view's assignment (light_update_ms).
     if (main)
     {
-      std::vector<long long> animated = { 4096 };
-      if (!quick)
+      // A fixed array: GCC 12 warns (-Wfree-nonheap-object) on a vector grown here.
+      const long long animated[3] = { 4096, 65536, options.LargestLights };
+      const int rows = quick ? 1 : (options.LargestLights > 0 ? 3 : 2);
+      for (int k = 0; k < rows; ++k)
       {
-        animated.push_back(65536);
-        if (options.LargestLights > 0)
-        {
-          animated.push_back(options.LargestLights);
-        }
-      }
-      for (long long n : animated)
-      {
+        const long long n = animated[k];
         Step s = base;
         s.Lights = static_cast<int>(n);
         s.Sweep = "lights";

@@ -183,6 +183,54 @@ TEST(FarFieldPlan, OnlyInverseSquarePointLightsWithoutRadiusGoFar)
   EXPECT_FALSE(IsFarFieldLight(p.Lights[2]));
 }
 
+// The error budget bounds cut tails: lights the far field splits have none, so only the
+// culled ones (spot lights, explicit radii; all with the far field off) choose the cutoff.
+TEST(FarFieldPlan, ErrorBudgetChoosesTheCutoffFromTheCulledLightsOnly)
+{
+  std::vector<LightSource> sources(200);
+  for (std::size_t i = 0; i < sources.size(); ++i)
+  {
+    LightSource& s = sources[i];
+    s.PositionWC = glm::dvec3(std::sin(i * 2.3) * 5, std::cos(i * 1.1) * 5, std::sin(i * 0.37) * 2);
+    s.Color = glm::dvec3(1.0);
+    s.Attenuation = glm::dvec3(1.0, 0.0, 8.0);
+  }
+  const LightPreparationOptions options{ 1.0 / 1024.0, false };
+  const PreparedLights split = PrepareLights(sources, options);
+  const double budget = 1.0 / 255.0;
+  // All split: no cut tail, the given cutoff stays; far field off: the budget's choice,
+  // below it (at 1/1024 these tails add up to more than one step).
+  EXPECT_EQ(ChooseBudgetCutoff(split.Lights, budget, true, 1.0 / 1024.0), 1.0 / 1024.0);
+  const double allCulled = ChooseBudgetCutoff(split.Lights, budget, false, 1.0 / 1024.0);
+  EXPECT_DOUBLE_EQ(allCulled,
+    ChooseCutoffForErrorBudget(split.Lights, budget, ComputeErrorBudgetSamples(split.Lights)));
+  EXPECT_LT(allCulled, 1.0 / 1024.0);
+  // A quarter of them spot lights: those alone choose, and their tails meet the budget.
+  for (std::size_t i = 0; i < sources.size(); i += 4)
+  {
+    sources[i].ConeAngle = 60.0;
+    sources[i].DirectionWC = glm::dvec3(0, 0, -1);
+  }
+  const PreparedLights mixed = PrepareLights(sources, options);
+  std::vector<PreparedLight> spots;
+  for (const PreparedLight& l : mixed.Lights)
+  {
+    if (!IsFarFieldLight(l))
+    {
+      spots.push_back(l);
+    }
+  }
+  ASSERT_EQ(spots.size(), 50u);
+  const double cutoff = ChooseBudgetCutoff(mixed.Lights, budget, true, 1.0 / 1024.0);
+  EXPECT_DOUBLE_EQ(
+    cutoff, ChooseCutoffForErrorBudget(spots, budget, ComputeErrorBudgetSamples(spots)));
+  EXPECT_GT(cutoff, allCulled); // fewer tails to bound: a larger cutoff does
+  for (const glm::dvec3& p : ComputeErrorBudgetSamples(spots))
+  {
+    EXPECT_LE(ComputeTailAtCutoff(p, spots, cutoff, false), budget);
+  }
+}
+
 TEST(FarFieldPlan, AHandfulOfLightsNeedsNoFarField)
 {
   // Five bright vtkLights reaching everywhere: exact shading costs 5 per point, within

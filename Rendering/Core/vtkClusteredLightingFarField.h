@@ -60,6 +60,7 @@
 #include <cstdint>   // for std::int64_t
 #include <glm/glm.hpp>
 #include <glm/gtc/constants.hpp> // for glm::pi
+#include <iterator>              // for std::back_inserter
 #include <limits>                // for std::numeric_limits
 #include <vector>                // for std::vector
 
@@ -112,15 +113,13 @@ inline bool IsFarFieldLight(const PreparedLight& l)
 inline double ChooseBudgetCutoff(const std::vector<PreparedLight>& lights, double budget,
   bool farField, double cutoff, bool windowed = false)
 {
-  std::vector<PreparedLight> culled;
-  culled.reserve(farField ? 0 : lights.size());
-  for (const PreparedLight& l : lights)
+  if (!farField)
   {
-    if (!farField || !IsFarFieldLight(l))
-    {
-      culled.push_back(l);
-    }
+    return ChooseCutoffForErrorBudget(lights, budget, ComputeErrorBudgetSamples(lights), windowed);
   }
+  std::vector<PreparedLight> culled;
+  std::copy_if(lights.begin(), lights.end(), std::back_inserter(culled),
+    [](const PreparedLight& l) { return !IsFarFieldLight(l); });
   if (culled.empty())
   {
     return cutoff;

@@ -10,6 +10,50 @@
 #include <cstring> // for std::strlen
 
 //------------------------------------------------------------------------------
+bool vtkClusteredLightingDrawTargetClampsAtOne()
+{
+  GLint buffer = GL_NONE;
+  glGetIntegerv(GL_DRAW_BUFFER0, &buffer);
+  GLint framebuffer = 0;
+  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer);
+  if (framebuffer == 0)
+  {
+    // The default framebuffer names its buffers FRONT_LEFT ... BACK_RIGHT only.
+    switch (buffer)
+    {
+      case GL_FRONT:
+        buffer = GL_FRONT_LEFT;
+        break;
+      case GL_BACK:
+      case GL_LEFT:
+      case GL_FRONT_AND_BACK:
+        buffer = GL_BACK_LEFT;
+        break;
+      case GL_RIGHT:
+        buffer = GL_BACK_RIGHT;
+        break;
+      default:
+        break;
+    }
+  }
+  if (buffer == GL_NONE)
+  {
+    return false;
+  }
+  GLint object = GL_NONE;
+  glGetFramebufferAttachmentParameteriv(GL_DRAW_FRAMEBUFFER, static_cast<GLenum>(buffer),
+    GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &object);
+  if (object == GL_NONE)
+  {
+    return false;
+  }
+  GLint type = GL_NONE;
+  glGetFramebufferAttachmentParameteriv(GL_DRAW_FRAMEBUFFER, static_cast<GLenum>(buffer),
+    GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE, &type);
+  return type == GL_UNSIGNED_NORMALIZED;
+}
+
+//------------------------------------------------------------------------------
 bool vtkClusteredLightingSetUniform4i(vtkShaderProgram* program, const char* name, const int v[4])
 {
   const int location = program->FindUniform(name);

@@ -9,7 +9,8 @@
  *  - vtkClusteredLightingDebugGroup: a scoped GL debug group (glPushDebugGroup), so that
  *    the list and master passes show up by name in GL debuggers and traces; a no-op where
  *    neither GL 4.3 nor KHR_debug is available;
- *  - vtkClusteredLightingSetUniform4i: vtkShaderProgram has no ivec4 setter in VTK 9.1.
+ *  - vtkClusteredLightingSetUniform4i: vtkShaderProgram has no ivec4 setter in VTK 9.1;
+ *  - vtkClusteredLightingDrawTargetClampsAtOne: whether the colour being drawn clamps.
  *
  * None of them makes a context current: callers do (see vtkClusteredLightingAssigner).
  */
@@ -25,6 +26,12 @@ class vtkOpenGLRenderWindow;
 class vtkShaderProgram;
 class vtkTextureObject;
 class vtkWindow;
+
+/// True if the current draw framebuffer's first draw buffer stores fixed-point colour
+/// (GL_UNSIGNED_NORMALIZED: written values clamp to [0, 1]). False for float targets (a
+/// vtkToneMappingPass around the pass, for one), for no draw buffer, and if the query
+/// fails. Needs a current context.
+bool vtkClusteredLightingDrawTargetClampsAtOne();
 
 /// ivec4 uniform setter (the program must be bound). Returns false if the program does
 /// not use the uniform.

@@ -6,7 +6,9 @@
 #include "vtkClusteredLightSet.h"
 #include "vtkClusteredLightingAssigner.h"
 #include "vtkClusteredLightingDepthPrepass.h"
+#include "vtkClusteredLightingGLHelpers.h"
 #include "vtkClusteredLightingLightCollector.h"
+#include "vtkClusteredLightingShaderCode.h"
 #include "vtkClusteredLightingShaderVariant.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
@@ -881,6 +883,8 @@ void vtkClusteredLightingPass::InjectShadingCode(std::string& fragmentShader, vt
     fragmentShader.find("vertexVCVSOutput") != std::string::npos;
   const std::string pbrAnchor = "  color += Lo;\n";
   const bool pbrOK = !variant.PBR || fragmentShader.find(pbrAnchor) != std::string::npos;
+  variant.Saturation = !vtkClusteredLighting::WritesColorAfter(
+    fragmentShader, fragmentShader.find("//VTK::ClusteredLight::Impl"));
   if (!lit || !pbrOK)
   {
     vtkShaderProgram::Substitute(fragmentShader, "//VTK::ClusteredLight::Dec", "");
@@ -907,7 +911,7 @@ void vtkClusteredLightingPass::InjectShadingCode(std::string& fragmentShader, vt
 
 //------------------------------------------------------------------------------
 bool vtkClusteredLightingPass::SetShaderParameters(
-  vtkShaderProgram* program, vtkAbstractMapper*, vtkProp*, vtkOpenGLVertexArrayObject*)
+  vtkShaderProgram* program, vtkAbstractMapper*, vtkProp* prop, vtkOpenGLVertexArrayObject*)
 {
   if (!this->Internals->Current || !program)
   {
@@ -970,6 +974,15 @@ bool vtkClusteredLightingPass::SetShaderParameters(
   if (program->IsUniformUsed("clLightCount"))
   {
     program->SetUniformi("clLightCount", r.NumberOfLights);
+  }
+  if (program->IsUniformUsed("clClampsAtOne"))
+  {
+    // Blended translucent fragments (depth peeling, order-independent translucency)
+    // are weighted by their opacity after the shader: values above 1 still count.
+    vtkActor* actor = vtkActor::SafeDownCast(prop);
+    const bool blended = actor && actor->IsRenderingTranslucentPolygonalGeometry();
+    program->SetUniformi(
+      "clClampsAtOne", !blended && vtkClusteredLightingDrawTargetClampsAtOne() ? 1 : 0);
   }
   if (program->IsUniformUsed("clHeatMapMaximum"))
   {

@@ -27,6 +27,14 @@
  * bound (ComputeFarFieldErrorBound, docs/far-field.md). ShadingMode BRUTE_FORCE
  * evaluates every light for every fragment: the exact reference.
  *
+ * Saturated fragments stop early (Phong, exact): lights only add, so once a fragment's
+ * sum so far (VTK's own lighting, the far field's proven lower bound, the near lights
+ * walked) reaches 1 in every channel, the lights left cannot change a colour that is
+ * clamped at 1. The pass does this only where that clamp is certain: a fixed-point
+ * colour target, an opaque draw, and no code after the lighting that rescales the colour
+ * (an actor texture). Under a vtkToneMappingPass (float target), for translucent
+ * fragments and for textured actors every light is evaluated.
+ *
  * Algorithm (compute-less clustered lighting, after wizgrav/cl2): the view frustum is cut
  * into TilesX by TilesY screen tiles and Slices depth slices. A depth prepass draws the
  * opaque geometry depth-only first (DepthPrepass), so no hidden fragment is shaded; its
@@ -297,7 +305,9 @@ public:
    * saturates (its lowest value is below 1, its highest above), the far parts are summed
    * exactly, light by light. Bright far fields (lights that light the whole scene) need
    * it on a few fragments; faint ones never. PBR actors (tone-mapped) use the width
-   * alone. 1 turns it off. Range [0, 1]. Default is 2/255.
+   * alone. The exact sum stops once the fragment saturates where the colour is certain
+   * to clamp at 1 (see the class description). 1 turns it off. Range [0, 1]. Default is
+   * 2/255.
    */
   vtkSetClampMacro(FarFieldTolerance, double, 0.0, 1.0);
   vtkGetMacro(FarFieldTolerance, double);
@@ -398,12 +408,14 @@ public:
   enum DebugViews
   {
     DEBUG_NONE = 0,
-    DEBUG_CLUSTER_INDEX = 1,   ///< (tile x, tile y, slice) / (X-1, Y-1, Z-1) as RGB
-    DEBUG_HEAT_MAP = 2,        ///< lights evaluated per pixel, colour map up to GetHeatMapScale
-    DEBUG_EVALUATED_COUNT = 3, ///< lights evaluated (R + 256 G), lights reaching (B, saturates)
-    DEBUG_REACHED_COUNT = 4,   ///< lights that reach the fragment (R + 256 G)
-    DEBUG_NON_FINITE = 5,      ///< red where the lit colour is NaN or Inf
-    DEBUG_NORMAL = 6           ///< the shading normal (view coordinates) as 0.5 + 0.5 N
+    DEBUG_CLUSTER_INDEX = 1, ///< (tile x, tile y, slice) / (X-1, Y-1, Z-1) as RGB
+    DEBUG_HEAT_MAP = 2,      ///< lights evaluated per pixel, colour map up to GetHeatMapScale
+    /// lights evaluated (R + 256 G), lights reaching (B, saturates), both up to where a
+    /// saturated fragment stops (class description)
+    DEBUG_EVALUATED_COUNT = 3,
+    DEBUG_REACHED_COUNT = 4, ///< lights that reach the fragment (R + 256 G)
+    DEBUG_NON_FINITE = 5,    ///< red where the lit colour is NaN or Inf
+    DEBUG_NORMAL = 6         ///< the shading normal (view coordinates) as 0.5 + 0.5 N
   };
   //@{
   /**

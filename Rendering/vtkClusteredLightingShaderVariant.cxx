@@ -59,6 +59,12 @@ std::set<std::string> vtkClusteredLightingShaderVariant::GetFlags() const
   {
     f.insert("SPOT");
   }
+  // Brute force stays the plain reference; the count of lights that reach a fragment
+  // counts them all.
+  if (this->Saturation && this->Clustered && !this->PBR && this->DebugView != Debug::ReachedCount)
+  {
+    f.insert("SATURATION");
+  }
   switch (this->DebugView)
   {
     case Debug::ClusterIndex:

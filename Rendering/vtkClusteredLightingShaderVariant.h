@@ -14,7 +14,9 @@
  * MODEL_RADIUS (the explicit radius of the light model is read: brute force stops there,
  * windows end there), VIEW1 (the second view texel is read: spot axis, explicit radius),
  * FAR_FIELD (clustered only: split lights' near parts are windowed and the far field is
- * added), PHONG or PBR, SPECULAR, SPOT, WINDOW, LINEAR_SLICES, COUNT, CLUSTER_INDEX, HEAT_MAP,
+ * added), PHONG or PBR, SPECULAR, SPOT, WINDOW, LINEAR_SLICES, SATURATION (clustered Phong
+ * whose colour nothing rescales after the lighting: a fragment stops at saturation where
+ * the uniform clClampsAtOne says the target clamps), COUNT, CLUSTER_INDEX, HEAT_MAP,
  * EVALUATED_COUNT, REACHED_COUNT, NON_FINITE, NORMAL.
  *
  * Brute force evaluates the same light model as clustered shading (explicit radius,
@@ -56,6 +58,9 @@ public:
   // Parts that depend on the actor.
   bool PBR = false;
   bool Specular = true;
+  /// no code after the lighting rescales the colour (a texture, for one): a fragment
+  /// saturated by the lights so far may stop walking the rest (SATURATION, clustered Phong)
+  bool Saturation = false;
 
   bool SameGlobalPart(const vtkClusteredLightingShaderVariant& o) const;
   std::set<std::string> GetFlags() const;

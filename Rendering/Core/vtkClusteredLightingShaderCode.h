@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /**
  * @file vtkClusteredLightingShaderCode.h
- * @brief GL-free selection of the optional blocks of the clustered shading sources.
+ * @brief GL-free selection of the optional blocks of the clustered shading sources, and
+ *        a check of what a mapper's shader does after the lighting.
  *
  * The shading sources (Rendering/glsl/vtkClusteredLightingShading{Dec,Impl}.glsl and
  * vtkClusteredLightingDebugImpl.glsl) mark optional code with lines of their own:
@@ -24,6 +25,7 @@
 #ifndef vtkClusteredLightingShaderCode_h
 #define vtkClusteredLightingShaderCode_h
 
+#include <cctype>  // for std::isalpha, std::isspace
 #include <set>     // for std::set
 #include <sstream> // for std::istringstream
 #include <string>  // for std::string
@@ -118,6 +120,47 @@ inline void ReplaceShaderKey(std::string& code, const std::string& key, const st
     code.replace(pos, key.size(), value);
     pos += value.size();
   }
+}
+
+/**
+ * True if `source` assigns to the fragment's colour output (gl_FragData[0], whole or a
+ * swizzle, with = or an arithmetic assignment) anywhere at or after offset `from`, or if
+ * `from` is npos (the position is unknown). Reads are not assignments: VTK's alpha test
+ * "gl_FragData[0].a <= 0.0" does not count, its texture modulation
+ * "gl_FragData[0] = gl_FragData[0] * tcolor" does. The pass stops a fragment's light walk
+ * at saturation only where nothing after the lighting rescales the colour.
+ */
+inline bool WritesColorAfter(const std::string& source, std::size_t from)
+{
+  if (from == std::string::npos)
+  {
+    return true;
+  }
+  const std::string output = "gl_FragData[0]";
+  for (std::size_t at = source.find(output, from); at != std::string::npos;
+       at = source.find(output, at + output.size()))
+  {
+    std::size_t i = at + output.size();
+    if (i < source.size() && source[i] == '.')
+    {
+      ++i;
+      while (i < source.size() && std::isalpha(static_cast<unsigned char>(source[i])))
+      {
+        ++i; // the swizzle
+      }
+    }
+    while (i < source.size() && std::isspace(static_cast<unsigned char>(source[i])))
+    {
+      ++i;
+    }
+    if (i + 1 < source.size() &&
+      ((source[i] == '=' && source[i + 1] != '=') ||
+        (std::string("+-*/").find(source[i]) != std::string::npos && source[i + 1] == '=')))
+    {
+      return true;
+    }
+  }
+  return false;
 }
 
 } // namespace vtkClusteredLighting

@@ -9,7 +9,8 @@
 //CL_ENDIF
 //CL_IF(EVALUATED_COUNT)
   // exact counts for measurements: evaluated lights in red+green (16 bits), lights that
-  // really reach the fragment (distance < radius, inside the cone) in blue (saturates)
+  // really reach the fragment (distance < radius, inside the cone) in blue (saturates),
+  // both up to where a saturated fragment stops (REACHED_COUNT counts every light)
   gl_FragData[0] = vec4(float(clEvaluated & 255) / 255.0, float((clEvaluated >> 8) & 255) / 255.0,
     float(min(clReached, 255)) / 255.0, 1.0);
 //CL_ENDIF

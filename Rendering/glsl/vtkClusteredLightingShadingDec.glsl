@@ -68,6 +68,11 @@ ivec2 clMasterTexel(ivec3 c, int m)
   return ivec2(c.z * clGrid.x + c.x, c.y * clMasterTexels + m);
 }
 //CL_ENDIF
+//CL_IF(SATURATION)
+// true where the draw's colour target clamps at 1 (fixed point) and the fragment is not
+// blended as translucent: a saturated fragment stops walking its lights
+uniform bool clClampsAtOne;
+//CL_ENDIF
 //CL_IF(BRUTE_FORCE)
 uniform int clLightCount;
 //CL_ENDIF

@@ -13,6 +13,57 @@
   int clEvaluated = 0;
   int clReached = 0;
 //CL_ENDIF
+//CL_IF(FAR_FIELD)
+  // The far field: the moments at the fragment (trilinear), then the diffuse kernel in
+  // the normal's direction and the Phong lobe in the mirrored view's direction.
+  vec3 clUVW = (clFarFieldFromVC * vertexVC).xyz;
+  vec4 clT0 = texture(clFarField0, clUVW);
+  vec4 clT1 = texture(clFarField1, clUVW);
+  vec4 clT2 = texture(clFarField2, clUVW);
+  vec4 clT3 = texture(clFarField3, clUVW);
+  vec4 clT4 = texture(clFarField4, clUVW);
+  vec4 clT5 = texture(clFarField5, clUVW);
+  vec4 clT6 = texture(clFarField6, clUVW);
+  vec3 clS = clT0.xyz;
+  vec3 clVx = vec3(clT0.w, clT1.xy);
+  vec3 clVy = vec3(clT1.zw, clT2.x);
+  vec3 clVz = clT2.yzw;
+  vec3 clTxx = clT3.xyz;
+  vec3 clTyy = vec3(clT3.w, clT4.xy);
+  vec3 clTxy = vec3(clT4.zw, clT5.x);
+  vec3 clTxz = clT5.yzw;
+  vec3 clTyz = clT6.xyz;
+//CL_IF(PHONG)
+  vec3 clN = normalVCVSOutput;
+//CL_ENDIF
+//CL_IF(PBR)
+  vec3 clN = N;
+//CL_ENDIF
+  vec3 clDiffuseLow, clDiffuseHigh;
+  vec3 clFarDiffuse = clApplyFarKernel(vec3(0.25, 0.5, 0.3125), clWorldFromVC * clN, clS,
+    clVx, clVy, clVz, clTxx, clTyy, clTxy, clTxz, clTyz, false, clDiffuseLow, clDiffuseHigh);
+  vec3 clV = normalize(-vertexVC.xyz);
+  vec3 clFarSpecular = vec3(0.0);
+  vec3 clSpecularLow = vec3(0.0), clSpecularHigh = vec3(0.0);
+//CL_IF(PHONG)
+  vec3 clDiffuseScale = diffuseColor;
+//CL_IF(SPECULAR)
+  vec3 clR = 2.0 * dot(clN, clV) * clN - clV;
+  clFarSpecular = clApplyFarKernel(clLobeKernel(specularPower), clWorldFromVC * clR, clS, clVx,
+    clVy, clVz, clTxx, clTyy, clTxy, clTxz, clTyz, true, clSpecularLow, clSpecularHigh);
+//CL_ENDIF
+//CL_ENDIF
+//CL_ENDIF
+//CL_IF(SATURATION)
+  // Every light adds light (never less than 0): where the render target clamps at 1 and
+  // nothing after this code rescales the colour (clClampsAtOne), a fragment whose sum so
+  // far saturates every channel is final, and the lights left are not evaluated. The far
+  // field's lower bound counts from the start, so a bright far field saves the walk.
+  vec3 clBase = gl_FragData[0].rgb;
+//CL_IF(FAR_FIELD)
+  clBase += clDiffuseLow * diffuseColor + clSpecularLow * specularColor;
+//CL_ENDIF
+//CL_ENDIF
 //CL_IF(CLUSTERED)
   ivec3 clCluster = clComputeCluster(vertexVC);
   for (int clM = 0; clM < clMasterTexels; ++clM)
@@ -46,49 +97,21 @@
         ++clEvaluated;
         clReached += clHit ? 1 : 0;
 //CL_ENDIF
+//CL_IF(SATURATION)
+        if (clClampsAtOne && all(greaterThanEqual(
+              clBase + clDiffuse * diffuseColor + clSpecular * specularColor, vec3(1.0))))
+        {
+          clM = clMasterTexels; // leave all three loops
+          clMask = 0u;
+          break;
+        }
+//CL_ENDIF
       }
     }
   }
 //CL_IF(FAR_FIELD)
   {
-    // The far field: the moments at the fragment (trilinear), then the diffuse kernel in
-    // the normal's direction and the Phong lobe in the mirrored view's direction.
-    vec3 clUVW = (clFarFieldFromVC * vertexVC).xyz;
-    vec4 clT0 = texture(clFarField0, clUVW);
-    vec4 clT1 = texture(clFarField1, clUVW);
-    vec4 clT2 = texture(clFarField2, clUVW);
-    vec4 clT3 = texture(clFarField3, clUVW);
-    vec4 clT4 = texture(clFarField4, clUVW);
-    vec4 clT5 = texture(clFarField5, clUVW);
-    vec4 clT6 = texture(clFarField6, clUVW);
-    vec3 clS = clT0.xyz;
-    vec3 clVx = vec3(clT0.w, clT1.xy);
-    vec3 clVy = vec3(clT1.zw, clT2.x);
-    vec3 clVz = clT2.yzw;
-    vec3 clTxx = clT3.xyz;
-    vec3 clTyy = vec3(clT3.w, clT4.xy);
-    vec3 clTxy = vec3(clT4.zw, clT5.x);
-    vec3 clTxz = clT5.yzw;
-    vec3 clTyz = clT6.xyz;
 //CL_IF(PHONG)
-    vec3 clN = normalVCVSOutput;
-//CL_ENDIF
-//CL_IF(PBR)
-    vec3 clN = N;
-//CL_ENDIF
-    vec3 clDiffuseLow, clDiffuseHigh;
-    vec3 clFarDiffuse = clApplyFarKernel(vec3(0.25, 0.5, 0.3125), clWorldFromVC * clN, clS,
-      clVx, clVy, clVz, clTxx, clTyy, clTxy, clTxz, clTyz, false, clDiffuseLow, clDiffuseHigh);
-    vec3 clV = normalize(-vertexVC.xyz);
-    vec3 clFarSpecular = vec3(0.0);
-    vec3 clSpecularLow = vec3(0.0), clSpecularHigh = vec3(0.0);
-//CL_IF(PHONG)
-    vec3 clDiffuseScale = diffuseColor;
-//CL_IF(SPECULAR)
-    vec3 clR = 2.0 * dot(clN, clV) * clN - clV;
-    clFarSpecular = clApplyFarKernel(clLobeKernel(specularPower), clWorldFromVC * clR, clS, clVx,
-      clVy, clVz, clTxx, clTyy, clTxy, clTxz, clTyz, true, clSpecularLow, clSpecularHigh);
-//CL_ENDIF
     // What this fragment shows at least, and how uncertain the far field leaves it.
     vec3 clLowest = gl_FragData[0].rgb + clDiffuse * diffuseColor + clSpecular * specularColor +
       clDiffuseLow * diffuseColor + clSpecularLow * specularColor;
@@ -121,9 +144,9 @@
     {
       clFarDiffuse = vec3(0.0);
       clFarSpecular = vec3(0.0);
-//CL_IF(PHONG)
-      // Every far part adds light (never less than 0), so the sum so far is a lower bound:
-      // once it saturates every channel, the lights left cannot change the pixel.
+//CL_IF(SATURATION)
+      // Every far part adds light too, so the sum so far is a lower bound: once it
+      // saturates every channel, the lights left cannot change the pixel.
       vec3 clNearSum = gl_FragData[0].rgb + clDiffuse * diffuseColor + clSpecular * specularColor;
 //CL_ENDIF
       for (int clI = 0; clI < clLightCount; ++clI)
@@ -146,9 +169,10 @@
 //CL_IF(COUNT)
         ++clEvaluated;
 //CL_ENDIF
-//CL_IF(PHONG)
-        if (all(greaterThanEqual(
-              clNearSum + clFarDiffuse * diffuseColor + clFarSpecular * specularColor, vec3(1.0))))
+//CL_IF(SATURATION)
+        if (clClampsAtOne &&
+          all(greaterThanEqual(
+            clNearSum + clFarDiffuse * diffuseColor + clFarSpecular * specularColor, vec3(1.0))))
         {
           break;
         }

@@ -408,11 +408,14 @@ struct BruteForceCheck
  * 0 both are instead maximized over that many points along the pixel ray up to the opaque
  * surface (for translucent surfaces in front of it). The far-field bound is computed only
  * where the error exceeds the rest of the tolerance (and on a sparse grid of pixels for
- * the printed statistics), since elsewhere no bound can fail the pixel. The pass is left
- * in clustered mode, rendered.
+ * the printed statistics), since elsewhere no bound can fail the pixel; with
+ * `tolerances` it is computed at every pixel, and each pixel's tolerance (in the
+ * renderer's viewport, row by row) is returned there. The pass is left in clustered mode,
+ * rendered.
  */
 inline BruteForceCheck CheckAgainstBruteForce(vtkClusteredLightingPass* pass, vtkRenderWindow* rw,
-  vtkRenderer* ren, double materialFactor, const char* what, int raySamples = 0)
+  vtkRenderer* ren, double materialFactor, const char* what, int raySamples = 0,
+  std::vector<double>* tolerances = nullptr)
 {
   BruteForceCheck out;
   pass->SetShadingMode(vtkClusteredLightingPass::SHADING_CLUSTERED);
@@ -500,12 +503,18 @@ inline BruteForceCheck CheckAgainstBruteForce(vtkClusteredLightingPass* pass, vt
     for (int x = 0; x < w; ++x)
     {
       const std::size_t i = static_cast<std::size_t>(y) * w + x;
-      needed[i] = (errors[i] > tails[i] * 1.001 + rounding || (x % 8 == 0 && y % 8 == 0)) ? 1 : 0;
+      needed[i] =
+        (tolerances || errors[i] > tails[i] * 1.001 + rounding || (x % 8 == 0 && y % 8 == 0)) ? 1
+                                                                                              : 0;
     }
   }
   const std::vector<double> farBounds =
     ComputeFarFieldBounds(pass, rw, ren, frame, depth, w, h, inverse, raySamples, &needed);
   // 3. The verdict per pixel.
+  if (tolerances)
+  {
+    tolerances->assign(count, 0.0);
+  }
   double tailSum = 0.0, farSum = 0.0;
   std::size_t geometry = 0, sampled = 0;
   for (int y = 0; y < h; ++y)
@@ -526,6 +535,10 @@ inline BruteForceCheck CheckAgainstBruteForce(vtkClusteredLightingPass* pass, vt
       }
       out.MaxFarField = std::max(out.MaxFarField, far);
       const double tolerance = tails[i] * 1.001 + far + rounding;
+      if (tolerances)
+      {
+        (*tolerances)[i] = tolerance;
+      }
       const double err = errors[i];
       out.MaxError = std::max(out.MaxError, err);
       out.MaxTolerance = std::max(out.MaxTolerance, tolerance);

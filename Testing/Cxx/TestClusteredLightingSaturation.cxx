@@ -13,9 +13,16 @@
 //    the error reaches 5 steps there, inside a stated bound of up to 63.
 #include "ClusteredLightingTestUtilities.h"
 
+#include "vtkActorCollection.h"
 #include "vtkClusteredLightSet.h"
 #include "vtkClusteredLightingPass.h"
+#include "vtkImageData.h"
+#include "vtkProperty.h"
+#include "vtkTexture.h"
+#include "vtkToneMappingPass.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <string>
 
@@ -98,6 +105,95 @@ int TestClusteredLightingSaturation(int, char*[])
       (what + ": within the derived bound of brute force, zero false negatives, finite").c_str());
     std::printf(
       "%s: lights evaluated per pixel %.1f of %d\n", what.c_str(), MeanEvaluated(pass, rw), n);
+  }
+
+  // Where the colour goes on after the lighting, a fragment saturated by its lights so far
+  // is not final, and the pass must not stop there. The same lights with an explicit
+  // radius of 1.2 and windowed falloff have no tail and no far part, so brute force and
+  // clustered shading agree to rounding and each pixel's tolerance is tight; at intensity 1
+  // they light the floor to many times full brightness, so stopping at 1 would show.
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    lights->SetRadius(i, 1.2);
+  }
+  pass->SetFalloff(vtkClusteredLightingPass::FALLOFF_WINDOWED);
+  lights->SetIntensityScale(1.0);
+  rw->Render();
+  Check(pass->GetNumberOfFarFieldLights() == 0, "explicit radii: no light is split");
+  const double saturated = SaturatedShare(pass, rw);
+  std::printf("explicit radii: brute force saturates %.1f%% of channels\n", 100.0 * saturated);
+  Check(saturated > 0.3, "explicit radii at intensity 1 saturate many channels");
+  Check(ClusteredLightingTest::CheckClusteredFrame(pass, rw, ren, 1.4, "explicit radii") == 0,
+    "explicit radii: within rounding of brute force, zero false negatives, finite");
+  std::printf(
+    "explicit radii: lights evaluated per pixel %.1f of %d\n", MeanEvaluated(pass, rw), n);
+  // 1. A texture multiplies the lit colour (VTK: gl_FragData[0] * tcolor): a dark floor
+  // texture (40/255) brings the sum back below 1.
+  {
+    vtkActor* floor = vtkActor::SafeDownCast(ren->GetActors()->GetItemAsObject(0));
+    vtkNew<vtkImageData> image;
+    image->SetDimensions(4, 4, 1);
+    image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+    auto* texels = static_cast<unsigned char*>(image->GetScalarPointer());
+    std::fill(texels, texels + 4 * 4 * 3, static_cast<unsigned char>(40));
+    vtkNew<vtkTexture> texture;
+    texture->SetInputData(image);
+    floor->SetTexture(texture);
+    rw->Render();
+    Check(ClusteredLightingTest::CheckClusteredFrame(pass, rw, ren, 1.4, "textured floor") == 0,
+      "a textured floor: within rounding of brute force");
+    floor->SetTexture(nullptr);
+  }
+  // 2. Translucent fragments are blended by their opacity after the shader (depth
+  // peeling here): a translucent ball over the bright floor.
+  {
+    vtkActor* ball = vtkActor::SafeDownCast(ren->GetActors()->GetItemAsObject(1));
+    ball->GetProperty()->SetOpacity(0.3);
+    ren->SetUseDepthPeeling(1);
+    rw->Render();
+    Check(ClusteredLightingTest::CheckClusteredFrame(pass, rw, ren, 1.4, "translucent ball") == 0,
+      "a translucent ball (depth peeling): within rounding of brute force");
+    ball->GetProperty()->SetOpacity(1.0);
+    ren->SetUseDepthPeeling(0);
+  }
+  // 3. A float render target: vtkToneMappingPass (Reinhard) around the pass keeps values
+  // above 1 and maps them below. Its curve, with VTK's gamma around it,
+  // x / (1 + x^2.2)^(1/2.2), has slope at most 1, so each pixel's tolerance from the plain
+  // render (rounding here) holds after it.
+  {
+    std::vector<double> tolerances;
+    ClusteredLightingTest::CheckAgainstBruteForce(
+      pass, rw, ren, 1.4, "tolerances for the tone-mapped check", 0, &tolerances);
+    vtkNew<vtkToneMappingPass> toneMapping;
+    toneMapping->SetToneMappingType(vtkToneMappingPass::Reinhard);
+    toneMapping->SetDelegatePass(pass);
+    ren->SetPass(toneMapping);
+    pass->SetShadingMode(vtkClusteredLightingPass::SHADING_CLUSTERED);
+    rw->Render();
+    const std::vector<float> clustered = ClusteredLightingTest::CapturePixels(rw);
+    pass->SetShadingMode(vtkClusteredLightingPass::SHADING_BRUTE_FORCE);
+    rw->Render();
+    const std::vector<float> brute = ClusteredLightingTest::CapturePixels(rw);
+    pass->SetShadingMode(vtkClusteredLightingPass::SHADING_CLUSTERED);
+    ren->SetPass(pass);
+    toneMapping->ReleaseGraphicsResources(rw);
+    std::size_t violations = 0, unsaturated = 0;
+    double maxError = 0.0;
+    for (std::size_t i = 0; i < tolerances.size() && 3 * i + 2 < brute.size(); ++i)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        const double error = std::abs(double(clustered[3 * i + c]) - double(brute[3 * i + c]));
+        maxError = std::max(maxError, error);
+        violations += error > tolerances[i] ? 1 : 0;
+        unsaturated += brute[3 * i + c] < 254.5f / 255.0f ? 1 : 0;
+      }
+    }
+    std::printf("tone mapped: max error %.2f steps, %zu channels over their tolerance, %.1f%% "
+                "of channels below full brightness\n",
+      255.0 * maxError, violations, 100.0 * unsaturated / (3.0 * tolerances.size()));
+    Check(unsaturated > 2 * tolerances.size(), "tone mapping brings most channels below 1");
+    Check(violations == 0, "tone mapped: within rounding of brute force");
   }
   return Status;
 }

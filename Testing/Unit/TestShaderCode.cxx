@@ -65,3 +65,32 @@ TEST(ShaderCode, ReplaceShaderKeyReplacesEveryOccurrence)
   ReplaceShaderKey(code, "@M@", "@M@@M@"); // a value containing the key is not re-expanded
   EXPECT_EQ(code, "const int n = 12; int m = 12 + @M@@M@;");
 }
+
+TEST(ShaderCode, WritesColorAfterFindsAssignmentsNotReads)
+{
+  // VTK 9.1's fragment template after the lighting, as the pass sees it.
+  const std::string lighting = "  gl_FragData[0] = vec4(ambientColor + diffuse, opacity);\n"
+                               "  //VTK::ClusteredLight::Impl\n";
+  const std::string alphaTest = "  if (gl_FragData[0].a <= 0.0)\n    {\n    discard;\n    }\n";
+  const std::string plain = lighting + alphaTest + "  //VTK::DepthPeeling::Impl\n";
+  const std::size_t from = plain.find("//VTK::ClusteredLight::Impl");
+  EXPECT_FALSE(WritesColorAfter(plain, from)); // the write before `from` does not count
+  EXPECT_TRUE(WritesColorAfter(plain, 0));
+  // VTK's texture modulation, and other ways of writing the colour.
+  const std::string textured = lighting +
+    "if (gl_FrontFacing == true || showTexturesOnBackface) {gl_FragData[0] = gl_FragData[0] * "
+    "tcolor; }\n" +
+    alphaTest;
+  EXPECT_TRUE(WritesColorAfter(textured, from));
+  for (const char* write : { "gl_FragData[0]*=t;", "gl_FragData[0].rgb /= 2.0;",
+         "gl_FragData[0].xyz+=c;", "gl_FragData[0] -= c;", "gl_FragData[0].r=1.0;" })
+  {
+    EXPECT_TRUE(WritesColorAfter(lighting + write, from)) << write;
+  }
+  for (const char* read : { "if (gl_FragData[0].a == 0.0) discard;", "x = gl_FragData[0];",
+         "b = gl_FragData[0].rgb >= vec3(1.0);", "c = gl_FragData[1];" })
+  {
+    EXPECT_FALSE(WritesColorAfter(lighting + read, from)) << read;
+  }
+  EXPECT_TRUE(WritesColorAfter(plain, std::string::npos)); // unknown position: assume so
+}

@@ -134,6 +134,15 @@ std::vector<Step> MakePlan(const PlanOptions& options)
         s.Lights = lights[k];
         s.Value = std::to_string(lights[k]);
         plan.push_back(s);
+        if (k == 0)
+        {
+          // What the exact far sums near saturation cost, and what they buy.
+          Step t = s;
+          t.Sweep = "far tolerance";
+          t.Value = "1 (no exact sums)";
+          t.Apply = [](vtkClusteredLightingPass* p) { p->SetFarFieldTolerance(1.0); };
+          plan.push_back(t);
+        }
         s.Method = "brute";
         s.Counts = false;
         s.Apply = [](vtkClusteredLightingPass* p)

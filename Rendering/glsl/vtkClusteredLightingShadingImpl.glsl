@@ -64,6 +64,9 @@
   clBase += clDiffuseLow * diffuseColor + clSpecularLow * specularColor;
 //CL_ENDIF
 //CL_ENDIF
+//CL_IF(FAR_FIELD)
+  int clFirst = -1; // the first near light walked: where the exact far sum starts
+//CL_ENDIF
 //CL_IF(CLUSTERED)
   ivec3 clCluster = clComputeCluster(vertexVC);
   for (int clM = 0; clM < clMasterTexels; ++clM)
@@ -96,6 +99,9 @@
 //CL_IF(COUNT)
         ++clEvaluated;
         clReached += clHit ? 1 : 0;
+//CL_ENDIF
+//CL_IF(FAR_FIELD)
+        clFirst = clFirst < 0 ? clLight : clFirst;
 //CL_ENDIF
 //CL_IF(SATURATION)
         if (clClampsAtOne && all(greaterThanEqual(
@@ -149,7 +155,10 @@
       // saturates every channel, the lights left cannot change the pixel.
       vec3 clNearSum = gl_FragData[0].rgb + clDiffuse * diffuseColor + clSpecular * specularColor;
 //CL_ENDIF
-      for (int clI = 0; clI < clLightCount; ++clI)
+      // Lights are stored in Morton order: from a near light of the fragment on, the
+      // nearest (brightest) far parts come first, and a saturating sum stops sooner.
+      int clI = max(clFirst, 0);
+      for (int clK = 0; clK < clLightCount; ++clK, clI = clI + 1 < clLightCount ? clI + 1 : 0)
       {
         vec3 clL;
         float clAtt;

@@ -286,6 +286,63 @@ TEST(FarFieldPlan, ManyLightsShareTheNearBudget)
   }
 }
 
+TEST(FarFieldPlan, ManyAlwaysOnLightsLeaveTheBudgetToLightsThatFallOff)
+{
+  std::mt19937 rng(6);
+  std::uniform_real_distribution<double> U(-1.0, 1.0);
+  auto place = [&](int) { return glm::dvec3(U(rng), U(rng), U(rng)); };
+  const glm::dvec3 alwaysOn(1, 0, 0), falling(1, 0, 1);
+  const FarFieldOptions options;
+  // 20 always-on lights: the budget (16 per point) gives each a sphere over most of the
+  // region, so they keep it and most points shade most of them exactly.
+  std::vector<PreparedLight> few = MakeLights(20, alwaysOn, place);
+  const FarFieldPlan fewPlan = PlanFarField(few, glm::dvec3(-1), glm::dvec3(1), options);
+  ASSERT_TRUE(fewPlan.Active);
+  const double smallest = options.CellsPerRadius * fewPlan.Grid.Spacing;
+  for (const PreparedLight& l : few)
+  {
+    EXPECT_TRUE(l.FarField);
+    EXPECT_EQ(l.Radius, fewPlan.NearRadiusCap);
+    EXPECT_GT(l.Radius, 5.0 * smallest);
+  }
+  EXPECT_GT(fewPlan.NearLightsPerPoint, 8.0);
+  // 300 always-on lights: a budget-filling sphere would hold 1/19 of the region; they
+  // keep the grid's smallest radius instead.
+  std::vector<PreparedLight> many = MakeLights(300, alwaysOn, place);
+  const FarFieldPlan manyPlan = PlanFarField(many, glm::dvec3(-1), glm::dvec3(1), options);
+  ASSERT_TRUE(manyPlan.Active);
+  for (const PreparedLight& l : many)
+  {
+    EXPECT_TRUE(l.FarField);
+    EXPECT_NEAR(l.Radius, options.CellsPerRadius * manyPlan.Grid.Spacing, 1e-12);
+  }
+  EXPECT_LT(manyPlan.NearLightsPerPoint, 1.0);
+  // Mixed with 2,000 lights that fall off: the always-on lights keep the smallest radius,
+  // and the others share the budget as if the always-on lights took only that.
+  std::vector<PreparedLight> mixed = MakeLights(2000, falling, place);
+  std::vector<PreparedLight> extra = MakeLights(300, alwaysOn, place);
+  mixed.insert(mixed.begin(), extra.begin(), extra.end());
+  std::vector<PreparedLight> alone = MakeLights(2000, falling, place);
+  const FarFieldPlan mixedPlan = PlanFarField(mixed, glm::dvec3(-1), glm::dvec3(1), options);
+  const FarFieldPlan alonePlan = PlanFarField(alone, glm::dvec3(-1), glm::dvec3(1), options);
+  ASSERT_TRUE(mixedPlan.Active && alonePlan.Active);
+  EXPECT_LE(mixedPlan.NearLightsPerPoint, 16.0 * (1.0 + 1e-9));
+  EXPECT_GT(mixedPlan.NearLightsPerPoint, 15.0);
+  EXPECT_GT(mixedPlan.NearRadiusCap, 0.9 * alonePlan.NearRadiusCap);
+  for (std::size_t i = 0; i < mixed.size(); ++i)
+  {
+    EXPECT_TRUE(mixed[i].FarField);
+    if (i < extra.size())
+    {
+      EXPECT_NEAR(mixed[i].Radius, options.CellsPerRadius * mixedPlan.Grid.Spacing, 1e-12);
+    }
+    else
+    {
+      EXPECT_LE(mixed[i].Radius, mixedPlan.NearRadiusCap);
+    }
+  }
+}
+
 TEST(FarFieldKernel, ClampIntervalHoldsTheTrueDiffuseAndLobe)
 {
   std::mt19937 rng(9);

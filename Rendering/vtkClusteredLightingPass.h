@@ -333,7 +333,9 @@ public:
    * past it (none at all for up to 16 vtkLights that reach everywhere); otherwise the
    * lights with the largest radii are cut to one radius R that fills the budget (a few
    * bright lights among many keep exact highlights), never below FarFieldCellsPerRadius
-   * grid cells, and the far field carries the rest. Range [0, 1e6]. Default is 16.
+   * grid cells, and the far field carries the rest. Lights that never fall off
+   * (attenuation (1, 0, 0)) keep R only while its sphere holds half the box, the smallest
+   * radius otherwise (docs/far-field.md). Range [0, 1e6]. Default is 16.
    */
   vtkSetClampMacro(NearFieldBudget, double, 0.0, 1e6);
   vtkGetMacro(NearFieldBudget, double);

@@ -221,11 +221,11 @@ inline FarFieldGrid ComputeFarFieldGrid(
  * thousands get the grid's radius and leave their tails to the far field. Always-on
  * lights have no cutoff radius: they get max(CellsPerRadius * h, R) while that sphere
  * holds at least half of the region, CellsPerRadius * h otherwise (their near spheres
- * then buy little accuracy, see the code), and R is chosen again for the others. Lights below the
- * cutoff everywhere (radius 0) go to the far field whole. Their PreparedLight::Radius (the culling
- * radius) becomes the near radius and PreparedLight::FarField is set. Does nothing when disabled,
- * when no light qualifies or when every qualifying light's sphere holds the whole region within the
- * budget.
+ * then buy little accuracy, see the code), and R is chosen again for the others. Lights
+ * below the cutoff everywhere (radius 0) go to the far field whole. Their
+ * PreparedLight::Radius (the culling radius) becomes the near radius and
+ * PreparedLight::FarField is set. Does nothing when disabled, when no light qualifies or
+ * when every qualifying light's sphere holds the whole region within the budget.
  */
 inline FarFieldPlan PlanFarField(
   std::vector<PreparedLight>& lights, glm::dvec3 lo, glm::dvec3 hi, const FarFieldOptions& options)

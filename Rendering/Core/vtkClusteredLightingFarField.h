@@ -54,7 +54,7 @@
 
 #include "vtkClusteredLightingLights.h"
 
-#include <algorithm> // for std::max
+#include <algorithm> // for std::max, std::any_of
 #include <array>     // for std::array
 #include <cmath>     // for std::floor
 #include <cstdint>   // for std::int64_t
@@ -340,21 +340,14 @@ inline FarFieldPlan PlanFarField(
   // of the region, that is a small share of the error for most of the budget (300
   // always-on lights, near budget 16 -> 1: RMSE 1.0 -> 1.05 steps, 411 -> 288 ms), so
   // they keep the smallest radius and the budget goes to the lights that fall off.
-  bool alwaysOnSmallest = false;
-  for (const PreparedLight& l : lights)
-  {
-    alwaysOnSmallest = alwaysOnSmallest || (IsFarFieldLight(l) && std::isinf(l.Radius));
-  }
+  auto alwaysOn = [](const PreparedLight& l) { return IsFarFieldLight(l) && std::isinf(l.Radius); };
   const double cap = std::max(smallest, R);
-  alwaysOnSmallest = alwaysOnSmallest && std::min(cap * cap * cap, unit) < 0.5 * unit;
-  if (alwaysOnSmallest)
+  if (std::min(cap * cap * cap, unit) < 0.5 * unit &&
+    std::any_of(lights.begin(), lights.end(), alwaysOn))
   {
     for (PreparedLight& l : lights)
     {
-      if (IsFarFieldLight(l) && std::isinf(l.Radius))
-      {
-        l.Radius = smallest;
-      }
+      l.Radius = alwaysOn(l) ? smallest : l.Radius;
     }
     R = fillBudget();
   }

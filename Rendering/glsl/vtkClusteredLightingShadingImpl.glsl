@@ -119,8 +119,8 @@
   {
 //CL_IF(PHONG)
     // What this fragment shows at least, and how uncertain the far field leaves it.
-    vec3 clLowest = gl_FragData[0].rgb + clDiffuse * diffuseColor + clSpecular * specularColor +
-      clDiffuseLow * diffuseColor + clSpecularLow * specularColor;
+    vec3 clNearSum = gl_FragData[0].rgb + clDiffuse * diffuseColor + clSpecular * specularColor;
+    vec3 clLowest = clNearSum + clDiffuseLow * diffuseColor + clSpecularLow * specularColor;
     vec3 clUncertain =
       (clDiffuseHigh - clDiffuseLow) * diffuseColor + (clSpecularHigh - clSpecularLow) * specularColor;
 //CL_ENDIF
@@ -150,11 +150,6 @@
     {
       clFarDiffuse = vec3(0.0);
       clFarSpecular = vec3(0.0);
-//CL_IF(SATURATION)
-      // Every far part adds light too, so the sum so far is a lower bound: once it
-      // saturates every channel, the lights left cannot change the pixel.
-      vec3 clNearSum = gl_FragData[0].rgb + clDiffuse * diffuseColor + clSpecular * specularColor;
-//CL_ENDIF
       // Lights are stored in Morton order: from a near light of the fragment on, the
       // nearest (brightest) far parts come first, and a saturating sum stops sooner.
       int clI = max(clFirst, 0);
@@ -179,6 +174,8 @@
         ++clEvaluated;
 //CL_ENDIF
 //CL_IF(SATURATION)
+        // Every far part adds light too, so the near sum plus the far parts so far is a
+        // lower bound: once it saturates every channel, the rest cannot change the pixel.
         if (clClampsAtOne &&
           all(greaterThanEqual(
             clNearSum + clFarDiffuse * diffuseColor + clFarSpecular * specularColor, vec3(1.0))))

@@ -162,6 +162,18 @@ inline void MakeTestLights(vtkClusteredLightSet* lights, int n, double radius, u
     lights, n, ClusteredLightingScenes::Layout::Uniform, lo, hi, params, seed);
 }
 
+/// The brute-force image of the current scene; the pass is left in clustered mode,
+/// rendered.
+inline std::vector<float> CaptureBruteForce(vtkClusteredLightingPass* pass, vtkRenderWindow* rw)
+{
+  pass->SetShadingMode(vtkClusteredLightingPass::SHADING_BRUTE_FORCE);
+  rw->Render();
+  std::vector<float> brute = CapturePixels(rw);
+  pass->SetShadingMode(vtkClusteredLightingPass::SHADING_CLUSTERED);
+  rw->Render();
+  return brute;
+}
+
 /// Renders the scene with VTK's own lighting (no pass), then with `pass`; returns both
 /// images (the pass stays set).
 inline void RenderStockThenClustered(vtkRenderWindow* rw, vtkRenderer* ren,
@@ -445,11 +457,8 @@ inline BruteForceCheck CheckAgainstBruteForce(vtkClusteredLightingPass* pass, vt
   {
     depth = CaptureDepth(rw, ren, w, h);
   }
-  pass->SetShadingMode(vtkClusteredLightingPass::SHADING_BRUTE_FORCE);
-  rw->Render();
-  const std::vector<float> brute = CapturePixels(rw);
-  pass->SetShadingMode(vtkClusteredLightingPass::SHADING_CLUSTERED);
-  rw->Render(); // leave the pass's state (and the frame state) in clustered mode
+  // The pass's state (and the frame state) is left in clustered mode.
+  const std::vector<float> brute = CaptureBruteForce(pass, rw);
   out.Image = CompareImages(clustered, brute);
 
   int x0, y0, ww, wh;

@@ -53,11 +53,7 @@ double MeanEvaluated(vtkClusteredLightingPass* pass, vtkRenderWindow* rw)
 /// Share of channels at full brightness in the brute-force image.
 double SaturatedShare(vtkClusteredLightingPass* pass, vtkRenderWindow* rw)
 {
-  pass->SetShadingMode(vtkClusteredLightingPass::SHADING_BRUTE_FORCE);
-  rw->Render();
-  const std::vector<float> brute = ClusteredLightingTest::CapturePixels(rw);
-  pass->SetShadingMode(vtkClusteredLightingPass::SHADING_CLUSTERED);
-  rw->Render();
+  const std::vector<float> brute = ClusteredLightingTest::CaptureBruteForce(pass, rw);
   std::size_t saturated = 0;
   for (float v : brute)
   {
@@ -168,13 +164,9 @@ int TestClusteredLightingSaturation(int, char*[])
     toneMapping->SetToneMappingType(vtkToneMappingPass::Reinhard);
     toneMapping->SetDelegatePass(pass);
     ren->SetPass(toneMapping);
-    pass->SetShadingMode(vtkClusteredLightingPass::SHADING_CLUSTERED);
     rw->Render();
     const std::vector<float> clustered = ClusteredLightingTest::CapturePixels(rw);
-    pass->SetShadingMode(vtkClusteredLightingPass::SHADING_BRUTE_FORCE);
-    rw->Render();
-    const std::vector<float> brute = ClusteredLightingTest::CapturePixels(rw);
-    pass->SetShadingMode(vtkClusteredLightingPass::SHADING_CLUSTERED);
+    const std::vector<float> brute = ClusteredLightingTest::CaptureBruteForce(pass, rw);
     ren->SetPass(pass);
     toneMapping->ReleaseGraphicsResources(rw);
     std::size_t violations = 0, unsaturated = 0;

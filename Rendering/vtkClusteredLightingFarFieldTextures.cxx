@@ -30,8 +30,10 @@ bool vtkClusteredLightingFarFieldTextures::Build(
     static_cast<std::size_t>(grid.GetNumberOfNodes()) * FarFieldFloatsPerNode, 0.0);
   const std::array<int, 3> blocks = GetFarFieldBlocks(grid);
   vtkSMPTools::For(0, static_cast<vtkIdType>(blocks[0]) * blocks[1] * blocks[2], 1,
-    [&](vtkIdType b0, vtkIdType b1) {
-      ComputeFarFieldMoments(grid, lights, nearRadii, tree, plan.Grouping, b0, b1, this->Moments);
+    [&](vtkIdType b0, vtkIdType b1)
+    {
+      ComputeFarFieldMomentsForThisCPU(
+        grid, lights, nearRadii, tree, plan.Grouping, b0, b1, this->Moments);
     });
   const std::array<std::vector<float>, FarFieldTextures> texels = PackFarFieldTexels(this->Moments);
 

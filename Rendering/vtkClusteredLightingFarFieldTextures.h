@@ -9,9 +9,9 @@
  *
  * Build (only when the lights, the far-field options or the region change; a moving camera
  * never rebuilds it, the far field lives in world space): the node values are summed on
- * the CPU with the light tree (ComputeFarFieldMoments: blocks of 4 x 4 x 4 nodes, single
- * precision, vectorized), the blocks split between threads with vtkSMPTools, then packed
- * and uploaded.
+ * the CPU with the light tree (ComputeFarFieldMomentsForThisCPU: blocks of 4 x 4 x 4 nodes,
+ * single precision, vectorized, with AVX2 and FMA where the processor has them), the
+ * blocks split between threads with vtkSMPTools, then packed and uploaded.
  *
  * GL objects: 7 3D textures, RGBA32F, of the grid's dimensions (27 moments per node, 112
  * bytes with the padding), linear filtering (the shading code's trilinear interpolation),

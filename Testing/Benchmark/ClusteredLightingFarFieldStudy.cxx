@@ -479,7 +479,7 @@ int main(int argc, char* argv[])
         ParallelFor(static_cast<std::size_t>(blocks[2]),
           [&](std::size_t k)
           {
-            pairs += ComputeFarFieldMoments(grid, lights, radii, tree, grouping,
+            pairs += ComputeFarFieldMomentsForThisCPU(grid, lights, radii, tree, grouping,
               static_cast<std::int64_t>(k) * slab, static_cast<std::int64_t>(k + 1) * slab, values);
           });
         const double ms =

@@ -403,6 +403,114 @@ TEST(FarFieldBuild, TreeWithoutGroupingMatchesTheExactSums)
   }
 }
 
+TEST(FarFieldBuild, TreeNodesSummarizeTheirLights)
+{
+  // The statistics of inner nodes are merged from their children: check each node against
+  // its own lights. Two attenuations, so that some groups are not uniform.
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> U(-1.0, 1.0);
+  std::vector<PreparedLight> lights = MakeLights(
+    3000, glm::dvec3(0, 0, 1), [&](int) { return glm::dvec3(U(rng), 0.3 * U(rng), U(rng)); });
+  for (std::size_t i = 0; i < lights.size(); i += 7)
+  {
+    lights[i].Attenuation = glm::dvec3(0, 0, 2);
+  }
+  std::vector<double> radii(lights.size());
+  for (std::size_t i = 0; i < radii.size(); ++i)
+  {
+    radii[i] = 0.05 + 0.1 * ((i * 37) % 11);
+  }
+  const FarFieldLightTree tree = BuildFarFieldLightTree(lights, radii);
+  ASSERT_FALSE(tree.Nodes.empty());
+  ASSERT_EQ(tree.Order.size(), lights.size());
+  int notUniform = 0;
+  for (std::size_t index = 0; index < tree.Nodes.size(); ++index)
+  {
+    const FarFieldLightTree::Node& n = tree.Nodes[index];
+    glm::dvec3 lo(1e300), hi(-1e300), color(0.0), centroid(0.0);
+    double weight = 0.0, maxRadius = 0.0;
+    bool uniform = true;
+    const glm::dvec3 att = lights[static_cast<std::size_t>(tree.Order[n.First])].Attenuation;
+    for (int q = n.First; q < n.First + n.Count; ++q)
+    {
+      const std::size_t l = static_cast<std::size_t>(tree.Order[static_cast<std::size_t>(q)]);
+      lo = glm::min(lo, lights[l].PositionWC);
+      hi = glm::max(hi, lights[l].PositionWC);
+      color += lights[l].Color;
+      const double w = lights[l].Color.x + lights[l].Color.y + lights[l].Color.z;
+      centroid += w * lights[l].PositionWC;
+      weight += w;
+      maxRadius = std::max(maxRadius, radii[l]);
+      uniform = uniform && lights[l].Attenuation == att;
+      if (n.Left < 0)
+      {
+        ASSERT_EQ(tree.LeafOf[l], static_cast<int>(index));
+      }
+    }
+    centroid /= weight;
+    for (int a = 0; a < 3; ++a)
+    {
+      ASSERT_EQ(n.Lo[a], lo[a]) << "node " << index;
+      ASSERT_EQ(n.Hi[a], hi[a]) << "node " << index;
+      ASSERT_NEAR(n.Color[a], color[a], 1e-12 * color[a]) << "node " << index;
+      ASSERT_NEAR(n.Centroid[a], centroid[a], 1e-12) << "node " << index;
+    }
+    ASSERT_EQ(n.MaxNearRadius, maxRadius) << "node " << index;
+    ASSERT_EQ(n.Uniform, uniform) << "node " << index;
+    if (uniform)
+    {
+      ASSERT_EQ(n.Attenuation, att) << "node " << index;
+    }
+    notUniform += uniform ? 0 : 1;
+    if (n.Left >= 0)
+    {
+      // Children split the node's lights in two halves.
+      const FarFieldLightTree::Node& l = tree.Nodes[static_cast<std::size_t>(n.Left)];
+      const FarFieldLightTree::Node& r = tree.Nodes[static_cast<std::size_t>(n.Right)];
+      ASSERT_EQ(l.First, n.First);
+      ASSERT_EQ(r.First, n.First + l.Count);
+      ASSERT_EQ(l.Count + r.Count, n.Count);
+      ASSERT_LE(std::abs(l.Count - r.Count), 1);
+    }
+    else
+    {
+      ASSERT_LE(n.Count, tree.LeafSize);
+    }
+  }
+  EXPECT_GT(notUniform, 0);
+}
+
+TEST(FarFieldBuild, ThisCPUsCopyMatchesThePortableBuild)
+{
+  if (!FarFieldBuildUsesAVX2())
+  {
+    GTEST_SKIP() << "this processor has no AVX2 and FMA: the portable build is the only one";
+  }
+  // Grouping 1 with a near budget: groups, whole lights and windowed lights all occur.
+  std::mt19937 rng(4);
+  std::uniform_real_distribution<double> U(-1.0, 1.0);
+  std::vector<PreparedLight> lights = MakeLights(
+    2500, glm::dvec3(0, 0, 1), [&](int) { return glm::dvec3(U(rng), U(rng), 0.5 * U(rng)); });
+  const Built b = Build(lights, glm::dvec3(-1), glm::dvec3(1), 1.0, 6000);
+  ASSERT_TRUE(b.Plan.Active);
+  const FarFieldGrid& g = b.Plan.Grid;
+  const std::array<int, 3> blocks = GetFarFieldBlocks(g);
+  std::vector<double> fast(b.Moments.size(), 0.0);
+  const std::int64_t pairs = ComputeFarFieldMomentsForThisCPU(g, lights, b.Radii, b.Tree, 1.0, 0,
+    static_cast<std::int64_t>(blocks[0]) * blocks[1] * blocks[2], fast);
+  EXPECT_LT(pairs, static_cast<std::int64_t>(lights.size()) * g.GetNumberOfNodes() / 2);
+  for (std::size_t i = 0; i < fast.size(); i += FarFieldMomentsPerChannel)
+  {
+    ASSERT_GT(b.Moments[i], 0.0);
+    // Relative to S, the node's far light: both are single-precision sums.
+    const double scale = b.Moments[i];
+    for (int q = 0; q < FarFieldMomentsPerChannel; ++q)
+    {
+      ASSERT_NEAR(fast[i + q], b.Moments[i + q], 1e-5 * scale) << "node float " << i + q;
+    }
+  }
+}
+
 TEST(FarFieldBound, HoldsForUniformLightsAtEveryScale)
 {
   for (double scale : { 1e-3, 1.0, 1e6 })

@@ -29,9 +29,9 @@
  * giving one list of sources (groups and single lights, windowed where a node of the block
  * may lie inside the light's near radius) for all 64 nodes, which are then summed in single
  * precision in a loop the compiler vectorizes across the nodes (on x86-64 processors with
- * AVX2 and FMA in a copy compiled for them, ComputeFarFieldMomentsForThisCPU). Positions are taken
- * relative to the block's centre before they become floats, so a scene far from the
- * origin keeps its precision. Blocks are independent: the caller splits them between
+ * AVX2 and FMA, in a copy compiled for them: ComputeFarFieldMomentsForThisCPU). Positions
+ * are taken relative to the block's centre before they become floats, so a scene far from
+ * the origin keeps its precision. Blocks are independent: the caller splits them between
  * threads.
  */
 #ifndef vtkClusteredLightingFarFieldTree_h

@@ -28,8 +28,7 @@ bool vtkClusteredLightingFarFieldTextures::Build(
   const FarFieldLightTree& tree = this->Tree;
   this->Moments.assign(
     static_cast<std::size_t>(grid.GetNumberOfNodes()) * FarFieldFloatsPerNode, 0.0);
-  const std::array<int, 3> blocks = GetFarFieldBlocks(grid);
-  vtkSMPTools::For(0, static_cast<vtkIdType>(blocks[0]) * blocks[1] * blocks[2], 1,
+  vtkSMPTools::For(0, static_cast<vtkIdType>(GetNumberOfFarFieldBlocks(grid)), 1,
     [&](vtkIdType b0, vtkIdType b1)
     {
       ComputeFarFieldMomentsForThisCPU(

@@ -251,6 +251,13 @@ inline std::array<int, 3> GetFarFieldBlocks(const FarFieldGrid& grid)
   return b;
 }
 
+/// Number of blocks of a grid (the range of ComputeFarFieldMoments's block indices).
+inline std::int64_t GetNumberOfFarFieldBlocks(const FarFieldGrid& grid)
+{
+  const std::array<int, 3> b = GetFarFieldBlocks(grid);
+  return static_cast<std::int64_t>(b[0]) * b[1] * b[2];
+}
+
 /// The world box of the nodes of the block holding node (i, j, k).
 inline void GetFarFieldBlockBox(
   const FarFieldGrid& grid, const glm::ivec3& node, glm::dvec3& lo, glm::dvec3& hi)

@@ -89,9 +89,8 @@ Built Build(std::vector<PreparedLight>& lights, const glm::dvec3& lo, const glm:
   {
     const FarFieldGrid& g = b.Plan.Grid;
     b.Moments.assign(static_cast<std::size_t>(g.GetNumberOfNodes()) * FarFieldFloatsPerNode, 0.0);
-    const std::array<int, 3> blocks = GetFarFieldBlocks(g);
-    ComputeFarFieldMoments(g, lights, b.Radii, b.Tree, grouping, 0,
-      static_cast<std::int64_t>(blocks[0]) * blocks[1] * blocks[2], b.Moments);
+    ComputeFarFieldMoments(
+      g, lights, b.Radii, b.Tree, grouping, 0, GetNumberOfFarFieldBlocks(g), b.Moments);
   }
   return b;
 }
@@ -494,10 +493,9 @@ TEST(FarFieldBuild, ThisCPUsCopyMatchesThePortableBuild)
   const Built b = Build(lights, glm::dvec3(-1), glm::dvec3(1), 1.0, 6000);
   ASSERT_TRUE(b.Plan.Active);
   const FarFieldGrid& g = b.Plan.Grid;
-  const std::array<int, 3> blocks = GetFarFieldBlocks(g);
   std::vector<double> fast(b.Moments.size(), 0.0);
-  const std::int64_t pairs = ComputeFarFieldMomentsForThisCPU(g, lights, b.Radii, b.Tree, 1.0, 0,
-    static_cast<std::int64_t>(blocks[0]) * blocks[1] * blocks[2], fast);
+  const std::int64_t pairs = ComputeFarFieldMomentsForThisCPU(
+    g, lights, b.Radii, b.Tree, 1.0, 0, GetNumberOfFarFieldBlocks(g), fast);
   EXPECT_LT(pairs, static_cast<std::int64_t>(lights.size()) * g.GetNumberOfNodes() / 2);
   for (std::size_t i = 0; i < fast.size(); i += FarFieldMomentsPerChannel)
   {

@@ -26,15 +26,26 @@ bool vtkClusteredLightingFarFieldTextures::Build(
   this->Tree = BuildFarFieldLightTree(lights, this->NearRadii);
   const std::vector<double>& nearRadii = this->NearRadii;
   const FarFieldLightTree& tree = this->Tree;
-  this->Moments.assign(
-    static_cast<std::size_t>(grid.GetNumberOfNodes()) * FarFieldFloatsPerNode, 0.0);
+  // Every node is written by the sums, every texel by the packing: sized, not cleared
+  // (rebuilt every frame for moving lights).
+  const std::size_t nodes = static_cast<std::size_t>(grid.GetNumberOfNodes());
+  this->Moments.resize(nodes * FarFieldFloatsPerNode);
+  for (std::vector<float>& t : this->Texels)
+  {
+    t.resize(4 * nodes);
+  }
   vtkSMPTools::For(0, static_cast<vtkIdType>(GetNumberOfFarFieldBlocks(grid)), 1,
     [&](vtkIdType b0, vtkIdType b1)
     {
       ComputeFarFieldMomentsForThisCPU(
         grid, lights, nearRadii, tree, plan.Grouping, b0, b1, this->Moments);
     });
-  const std::array<std::vector<float>, FarFieldTextures> texels = PackFarFieldTexels(this->Moments);
+  vtkSMPTools::For(0, static_cast<vtkIdType>(nodes), 4096,
+    [&](vtkIdType n0, vtkIdType n1)
+    {
+      PackFarFieldTexels(
+        this->Moments, static_cast<std::size_t>(n0), static_cast<std::size_t>(n1), this->Texels);
+    });
 
   bool ok = true;
   const bool resize = grid.Dims != this->Dims;
@@ -63,7 +74,7 @@ bool vtkClusteredLightingFarFieldTextures::Build(
     // Create3DFromRaw re-specifies the image (same size: new contents).
     ok = tex->Create3DFromRaw(static_cast<unsigned int>(grid.Dims[0]),
       static_cast<unsigned int>(grid.Dims[1]), static_cast<unsigned int>(grid.Dims[2]), 4,
-      VTK_FLOAT, const_cast<float*>(texels[static_cast<std::size_t>(q)].data()));
+      VTK_FLOAT, this->Texels[static_cast<std::size_t>(q)].data());
   }
   this->Dims = ok ? grid.Dims : std::array<int, 3>{ { 0, 0, 0 } };
   this->BuildTime =
@@ -148,4 +159,8 @@ void vtkClusteredLightingFarFieldTextures::Release(vtkWindow* w)
     }
   }
   this->Dims = { { 0, 0, 0 } };
+  for (std::vector<float>& t : this->Texels)
+  {
+    std::vector<float>().swap(t);
+  }
 }

@@ -10,8 +10,9 @@
  * Build (only when the lights, the far-field options or the region change; a moving camera
  * never rebuilds it, the far field lives in world space): the node values are summed on
  * the CPU with the light tree (ComputeFarFieldMomentsForThisCPU: blocks of 4 x 4 x 4 nodes,
- * single precision, vectorized, with AVX2 and FMA where the processor has them), the
- * blocks split between threads with vtkSMPTools, then packed and uploaded.
+ * single precision, vectorized, in a copy for AVX2 or AVX-512 where the processor has
+ * them), the blocks split between threads with vtkSMPTools, then packed (in parallel,
+ * into buffers kept from build to build) and uploaded.
  *
  * GL objects: 7 3D textures, RGBA32F, of the grid's dimensions (27 moments per node, 112
  * bytes with the padding), linear filtering (the shading code's trilinear interpolation),
@@ -70,6 +71,7 @@ private:
   std::array<vtkTextureObject*, vtkClusteredLighting::FarFieldTextures> Textures{};
   std::array<int, 3> Dims = { { 0, 0, 0 } };
   std::vector<double> Moments; ///< node sums, reused from build to build (animated lights)
+  std::array<std::vector<float>, vtkClusteredLighting::FarFieldTextures> Texels; ///< packed, reused
   std::vector<double> NearRadii;
   vtkClusteredLighting::FarFieldLightTree Tree;
   double BuildTime = 0.0;

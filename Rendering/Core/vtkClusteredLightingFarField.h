@@ -562,19 +562,14 @@ inline glm::dvec3 EvaluateFarSpecular(
  * The node moments as the shading code reads them: 7 RGBA32F 3D textures of the grid's
  * dimensions, texel (i, j, k) of texture q holding moments 4q..4q+3 in moment-major order
  * (moment m of channel c at 3 m + c: S, Vx, Vy, Vz, Txx, Tyy, Txy, Txz, Tyz, each as RGB;
- * the 28th float is 0). Returns 7 arrays of 4 floats per node, node index order.
+ * the 28th float is 0). `out` holds 7 arrays of 4 floats per node, node index order;
+ * nodes [n0, n1) are packed (ranges can be packed in parallel).
  */
 constexpr int FarFieldTextures = 7;
-inline std::array<std::vector<float>, FarFieldTextures> PackFarFieldTexels(
-  const std::vector<double>& moments)
+inline void PackFarFieldTexels(const std::vector<double>& moments, std::size_t n0, std::size_t n1,
+  std::array<std::vector<float>, FarFieldTextures>& out)
 {
-  std::array<std::vector<float>, FarFieldTextures> out;
-  const std::size_t nodes = moments.size() / FarFieldFloatsPerNode;
-  for (auto& t : out)
-  {
-    t.assign(4 * nodes, 0.0f);
-  }
-  for (std::size_t n = 0; n < nodes; ++n)
+  for (std::size_t n = n0; n < n1; ++n)
   {
     const double* m = &moments[n * FarFieldFloatsPerNode];
     for (int moment = 0; moment < FarFieldMomentsPerChannel; ++moment)
@@ -586,8 +581,8 @@ inline std::array<std::vector<float>, FarFieldTextures> PackFarFieldTexels(
           static_cast<float>(m[c * FarFieldMomentsPerChannel + moment]);
       }
     }
+    out[FarFieldTextures - 1][4 * n + 3] = 0.0f;
   }
-  return out;
 }
 
 /**

@@ -29,7 +29,7 @@
  * giving one list of sources (groups and single lights, windowed where a node of the block
  * may lie inside the light's near radius) for all 64 nodes, which are then summed in single
  * precision in a loop the compiler vectorizes across the nodes (on x86-64 processors with
- * AVX2 and FMA, in a copy compiled for them: ComputeFarFieldMomentsForThisCPU). Positions
+ * AVX2 or AVX-512, in a copy compiled for them: ComputeFarFieldMomentsForThisCPU). Positions
  * are taken relative to the block's centre before they become floats, so a scene far from
  * the origin keeps its precision. Blocks are independent: the caller splits them between
  * threads.
@@ -178,7 +178,8 @@ inline FarFieldLightTree BuildFarFieldLightTree(
 }
 
 /// Whether tree node n is taken as one light for every point of the box [lo, hi] (see
-/// the file description).
+/// the file description). Compares squared distances: the tree walk calls it for every node
+/// it visits, once per block.
 inline bool AcceptFarFieldGroup(
   const FarFieldLightTree::Node& n, const glm::dvec3& lo, const glm::dvec3& hi, double grouping)
 {
@@ -186,11 +187,16 @@ inline bool AcceptFarFieldGroup(
   {
     return false;
   }
-  const double boxDistance = glm::length(glm::max(glm::max(n.Lo - hi, lo - n.Hi), glm::dvec3(0.0)));
-  const double centroidDistance =
-    glm::length(glm::max(glm::max(lo - n.Centroid, n.Centroid - hi), glm::dvec3(0.0)));
-  return boxDistance > 0.0 && boxDistance >= n.MaxNearRadius &&
-    glm::length(n.Hi - n.Lo) < grouping * centroidDistance;
+  const glm::dvec3 gap = glm::max(glm::max(n.Lo - hi, lo - n.Hi), glm::dvec3(0.0));
+  const double boxDistance2 = glm::dot(gap, gap);
+  if (!(boxDistance2 > 0.0) || boxDistance2 < n.MaxNearRadius * n.MaxNearRadius)
+  {
+    return false;
+  }
+  const glm::dvec3 toCentroid =
+    glm::max(glm::max(lo - n.Centroid, n.Centroid - hi), glm::dvec3(0.0));
+  const glm::dvec3 extent = n.Hi - n.Lo;
+  return glm::dot(extent, extent) < grouping * grouping * glm::dot(toCentroid, toCentroid);
 }
 
 /**
@@ -300,42 +306,106 @@ struct FarFieldSources
   std::size_t Size() const { return X.size(); }
 };
 
-/// Adds sources into the 27 moments of the block's nodes (node positions px, py, pz
-/// relative to the block's centre). Windowed: each source's far part 1 - W(d / r);
-/// otherwise the whole light. Branch-free so that the compiler vectorizes it across nodes
-/// (given -fno-math-errno -fno-trapping-math, see CMakeLists.txt).
+/// The far light of one source at one node (offset (dx, dy, dz) from the node to the
+/// source), as the terms it adds to each channel's moments per unit colour:
+/// t = g (1, ux, uy, uz, ux ux, uy uy, ux uy, ux uz, uy uz), u the unit direction and g
+/// the attenuation; Windowed: times the far part 1 - W(d / r), with ir = 1 / r. A source
+/// on the node (d = 0) adds nothing, as in ComputeFarContribution. Branch-free, so that
+/// the loops below vectorize (given -fno-math-errno -fno-trapping-math, see
+/// CMakeLists.txt).
 template <bool Windowed>
+inline void ComputeFarFieldTerms(float dx, float dy, float dz, float a0, float a1, float a2,
+  float ir, float (&t)[FarFieldMomentsPerChannel])
+{
+  const float d = std::sqrt(dx * dx + dy * dy + dz * dz);
+  const float inv = 1.0f / (d + 1e-30f);
+  const float notOnNode = std::min(d * 1e30f, 1.0f);
+  float g = notOnNode / (a0 + d * (a1 + d * a2) + 1e-30f);
+  if (Windowed)
+  {
+    const float x = d * ir, x2 = x * x;
+    const float w = std::max(0.0f, 1.0f - x2 * x2);
+    g *= 1.0f - w * w;
+  }
+  const float ux = dx * inv, uy = dy * inv, uz = dz * inv;
+  const float gx = g * ux, gy = g * uy, gz = g * uz;
+  t[0] = g;
+  t[1] = gx;
+  t[2] = gy;
+  t[3] = gz;
+  t[4] = gx * ux;
+  t[5] = gy * uy;
+  t[6] = gx * uy;
+  t[7] = gx * uz;
+  t[8] = gy * uz;
+}
+
+/**
+ * Adds sources into the 27 moments of the block's nodes (node positions px, py, pz
+ * relative to the block's centre). Two loop orders, the same sums:
+ * - Lanes 0: source by source, each over all the block's nodes, the moments in memory
+ *   (acc). Best where there are too few vector registers to hold 27 moments (SSE2, AVX2).
+ * - Lanes n: n nodes at a time, their 27 moments held in registers while every source
+ *   is added, so that each term costs one multiply-add and no load or store (AVX-512's
+ *   32 registers of 16 floats hold them; with fewer registers they spill, and Lanes 0
+ *   is faster).
+ */
+template <bool Windowed, int Lanes>
 inline void AccumulateBlock(const FarFieldSources& s, const float* px, const float* py,
   const float* pz, float (*acc)[FarFieldBlockNodes])
 {
-  for (std::size_t q = 0; q < s.Size(); ++q)
+  constexpr int M = FarFieldMomentsPerChannel;
+  if constexpr (Lanes == 0)
   {
-    const float sx = s.X[q], sy = s.Y[q], sz = s.Z[q];
-    const float cr = s.R[q], cg = s.G[q], cb = s.B[q];
-    const float a0 = s.A0[q], a1 = s.A1[q], a2 = s.A2[q], ir = s.InverseNearRadius[q];
-    for (int i = 0; i < FarFieldBlockNodes; ++i)
+    for (std::size_t q = 0; q < s.Size(); ++q)
     {
-      const float dx = sx - px[i], dy = sy - py[i], dz = sz - pz[i];
-      const float d = std::sqrt(dx * dx + dy * dy + dz * dz);
-      // A light on the node (d = 0) adds nothing, as in ComputeFarContribution.
-      const float inv = 1.0f / (d + 1e-30f);
-      const float notOnNode = std::min(d * 1e30f, 1.0f);
-      float g = notOnNode / (a0 + d * (a1 + d * a2) + 1e-30f);
-      if (Windowed)
+      const float sx = s.X[q], sy = s.Y[q], sz = s.Z[q];
+      const float cr = s.R[q], cg = s.G[q], cb = s.B[q];
+      const float a0 = s.A0[q], a1 = s.A1[q], a2 = s.A2[q], ir = s.InverseNearRadius[q];
+      for (int i = 0; i < FarFieldBlockNodes; ++i)
       {
-        const float x = d * ir, x2 = x * x;
-        const float w = std::max(0.0f, 1.0f - x2 * x2);
-        g *= 1.0f - w * w;
+        float t[M];
+        ComputeFarFieldTerms<Windowed>(sx - px[i], sy - py[i], sz - pz[i], a0, a1, a2, ir, t);
+        for (int m = 0; m < M; ++m)
+        {
+          acc[m][i] += cr * t[m];
+          acc[M + m][i] += cg * t[m];
+          acc[2 * M + m][i] += cb * t[m];
+        }
       }
-      const float ux = dx * inv, uy = dy * inv, uz = dz * inv;
-      const float basis[FarFieldMomentsPerChannel] = { 1.0f, ux, uy, uz, ux * ux, uy * uy, ux * uy,
-        ux * uz, uy * uz };
-      const float gr = g * cr, gg = g * cg, gb = g * cb;
-      for (int m = 0; m < FarFieldMomentsPerChannel; ++m)
+    }
+  }
+  else
+  {
+    static_assert(FarFieldBlockNodes % Lanes == 0, "lanes must divide the block");
+    for (int i0 = 0; i0 < FarFieldBlockNodes; i0 += Lanes)
+    {
+      float a[FarFieldFloatsPerNode][Lanes];
+      for (int m = 0; m < FarFieldFloatsPerNode; ++m)
       {
-        acc[m][i] += gr * basis[m];
-        acc[FarFieldMomentsPerChannel + m][i] += gg * basis[m];
-        acc[2 * FarFieldMomentsPerChannel + m][i] += gb * basis[m];
+        std::copy(acc[m] + i0, acc[m] + i0 + Lanes, a[m]);
+      }
+      for (std::size_t q = 0; q < s.Size(); ++q)
+      {
+        const float sx = s.X[q], sy = s.Y[q], sz = s.Z[q];
+        const float cr = s.R[q], cg = s.G[q], cb = s.B[q];
+        const float a0 = s.A0[q], a1 = s.A1[q], a2 = s.A2[q], ir = s.InverseNearRadius[q];
+        for (int i = 0; i < Lanes; ++i)
+        {
+          float t[M];
+          ComputeFarFieldTerms<Windowed>(
+            sx - px[i0 + i], sy - py[i0 + i], sz - pz[i0 + i], a0, a1, a2, ir, t);
+          for (int m = 0; m < M; ++m)
+          {
+            a[m][i] += cr * t[m];
+            a[M + m][i] += cg * t[m];
+            a[2 * M + m][i] += cb * t[m];
+          }
+        }
+      }
+      for (int m = 0; m < FarFieldFloatsPerNode; ++m)
+      {
+        std::copy(a[m], a[m] + Lanes, acc[m] + i0);
       }
     }
   }
@@ -347,9 +417,11 @@ inline void AccumulateBlock(const FarFieldSources& s, const float* px, const flo
  * ComputeFarFieldMomentsExact gives them) with the light tree, a block at a time (see the
  * file description). Fills blocks [b0, b1) (block index x fastest, GetFarFieldBlocks);
  * `moments` must hold every node. Returns the number of (node, source) pairs summed: the
- * cost.
+ * cost. Lanes picks the loop order of the sums (Detail::AccumulateBlock); the default
+ * suits any processor.
  */
-inline std::int64_t ComputeFarFieldMoments(const FarFieldGrid& grid,
+template <int Lanes = 0>
+std::int64_t ComputeFarFieldMoments(const FarFieldGrid& grid,
   const std::vector<PreparedLight>& lights, const std::vector<double>& nearRadii,
   const FarFieldLightTree& tree, double grouping, std::int64_t b0, std::int64_t b1,
   std::vector<double>& moments)
@@ -403,8 +475,8 @@ inline std::int64_t ComputeFarFieldMoments(const FarFieldGrid& grid,
     {
       std::fill(row, row + FarFieldBlockNodes, 0.0f);
     }
-    Detail::AccumulateBlock<false>(whole, px, py, pz, acc);
-    Detail::AccumulateBlock<true>(windowed, px, py, pz, acc);
+    Detail::AccumulateBlock<false, Lanes>(whole, px, py, pz, acc);
+    Detail::AccumulateBlock<true, Lanes>(windowed, px, py, pz, acc);
     pairs += static_cast<std::int64_t>(whole.Size() + windowed.Size()) * ni * nj * nk;
     for (int dk = 0; dk < nk; ++dk)
     {
@@ -427,13 +499,16 @@ inline std::int64_t ComputeFarFieldMoments(const FarFieldGrid& grid,
 }
 
 // The node sums are arithmetic bound (per node and source: a square root, two divisions
-// and 27 multiply-adds, vectorized across the block's nodes). Where the processor has AVX2
-// and FMA, ComputeFarFieldMomentsForThisCPU runs them in a copy compiled for those (8
-// lanes and fused multiply-adds instead of SSE2's 4 lanes), chosen at run time, so that
-// code built for any x86-64 still runs everywhere. `flatten` inlines the whole builder
-// into that copy: no code compiled for AVX2 is shared with the portable path.
+// and 27 multiply-adds, vectorized across the block's nodes). ComputeFarFieldMomentsForThisCPU
+// runs them in a copy compiled for the best instruction set the processor has, chosen at
+// run time, so that code built for any x86-64 still runs everywhere:
+// - AVX-512: 16 lanes, and 32 registers that hold a group of nodes' 27 moments (Lanes 16);
+// - AVX2 and FMA: 8 lanes and fused multiply-adds instead of SSE2's 4 lanes (Lanes 0:
+//   16 registers cannot hold the moments).
+// `flatten` inlines the whole builder into each copy: no code compiled for one instruction
+// set is shared with another path.
 #if defined(__GNUC__) && defined(__x86_64__)
-#define VTK_CLUSTERED_LIGHTING_AVX2_BUILD 1
+#define VTK_CLUSTERED_LIGHTING_VECTOR_BUILDS 1
 namespace Detail
 {
 __attribute__((target("avx2,fma"), flatten)) inline std::int64_t ComputeFarFieldMomentsAVX2(
@@ -441,38 +516,91 @@ __attribute__((target("avx2,fma"), flatten)) inline std::int64_t ComputeFarField
   const std::vector<double>& nearRadii, const FarFieldLightTree& tree, double grouping,
   std::int64_t b0, std::int64_t b1, std::vector<double>& moments)
 {
-  return ComputeFarFieldMoments(grid, lights, nearRadii, tree, grouping, b0, b1, moments);
+  return ComputeFarFieldMoments<0>(grid, lights, nearRadii, tree, grouping, b0, b1, moments);
+}
+
+__attribute__((target("avx512f,avx512vl,avx512dq,avx2,fma"), flatten)) inline std::int64_t
+ComputeFarFieldMomentsAVX512(const FarFieldGrid& grid, const std::vector<PreparedLight>& lights,
+  const std::vector<double>& nearRadii, const FarFieldLightTree& tree, double grouping,
+  std::int64_t b0, std::int64_t b1, std::vector<double>& moments)
+{
+  return ComputeFarFieldMoments<16>(grid, lights, nearRadii, tree, grouping, b0, b1, moments);
 }
 } // namespace Detail
 #endif
 
-/// Whether ComputeFarFieldMomentsForThisCPU uses the AVX2 and FMA copy on this processor.
-inline bool FarFieldBuildUsesAVX2()
+/// The instruction sets the far-field build can use.
+enum class FarFieldBuildCopy
 {
-#ifdef VTK_CLUSTERED_LIGHTING_AVX2_BUILD
-  static const bool have = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
-  return have;
+  Portable, ///< the compiler's default for the target (SSE2 on x86-64)
+  AVX2,     ///< AVX2 and FMA
+  AVX512    ///< AVX-512 F, VL and DQ
+};
+
+/// Whether this processor can run `copy` of the far-field build.
+inline bool CanRunFarFieldBuildCopy(FarFieldBuildCopy copy)
+{
+#ifdef VTK_CLUSTERED_LIGHTING_VECTOR_BUILDS
+  static const bool avx2 = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+  static const bool avx512 = avx2 && __builtin_cpu_supports("avx512f") &&
+    __builtin_cpu_supports("avx512vl") && __builtin_cpu_supports("avx512dq");
+  return copy == FarFieldBuildCopy::Portable || (copy == FarFieldBuildCopy::AVX2 && avx2) ||
+    (copy == FarFieldBuildCopy::AVX512 && avx512);
 #else
-  return false;
+  return copy == FarFieldBuildCopy::Portable;
 #endif
 }
 
-/// ComputeFarFieldMoments, in its AVX2 and FMA copy where the processor has them
-/// (FarFieldBuildUsesAVX2). The sums agree with the portable path to float rounding (fused
-/// multiply-adds round once instead of twice).
-inline std::int64_t ComputeFarFieldMomentsForThisCPU(const FarFieldGrid& grid,
+/// The copy ComputeFarFieldMomentsForThisCPU runs on this processor: the widest it can run.
+inline FarFieldBuildCopy GetFarFieldBuildCopyForThisCPU()
+{
+  return CanRunFarFieldBuildCopy(FarFieldBuildCopy::AVX512)
+    ? FarFieldBuildCopy::AVX512
+    : (CanRunFarFieldBuildCopy(FarFieldBuildCopy::AVX2) ? FarFieldBuildCopy::AVX2
+                                                        : FarFieldBuildCopy::Portable);
+}
+
+/// The name of a copy, for reports ("portable", "AVX2", "AVX-512").
+inline const char* GetFarFieldBuildCopyName(FarFieldBuildCopy copy)
+{
+  return copy == FarFieldBuildCopy::AVX512
+    ? "AVX-512"
+    : (copy == FarFieldBuildCopy::AVX2 ? "AVX2" : "portable");
+}
+
+/// ComputeFarFieldMoments in the given copy (which the processor must be able to run:
+/// CanRunFarFieldBuildCopy). The copies agree to float rounding (fused multiply-adds round
+/// once instead of twice, and the AVX-512 copy adds in another order).
+inline std::int64_t ComputeFarFieldMomentsWith(FarFieldBuildCopy copy, const FarFieldGrid& grid,
   const std::vector<PreparedLight>& lights, const std::vector<double>& nearRadii,
   const FarFieldLightTree& tree, double grouping, std::int64_t b0, std::int64_t b1,
   std::vector<double>& moments)
 {
-#ifdef VTK_CLUSTERED_LIGHTING_AVX2_BUILD
-  if (FarFieldBuildUsesAVX2())
+#ifdef VTK_CLUSTERED_LIGHTING_VECTOR_BUILDS
+  if (copy == FarFieldBuildCopy::AVX512)
+  {
+    return Detail::ComputeFarFieldMomentsAVX512(
+      grid, lights, nearRadii, tree, grouping, b0, b1, moments);
+  }
+  if (copy == FarFieldBuildCopy::AVX2)
   {
     return Detail::ComputeFarFieldMomentsAVX2(
       grid, lights, nearRadii, tree, grouping, b0, b1, moments);
   }
 #endif
+  (void)copy;
   return ComputeFarFieldMoments(grid, lights, nearRadii, tree, grouping, b0, b1, moments);
+}
+
+/// ComputeFarFieldMoments in the widest copy this processor runs
+/// (GetFarFieldBuildCopyForThisCPU).
+inline std::int64_t ComputeFarFieldMomentsForThisCPU(const FarFieldGrid& grid,
+  const std::vector<PreparedLight>& lights, const std::vector<double>& nearRadii,
+  const FarFieldLightTree& tree, double grouping, std::int64_t b0, std::int64_t b1,
+  std::vector<double>& moments)
+{
+  return ComputeFarFieldMomentsWith(
+    GetFarFieldBuildCopyForThisCPU(), grid, lights, nearRadii, tree, grouping, b0, b1, moments);
 }
 
 } // namespace vtkClusteredLighting

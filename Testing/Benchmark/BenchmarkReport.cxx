@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "BenchmarkReport.h"
+#include "vtkClusteredLightingFarFieldTree.h" // for the far-field build's copy
 
 #include "vtkAxis.h"
 #include "vtkChartLegend.h"
@@ -367,6 +368,10 @@ void WriteMachine(vtkRenderWindow* rw, const std::string& command, const std::st
   out << "command: " << command << "\n";
   out << "cpu:" << ReadFirstLine("/proc/cpuinfo", "model name") << "\n";
   out << "hardware threads: " << std::thread::hardware_concurrency() << "\n";
+  out << "far-field build copy: "
+      << vtkClusteredLighting::GetFarFieldBuildCopyName(
+           vtkClusteredLighting::GetFarFieldBuildCopyForThisCPU())
+      << "\n";
   out << "memory:" << ReadFirstLine("/proc/meminfo", "MemTotal") << "\n";
   out << "VTK: " << vtkVersion::GetVTKVersion() << "\n";
   if (vtkOpenGLRenderWindow* gl = vtkOpenGLRenderWindow::SafeDownCast(rw))

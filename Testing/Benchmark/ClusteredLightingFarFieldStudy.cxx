@@ -12,16 +12,18 @@
 //
 //   ClusteredLightingFarFieldStudy [--scene bunny|house|user|dense] [--always-on]
 //     [--lights N] [--samples S] [--cutoffs 1024,4096] [--nodes 32768] [--cells 2]
-//     [--grouping 0.05] [--hierarchy 0.02,0.1] [--bounds]
+//     [--grouping 0.05] [--hierarchy 0.02,0.1] [--bounds] [--copies]
 //
 // Rows: "cut at 1/c" (before the far field: every light cut at its cutoff radius); "far
 // field" (design 1, the product's core code: PlanFarField, ComputeFarFieldMoments, the
 // interpolated moments and clamped kernels) for each node budget, near radius in cells
 // and grouping, with its build time and sources summed per node, and with --bounds the
 // stated bound (ComputeFarFieldErrorBound) at every sample and channel against the actual
-// error; "hierarchy per point" (design 2: the light tree walked at each point, groups
-// taken by their aggregation bound, each shaded exactly; the cost is the lights and groups
-// evaluated per point, in the near/pt column). List options take comma-separated values.
+// error, and with --copies the node sums' time in each copy of the build this processor
+// runs (portable, AVX2, AVX-512: ComputeFarFieldMomentsWith), side by side, best of 7
+// rounds that time each copy once; "hierarchy per point" (design 2: the light tree walked at each
+// point, groups taken by their aggregation bound, each shaded exactly; the cost is the lights and
+// groups evaluated per point, in the near/pt column). List options take comma-separated values.
 #include "BenchmarkMeasure.h"
 #include "BenchmarkPlan.h"
 #include "ClusteredLightingScenes.h"
@@ -268,6 +270,7 @@ int main(int argc, char* argv[])
   std::vector<double> groupings = { 0.05 };
   std::vector<double> hierarchyEpsilons;
   bool bounds = false;
+  bool copies = false;
   auto parseList = [](const char* text, double (*f)(double))
   {
     std::vector<double> out;
@@ -326,6 +329,10 @@ int main(int argc, char* argv[])
     else if (a == "--bounds")
     {
       bounds = true;
+    }
+    else if (a == "--copies")
+    {
+      copies = true;
     }
     else
     {
@@ -538,6 +545,44 @@ int main(int argc, char* argv[])
         e.Print(name, near / samples.size(), grid.GetNumberOfNodes(), ms, "build ms");
         std::printf("    sources per node %.1f",
           static_cast<double>(pairs.load()) / std::max<std::int64_t>(grid.GetNumberOfNodes(), 1));
+        if (copies)
+        {
+          // The same sums (the tree is built) in each copy, taking turns, best of 7 rounds.
+          const FarFieldBuildCopy all[] = { FarFieldBuildCopy::Portable, FarFieldBuildCopy::AVX2,
+            FarFieldBuildCopy::AVX512 };
+          double best[3] = { 1e300, 1e300, 1e300 };
+          std::vector<double> scratch(values.size());
+          for (int round = 0; round < 7; ++round)
+          {
+            for (int c = 0; c < 3; ++c)
+            {
+              if (!CanRunFarFieldBuildCopy(all[c]))
+              {
+                continue;
+              }
+              const auto c0 = std::chrono::steady_clock::now();
+              ParallelFor(static_cast<std::size_t>(blocks[2]),
+                [&](std::size_t k)
+                {
+                  ComputeFarFieldMomentsWith(all[c], grid, lights, radii, tree, grouping,
+                    static_cast<std::int64_t>(k) * slab, static_cast<std::int64_t>(k + 1) * slab,
+                    scratch);
+                });
+              best[c] = std::min(best[c],
+                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - c0)
+                  .count());
+            }
+          }
+          std::printf("; node sums ms (best of 7, %u threads):",
+            std::max(1u, std::thread::hardware_concurrency()));
+          for (int c = 0; c < 3; ++c)
+          {
+            if (CanRunFarFieldBuildCopy(all[c]))
+            {
+              std::printf(" %s %.2f", GetFarFieldBuildCopyName(all[c]), best[c]);
+            }
+          }
+        }
         if (bounds)
         {
           std::printf("; bound per point and channel: mean %.3f, max %.3f steps; error / bound "

@@ -278,6 +278,12 @@ inline void GetFarFieldBlockBox(
 
 namespace Detail
 {
+/// One source of a block (a light or a group), position relative to the block's centre.
+struct FarFieldSource
+{
+  float X, Y, Z, R, G, B, A0, A1, A2, InverseNearRadius;
+};
+
 /// Sources of one block, structure of arrays, positions relative to the block's centre.
 struct FarFieldSources
 {
@@ -304,6 +310,11 @@ struct FarFieldSources
     InverseNearRadius.push_back(static_cast<float>(inverseNearRadius));
   }
   std::size_t Size() const { return X.size(); }
+  FarFieldSource Get(std::size_t q) const
+  {
+    return FarFieldSource{ X[q], Y[q], Z[q], R[q], G[q], B[q], A0[q], A1[q], A2[q],
+      InverseNearRadius[q] };
+  }
 };
 
 /// The far light of one source at one node (offset (dx, dy, dz) from the node to the
@@ -350,28 +361,36 @@ inline void ComputeFarFieldTerms(float dx, float dy, float dz, float a0, float a
  *   32 registers of 16 floats hold them; with fewer registers they spill, and Lanes 0
  *   is faster).
  */
+/// Adds the far light of `src` at the node (px, py, pz) into column i of the 27 moment
+/// rows (channel-major, as the nodes store them).
+template <bool Windowed, int Columns>
+inline void AddFarFieldSource(
+  const FarFieldSource& src, float px, float py, float pz, float (*rows)[Columns], int i)
+{
+  constexpr int M = FarFieldMomentsPerChannel;
+  float t[M];
+  ComputeFarFieldTerms<Windowed>(
+    src.X - px, src.Y - py, src.Z - pz, src.A0, src.A1, src.A2, src.InverseNearRadius, t);
+  for (int m = 0; m < M; ++m)
+  {
+    rows[m][i] += src.R * t[m];
+    rows[M + m][i] += src.G * t[m];
+    rows[2 * M + m][i] += src.B * t[m];
+  }
+}
+
 template <bool Windowed, int Lanes>
 inline void AccumulateBlock(const FarFieldSources& s, const float* px, const float* py,
   const float* pz, float (*acc)[FarFieldBlockNodes])
 {
-  constexpr int M = FarFieldMomentsPerChannel;
   if constexpr (Lanes == 0)
   {
     for (std::size_t q = 0; q < s.Size(); ++q)
     {
-      const float sx = s.X[q], sy = s.Y[q], sz = s.Z[q];
-      const float cr = s.R[q], cg = s.G[q], cb = s.B[q];
-      const float a0 = s.A0[q], a1 = s.A1[q], a2 = s.A2[q], ir = s.InverseNearRadius[q];
+      const FarFieldSource src = s.Get(q);
       for (int i = 0; i < FarFieldBlockNodes; ++i)
       {
-        float t[M];
-        ComputeFarFieldTerms<Windowed>(sx - px[i], sy - py[i], sz - pz[i], a0, a1, a2, ir, t);
-        for (int m = 0; m < M; ++m)
-        {
-          acc[m][i] += cr * t[m];
-          acc[M + m][i] += cg * t[m];
-          acc[2 * M + m][i] += cb * t[m];
-        }
+        AddFarFieldSource<Windowed>(src, px[i], py[i], pz[i], acc, i);
       }
     }
   }
@@ -387,20 +406,10 @@ inline void AccumulateBlock(const FarFieldSources& s, const float* px, const flo
       }
       for (std::size_t q = 0; q < s.Size(); ++q)
       {
-        const float sx = s.X[q], sy = s.Y[q], sz = s.Z[q];
-        const float cr = s.R[q], cg = s.G[q], cb = s.B[q];
-        const float a0 = s.A0[q], a1 = s.A1[q], a2 = s.A2[q], ir = s.InverseNearRadius[q];
+        const FarFieldSource src = s.Get(q);
         for (int i = 0; i < Lanes; ++i)
         {
-          float t[M];
-          ComputeFarFieldTerms<Windowed>(
-            sx - px[i0 + i], sy - py[i0 + i], sz - pz[i0 + i], a0, a1, a2, ir, t);
-          for (int m = 0; m < M; ++m)
-          {
-            a[m][i] += cr * t[m];
-            a[M + m][i] += cg * t[m];
-            a[2 * M + m][i] += cb * t[m];
-          }
+          AddFarFieldSource<Windowed>(src, px[i0 + i], py[i0 + i], pz[i0 + i], a, i);
         }
       }
       for (int m = 0; m < FarFieldFloatsPerNode; ++m)

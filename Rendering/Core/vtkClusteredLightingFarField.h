@@ -503,14 +503,16 @@ inline glm::dvec3 ComputeLobeKernel(double n)
  *   E <= (S + 2 V.D + D^T T D) / 4                 ((1 + t)^2 / 4 lies above)
  *   E <= (V.D + sqrt(S D^T T D)) / 2               (max(0, t) = (t + |t|) / 2 and
  *                                                  sum g |t| <= sqrt(sum g sum g t^2))
- * and for a Phong lobe (specular, n >= 1) 0 <= sum g max(0, t)^n <= min(D^T T D, the
- * diffuse upper bounds). Clamping an estimate into an interval that holds the truth never
- * increases its error; it removes the order-2 kernel's ringing where it matters most: a
+ * and for a Phong lobe of power n, 0 <= sum g max(0, t)^n <= U with U = min(D^T T D, the
+ * diffuse upper bounds) for n >= 2 (t^n <= t^2 on [0, 1]), the diffuse upper bounds for
+ * 1 <= n < 2 (t^n <= t), and S for n < 1 (t^n <= 1; D^T T D is no bound below n = 2: at
+ * n = 1.2 a lobe can hold 20% more). Clamping an estimate into an interval that holds the truth
+ * never increases its error; it removes the order-2 kernel's ringing where it matters most: a
  * surface facing away from most of the far light gets no phantom light (the kernel's
  * value at t = -1 is 1/16). `lower` and `upper` receive the interval.
  */
 inline double ApplyMomentKernel(const double* m, const glm::dvec3& k, const glm::dvec3& D,
-  bool lobe = false, double* lowerOut = nullptr, double* upperOut = nullptr)
+  bool lobe = false, double power = 1.0, double* lowerOut = nullptr, double* upperOut = nullptr)
 {
   const double S = m[0];
   const double VD = m[1] * D.x + m[2] * D.y + m[3] * D.z;
@@ -523,7 +525,7 @@ inline double ApplyMomentKernel(const double* m, const glm::dvec3& k, const glm:
   double lower = std::max(std::max(VD, 0.0), 0.5 * (VD + DTD));
   if (lobe)
   {
-    upper = std::min(upper, DTD);
+    upper = power >= 2.0 ? std::min(upper, DTD) : (power >= 1.0 ? upper : S);
     lower = 0.0;
   }
   upper = std::max(upper, lower);
@@ -553,9 +555,9 @@ inline glm::dvec3 EvaluateFarSpecular(
   const std::array<double, FarFieldFloatsPerNode>& m, const glm::dvec3& R, double n)
 {
   const glm::dvec3 k = ComputeLobeKernel(n);
-  return glm::dvec3(ApplyMomentKernel(&m[0], k, R, true),
-    ApplyMomentKernel(&m[FarFieldMomentsPerChannel], k, R, true),
-    ApplyMomentKernel(&m[std::size_t{ 2 } * FarFieldMomentsPerChannel], k, R, true));
+  return glm::dvec3(ApplyMomentKernel(&m[0], k, R, true, n),
+    ApplyMomentKernel(&m[FarFieldMomentsPerChannel], k, R, true, n),
+    ApplyMomentKernel(&m[std::size_t{ 2 } * FarFieldMomentsPerChannel], k, R, true, n));
 }
 
 /**

@@ -20,10 +20,13 @@
  *     per atom, each computed exactly: | sum_c w_c value_c(atom) - exact(atom) |. Their sum
  *     bounds the error of the interpolated moments whatever the lights' arrangement (the
  *     triangle inequality), and it keeps the centroid's cancellation inside each group.
+ *     A group's value at a corner is what the build stored there: its centroid's terms
+ *     plus its spread terms at the corner's block centre (ComputeGroupSpreadTerms).
  *  3. Clamping. The shading clamps its estimate into the interval the moments prove the
  *     true value lies in (ApplyMomentKernel). With exact moments that never adds error;
  *     with interpolated ones the interval itself moves, by at most what term 2 gives for
- *     the moments it is made of (S, V.D, D^T T D for D = N and D = R), so the bound takes
+ *     the moments it is made of (S, V.D, D^T T D for D = N and D = R; for a Phong lobe the
+ *     upper end depends on its power, as in ApplyMomentKernel), so the bound takes
  *     the larger of the unclamped bound and that shift.
  *  4. Single precision: a relative 1e-3 of the far light (1.25 (kd + ks) sum g), which
  *     covers the node sums (up to 16,000 sources at 2^-24 each), the textures and the
@@ -109,6 +112,29 @@ inline void AddBoundQuantities(const FarFieldShadingPoint& s, const glm::dvec3& 
     }
   }
 }
+/// The same quantities for moment terms dm (per unit colour, in the order of
+/// ComputeFarFieldTerms: S, V, T as xx, yy, xy, xz, yz; trace T = S), as a group's spread
+/// terms (ComputeGroupSpreadTerms) add them: each quantity is linear in the moments.
+inline void AddBoundMomentQuantities(const FarFieldShadingPoint& s, const glm::dvec3& qd,
+  const glm::dvec3& qn, const glm::dvec3& color, const double (&dm)[FarFieldMomentsPerChannel],
+  double* out)
+{
+  const glm::dvec3 V(dm[1], dm[2], dm[3]);
+  const double zz = dm[0] - dm[4] - dm[5];
+  const glm::dmat3 T(dm[4], dm[6], dm[7], dm[6], dm[5], dm[8], dm[7], dm[8], zz);
+  const double vn = glm::dot(V, s.N), nn = glm::dot(s.N, T * s.N);
+  const double vr = glm::dot(V, s.R), rr = glm::dot(s.R, T * s.R);
+  const double v[BoundQuantities] = { dm[0], vn, nn,
+    qd.x * dm[0] + qd.y * vn + qd.z * 0.5 * (3.0 * nn - dm[0]), vr, rr,
+    qn.x * dm[0] + qn.y * vr + qn.z * 0.5 * (3.0 * rr - dm[0]) };
+  for (int c = 0; c < 3; ++c)
+  {
+    for (int k = 0; k < BoundQuantities; ++k)
+    {
+      out[c * BoundQuantities + k] += color[c] * v[k];
+    }
+  }
+}
 } // namespace Detail
 
 /**
@@ -145,6 +171,7 @@ inline glm::dvec3 ComputeFarFieldErrorBound(
     glm::dvec3 Position;
     double Weight;
     const std::vector<Source>* List;
+    glm::dvec3 BlockCenter; ///< where the build weighed its groups' spread
   };
   FarFieldBoundCache local;
   FarFieldBoundCache& lists = cache ? *cache : local;
@@ -182,7 +209,9 @@ inline glm::dvec3 ComputeFarFieldErrorBound(
         });
       it = lists.Lists.emplace(key, std::move(sources)).first;
     }
-    corners.push_back(Corner{ g.NodePosition(i, j, k), w, &it->second });
+    glm::dvec3 blockLo, blockHi;
+    GetFarFieldBlockBox(g, glm::ivec3(i, j, k), blockLo, blockHi);
+    corners.push_back(Corner{ g.NodePosition(i, j, k), w, &it->second, 0.5 * (blockLo + blockHi) });
   }
 
   // Atoms: the topmost groups taken whole at some corner; lights under none are alone.
@@ -236,6 +265,7 @@ inline glm::dvec3 ComputeFarFieldErrorBound(
       glm::dvec3 color, u;
       double far;
       int key;
+      double scratch[3 * Q] = {};
       if (src.Group >= 0)
       {
         const FarFieldLightTree::Node& n = tree.Nodes[static_cast<std::size_t>(src.Group)];
@@ -249,6 +279,11 @@ inline glm::dvec3 ComputeFarFieldErrorBound(
         far = EvaluateAttenuation(d, n.Attenuation);
         u = v / d;
         key = topmost(src.Group);
+        // The group's spread terms, as the build adds them (at the block's centre).
+        double dm[FarFieldMomentsPerChannel];
+        ComputeGroupSpreadTerms(n, c.BlockCenter, dm);
+        Detail::AddBoundMomentQuantities(s, qd, qn, color, dm, scratch);
+        farLightAtCorners += c.Weight * color * std::abs(dm[0]);
       }
       else
       {
@@ -260,7 +295,6 @@ inline glm::dvec3 ComputeFarFieldErrorBound(
         color = lights[l].Color;
         key = atomOfLight(src.Light);
       }
-      double scratch[3 * Q] = {};
       Detail::AddBoundQuantities(s, qd, qn, color, far, u, scratch);
       double* o = slot(key);
       for (int q = 0; q < 3 * Q; ++q)
@@ -324,10 +358,14 @@ inline glm::dvec3 ComputeFarFieldErrorBound(
     const double lowerShiftN = std::max(dVN, 0.5 * (dVN + dNN));
     const double diffuse =
       std::max(angularDiffuse[ch] + dQd, std::max(lowerShiftN, upperShift(dVN, dNN, exactNN[ch])));
-    const double specular =
-      std::max(angularSpecular[ch] + dQn, std::max(dRR, upperShift(dVR, dRR, exactRR[ch])));
+    // The lobe's upper end as ApplyMomentKernel takes it for this power.
+    const double lobeShift = s.Power >= 2.0
+      ? std::max(dRR, upperShift(dVR, dRR, exactRR[ch]))
+      : (s.Power >= 1.0 ? upperShift(dVR, dRR, exactRR[ch]) : dS);
+    const double specular = std::max(angularSpecular[ch] + dQn, lobeShift);
     const double precision =
       1e-3 * 1.25 * (s.Kd[ch] + s.Ks[ch]) * std::max(farLight[ch], farLightAtCorners[ch]);
+
     bound[ch] = s.Kd[ch] * diffuse + s.Ks[ch] * specular + precision;
   }
   return bound;

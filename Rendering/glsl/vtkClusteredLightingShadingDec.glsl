@@ -92,10 +92,10 @@ uniform mat3 clWorldFromVC;    // VC -> world directions (the moments' axes)
 
 // Mirrors vtkClusteredLighting::ApplyMomentKernel for RGB: the kernel with Legendre
 // coefficients k applied in world direction D (ComputeLobeKernel gives k), clamped into
-// the interval the moments prove the true value lies in (lobe: a Phong lobe, else the
-// clamped cosine).
+// the interval the moments prove the true value lies in (lobe: a Phong lobe of the given
+// power, else the clamped cosine).
 vec3 clApplyFarKernel(vec3 k, vec3 D, vec3 S, vec3 Vx, vec3 Vy, vec3 Vz, vec3 Txx, vec3 Tyy,
-  vec3 Txy, vec3 Txz, vec3 Tyz, bool lobe, out vec3 lower, out vec3 upper)
+  vec3 Txy, vec3 Txz, vec3 Tyz, bool lobe, float power, out vec3 lower, out vec3 upper)
 {
   vec3 VD = Vx * D.x + Vy * D.y + Vz * D.z;
   vec3 Tzz = S - Txx - Tyy;
@@ -106,7 +106,7 @@ vec3 clApplyFarKernel(vec3 k, vec3 D, vec3 S, vec3 Vx, vec3 Vy, vec3 Vz, vec3 Tx
   lower = max(max(VD, vec3(0.0)), 0.5 * (VD + DTD));
   if (lobe)
   {
-    upper = min(upper, DTD);
+    upper = power >= 2.0 ? min(upper, DTD) : (power >= 1.0 ? upper : S);
     lower = vec3(0.0);
   }
   upper = max(upper, lower);

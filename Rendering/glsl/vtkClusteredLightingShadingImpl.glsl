@@ -41,7 +41,7 @@
 //CL_ENDIF
   vec3 clDiffuseLow, clDiffuseHigh;
   vec3 clFarDiffuse = clApplyFarKernel(vec3(0.25, 0.5, 0.3125), clWorldFromVC * clN, clS,
-    clVx, clVy, clVz, clTxx, clTyy, clTxy, clTxz, clTyz, false, clDiffuseLow, clDiffuseHigh);
+    clVx, clVy, clVz, clTxx, clTyy, clTxy, clTxz, clTyz, false, 1.0, clDiffuseLow, clDiffuseHigh);
   vec3 clV = normalize(-vertexVC.xyz);
   vec3 clFarSpecular = vec3(0.0);
   vec3 clSpecularLow = vec3(0.0), clSpecularHigh = vec3(0.0);
@@ -50,7 +50,8 @@
 //CL_IF(SPECULAR)
   vec3 clR = 2.0 * dot(clN, clV) * clN - clV;
   clFarSpecular = clApplyFarKernel(clLobeKernel(specularPower), clWorldFromVC * clR, clS, clVx,
-    clVy, clVz, clTxx, clTyy, clTxy, clTxz, clTyz, true, clSpecularLow, clSpecularHigh);
+    clVy, clVz, clTxx, clTyy, clTxy, clTxz, clTyz, true, specularPower, clSpecularLow,
+    clSpecularHigh);
 //CL_ENDIF
 //CL_ENDIF
 //CL_ENDIF

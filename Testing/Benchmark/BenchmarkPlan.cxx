@@ -7,6 +7,7 @@
 #include "vtkActorCollection.h"
 #include "vtkProperty.h"
 
+#include <array>
 #include <cstdio>
 #include <memory>
 
@@ -219,6 +220,24 @@ std::vector<Step> MakePlan(const PlanOptions& options)
       plan.push_back(prepassOnly);
     };
     depthRows();
+    // Finer screen tiles, on every scene: fewer lights walked per pixel, for a costlier
+    // assignment (issue 12; docs/depth.md says what they buy in time).
+    if (!quick)
+    {
+      for (const auto& t : { std::array<int, 2>{ 48, 24 }, std::array<int, 2>{ 64, 32 },
+             std::array<int, 2>{ 64, 48 }, std::array<int, 2>{ 128, 96 } })
+      {
+        Step s = base;
+        s.Sweep = "tiles";
+        s.Value = std::to_string(t[0]) + "x" + std::to_string(t[1]);
+        s.Apply = [t](vtkClusteredLightingPass* p)
+        {
+          p->SetTilesX(t[0]);
+          p->SetTilesY(t[1]);
+        };
+        plan.push_back(s);
+      }
+    }
     if (!main)
     {
       continue;
@@ -268,12 +287,6 @@ std::vector<Step> MakePlan(const PlanOptions& options)
         {
           p->SetTilesX(16);
           p->SetTilesY(8);
-        });
-      knob("tiles", "64x32",
-        [](vtkClusteredLightingPass* p)
-        {
-          p->SetTilesX(64);
-          p->SetTilesY(32);
         });
       knob("slices", "16", [](vtkClusteredLightingPass* p) { p->SetSlices(16); });
       knob("slices", "64", [](vtkClusteredLightingPass* p) { p->SetSlices(64); });

@@ -199,7 +199,7 @@ int Quantize(double v)
 
 struct Errors
 {
-  double Max = 0, Mean = 0, RMSE = 0, ContinuousMean = 0;
+  double Max = 0, Mean = 0, RMSE = 0, ContinuousMean = 0, SignedMean = 0;
   std::size_t Count = 0, OverTwo = 0;
   void Add(const glm::dvec3& exact, const glm::dvec3& approx)
   {
@@ -213,16 +213,17 @@ struct Errors
       this->Mean += q;
       this->RMSE += q * q;
       this->ContinuousMean += 255.0 * std::abs(clampedExact - clampedApprox);
+      this->SignedMean += 255.0 * (clampedApprox - clampedExact);
       ++this->Count;
     }
   }
   void Print(const char* name, double nearPerPoint, long long nodes, double extra = 0.0,
     const char* extraName = nullptr) const
   {
-    std::printf("%-44s max %5.0f (>2: %zu)  mean %6.3f  RMSE %6.3f  (continuous mean %6.3f)  "
-                "near/pt %7.2f",
+    std::printf("%-44s max %5.0f (>2: %zu)  mean %6.3f  RMSE %6.3f  (continuous mean %6.3f, "
+                "signed %+6.3f)  near/pt %7.2f",
       name, this->Max, this->OverTwo, this->Mean / this->Count, std::sqrt(this->RMSE / this->Count),
-      this->ContinuousMean / this->Count, nearPerPoint);
+      this->ContinuousMean / this->Count, this->SignedMean / this->Count, nearPerPoint);
     if (nodes > 0)
     {
       std::printf("  nodes %lld", nodes);

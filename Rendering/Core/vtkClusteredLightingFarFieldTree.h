@@ -19,9 +19,10 @@
  * (ComputeGroupSpreadTerms). Without that term the error of a group of extent s seen from
  * distance D is about (s / D)^2 / 12 of its light and always of one sign (the attenuation
  * is convex: a group is brighter than its centroid alone), so the groups' errors add up
- * over the whole far field (1.3% of it with 65,536 lights); with it they fall one order
- * faster and no longer share a sign (0.1%). A
- * group is taken whole for a block of nodes when (AcceptFarFieldGroup)
+ * over the whole far field (1.3% of it with 65,536 lights); with it each group's moments
+ * are 2x to 3x closer to its own sums even at extent = distance, and the grouped far
+ * light stays within 0.13% of the exact sums. A group is taken whole for a block of nodes
+ * when (AcceptFarFieldGroup)
  *  - its lights share one attenuation,
  *  - the block lies beyond every near radius in the group (so each light contributes its
  *    whole light there, no window), and
@@ -244,7 +245,7 @@ inline bool AcceptFarFieldGroup(
  * A group seen from afar is brighter than its centroid alone (f is convex), so without
  * this term every group darkens the far field, by about (extent / distance)^2 / 12 of its
  * light, and the groups' errors add up instead of cancelling (1.3% of the whole far
- * field at 65,536 lights, 0.1% with it). The build adds it once per block, at the block's
+ * field at 65,536 lights, 0.11% with it). The build adds it once per block, at the block's
  * centre (ComputeFarFieldMoments); the stated bound counts it exactly as the build does.
  */
 inline void ComputeGroupSpreadTerms(

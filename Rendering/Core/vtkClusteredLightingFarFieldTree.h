@@ -525,6 +525,9 @@ std::int64_t ComputeFarFieldMoments(const FarFieldGrid& grid,
   std::vector<int> stack;
   float px[FarFieldBlockNodes], py[FarFieldBlockNodes], pz[FarFieldBlockNodes];
   float acc[FarFieldFloatsPerNode][FarFieldBlockNodes];
+  // The groups' spread terms of a block. On the heap: ASan's fake stack does not keep the
+  // 64-byte alignment GCC gives a local array in the AVX-512 copy (its zeroing crashed).
+  std::vector<double> spread(FarFieldFloatsPerNode);
   std::int64_t pairs = 0;
   for (std::int64_t b = b0; b < b1; ++b)
   {
@@ -551,7 +554,7 @@ std::int64_t ComputeFarFieldMoments(const FarFieldGrid& grid,
     }
     whole.Clear();
     windowed.Clear();
-    double spread[FarFieldFloatsPerNode] = {};
+    std::fill(spread.begin(), spread.end(), 0.0);
     CollectFarFieldSources(
       tree, lights, nearRadii, grouping, lo, hi, stack,
       [&](int node)

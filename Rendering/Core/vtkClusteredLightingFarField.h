@@ -493,6 +493,21 @@ inline glm::dvec3 ComputeLobeKernel(double n)
   return glm::dvec3(0.5 / (n + 1.0), 1.5 / (n + 2.0), 2.5 * (1.5 / (n + 3.0) - 0.5 / (n + 1.0)));
 }
 
+/// Which upper end a Phong lobe of power n has (ApplyMomentKernel; the stated bound and the
+/// shader's clApplyFarKernel take the same): t^n <= t^2 on [0, 1] from n = 2 on, t^n <= t
+/// from n = 1 on, t^n <= 1 below.
+enum class LobeUpperEnd
+{
+  SecondMoment, ///< min(D^T T D, the diffuse upper ends)
+  Diffuse,      ///< the diffuse upper ends
+  Total         ///< S
+};
+inline LobeUpperEnd GetLobeUpperEnd(double n)
+{
+  return n >= 2.0 ? LobeUpperEnd::SecondMoment
+                  : (n >= 1.0 ? LobeUpperEnd::Diffuse : LobeUpperEnd::Total);
+}
+
 /**
  * Applies a kernel (k0, k1, k2) in direction D to one channel's moments, and clamps the
  * result into the interval the moments prove the true value lies in. For the clamped
@@ -525,7 +540,9 @@ inline double ApplyMomentKernel(const double* m, const glm::dvec3& k, const glm:
   double lower = std::max(std::max(VD, 0.0), 0.5 * (VD + DTD));
   if (lobe)
   {
-    upper = power >= 2.0 ? std::min(upper, DTD) : (power >= 1.0 ? upper : S);
+    const LobeUpperEnd end = GetLobeUpperEnd(power);
+    upper = end == LobeUpperEnd::SecondMoment ? std::min(upper, DTD)
+                                              : (end == LobeUpperEnd::Diffuse ? upper : S);
     lower = 0.0;
   }
   upper = std::max(upper, lower);

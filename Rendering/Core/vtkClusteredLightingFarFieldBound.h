@@ -193,11 +193,11 @@ inline glm::dvec3 ComputeFarFieldErrorBound(
       (static_cast<std::int64_t>(k / FarFieldBlockSize) * blocks[1] + j / FarFieldBlockSize) *
         blocks[0] +
       i / FarFieldBlockSize;
+    glm::dvec3 lo, hi;
+    GetFarFieldBlockBox(g, glm::ivec3(i, j, k), lo, hi);
     auto it = lists.Lists.find(key);
     if (it == lists.Lists.end())
     {
-      glm::dvec3 lo, hi;
-      GetFarFieldBlockBox(g, glm::ivec3(i, j, k), lo, hi);
       std::vector<Source> sources;
       CollectFarFieldSources(
         tree, lights, radii, in.Grouping, lo, hi, stack,
@@ -209,9 +209,7 @@ inline glm::dvec3 ComputeFarFieldErrorBound(
         });
       it = lists.Lists.emplace(key, std::move(sources)).first;
     }
-    glm::dvec3 blockLo, blockHi;
-    GetFarFieldBlockBox(g, glm::ivec3(i, j, k), blockLo, blockHi);
-    corners.push_back(Corner{ g.NodePosition(i, j, k), w, &it->second, 0.5 * (blockLo + blockHi) });
+    corners.push_back(Corner{ g.NodePosition(i, j, k), w, &it->second, 0.5 * (lo + hi) });
   }
 
   // Atoms: the topmost groups taken whole at some corner; lights under none are alone.
@@ -359,13 +357,13 @@ inline glm::dvec3 ComputeFarFieldErrorBound(
     const double diffuse =
       std::max(angularDiffuse[ch] + dQd, std::max(lowerShiftN, upperShift(dVN, dNN, exactNN[ch])));
     // The lobe's upper end as ApplyMomentKernel takes it for this power.
-    const double lobeShift = s.Power >= 2.0
+    const LobeUpperEnd end = GetLobeUpperEnd(s.Power);
+    const double lobeShift = end == LobeUpperEnd::SecondMoment
       ? std::max(dRR, upperShift(dVR, dRR, exactRR[ch]))
-      : (s.Power >= 1.0 ? upperShift(dVR, dRR, exactRR[ch]) : dS);
+      : (end == LobeUpperEnd::Diffuse ? upperShift(dVR, dRR, exactRR[ch]) : dS);
     const double specular = std::max(angularSpecular[ch] + dQn, lobeShift);
     const double precision =
       1e-3 * 1.25 * (s.Kd[ch] + s.Ks[ch]) * std::max(farLight[ch], farLightAtCorners[ch]);
-
     bound[ch] = s.Kd[ch] * diffuse + s.Ks[ch] * specular + precision;
   }
   return bound;

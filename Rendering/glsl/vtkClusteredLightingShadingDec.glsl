@@ -93,7 +93,7 @@ uniform mat3 clWorldFromVC;    // VC -> world directions (the moments' axes)
 // Mirrors vtkClusteredLighting::ApplyMomentKernel for RGB: the kernel with Legendre
 // coefficients k applied in world direction D (ComputeLobeKernel gives k), clamped into
 // the interval the moments prove the true value lies in (lobe: a Phong lobe of the given
-// power, else the clamped cosine).
+// power, else the clamped cosine; the lobe's upper end by power as GetLobeUpperEnd).
 vec3 clApplyFarKernel(vec3 k, vec3 D, vec3 S, vec3 Vx, vec3 Vy, vec3 Vz, vec3 Txx, vec3 Tyy,
   vec3 Txy, vec3 Txz, vec3 Tyz, bool lobe, float power, out vec3 lower, out vec3 upper)
 {

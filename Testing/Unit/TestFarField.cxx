@@ -523,24 +523,23 @@ TEST(FarFieldBuild, GroupSpreadTermsGiveTheGroupsOwnMoments)
         continue;
       }
       // Channel 0 of the group's own sums, and of its centroid with and without the terms.
-      double own[FarFieldMomentsPerChannel] = {};
       float t[FarFieldMomentsPerChannel];
+      auto terms = [&](const glm::dvec3& v)
+      {
+        const glm::vec3 f(v), a(att);
+        Detail::ComputeFarFieldTerms<false>(f.x, f.y, f.z, a.x, a.y, a.z, 0.0f, t);
+      };
+      double own[FarFieldMomentsPerChannel] = {};
       for (int q = n.First; q < n.First + n.Count; ++q)
       {
         const PreparedLight& l = lights[static_cast<std::size_t>(tree.Order[q])];
-        const glm::dvec3 v = l.PositionWC - x;
-        Detail::ComputeFarFieldTerms<false>(static_cast<float>(v.x), static_cast<float>(v.y),
-          static_cast<float>(v.z), static_cast<float>(att.x), static_cast<float>(att.y),
-          static_cast<float>(att.z), 0.0f, t);
+        terms(l.PositionWC - x);
         for (int m = 0; m < FarFieldMomentsPerChannel; ++m)
         {
           own[m] += l.Color.x * t[m];
         }
       }
-      const glm::dvec3 v = n.Centroid - x;
-      Detail::ComputeFarFieldTerms<false>(static_cast<float>(v.x), static_cast<float>(v.y),
-        static_cast<float>(v.z), static_cast<float>(att.x), static_cast<float>(att.y),
-        static_cast<float>(att.z), 0.0f, t);
+      terms(n.Centroid - x);
       double dm[FarFieldMomentsPerChannel];
       ComputeGroupSpreadTerms(n, x, dm);
       for (int m = 0; m < FarFieldMomentsPerChannel; ++m)

@@ -110,6 +110,19 @@ std::vector<Step> MakePlan(const PlanOptions& options)
         // and one at 65,536 uniform lights (about 4 minutes, rendered once).
         s.Reference = n <= 16384 || (layout == "uniform" && n == 65536);
         plan.push_back(s);
+        if (layout == "uniform" && n == 65536 && !quick)
+        {
+          // The far field's resolution where it holds most of the light (the same
+          // reference): finer grids give shorter near radii and smaller grid errors.
+          for (int nodes : { 65536, 131072, 262144 })
+          {
+            Step r = s;
+            r.Sweep = "far field";
+            r.Value = std::to_string(nodes) + " nodes";
+            r.Apply = [nodes](vtkClusteredLightingPass* p) { p->SetFarFieldResolution(nodes); };
+            plan.push_back(r);
+          }
+        }
         if (layout == "uniform" && n <= 16384)
         {
           s.Method = "brute";

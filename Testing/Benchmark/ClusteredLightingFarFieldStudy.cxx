@@ -12,7 +12,7 @@
 //
 //   ClusteredLightingFarFieldStudy [--scene bunny|house|user|dense] [--always-on]
 //     [--lights N] [--samples S] [--cutoffs 1024,4096] [--nodes 32768] [--cells 2]
-//     [--grouping 0.05] [--hierarchy 0.02,0.1] [--bounds] [--copies]
+//     [--grouping 0.05] [--hierarchy 0.02,0.1] [--bounds] [--copies] [--worst K]
 //
 // Rows: "cut at 1/c" (before the far field: every light cut at its cutoff radius); "far
 // field" (design 1, the product's core code: PlanFarField, ComputeFarFieldMoments, the
@@ -21,7 +21,10 @@
 // stated bound (ComputeFarFieldErrorBound) at every sample and channel against the actual
 // error, and with --copies the node sums' time in each copy of the build this processor
 // runs (portable, AVX2, AVX-512: ComputeFarFieldMomentsWith), side by side, best of 7
-// rounds that time each copy once; "hierarchy per point" (design 2: the light tree walked at each
+// rounds that time each copy once, and with --worst K where the far field's error comes
+// from (PrintWorstSamples: the kernels' angular truncation against the grid's
+// interpolation, the image error with each removed, and the K worst samples taken
+// apart); "hierarchy per point" (design 2: the light tree walked at each
 // point, groups taken by their aggregation bound, each shaded exactly; the cost is the lights and
 // groups evaluated per point, in the near/pt column). List options take comma-separated values.
 #include "BenchmarkMeasure.h"
@@ -259,6 +262,150 @@ void ParallelFor(std::size_t n, F f)
   }
 }
 
+/**
+ * Where the far field's error comes from at the `count` samples of largest error (8-bit
+ * steps, worst channel), and on average over all samples: the far parts shaded exactly
+ * (the truth), the kernels applied to the exact moments at the point (the angular
+ * truncation's share) and to the grid's interpolated moments (the grid's and the
+ * grouping's share), diffuse and specular apart, in steps of that channel.
+ */
+void PrintWorstSamples(const std::vector<Sample>& samples, const std::vector<glm::dvec3>& exact,
+  const std::vector<glm::dvec3>& approx, const std::vector<PreparedLight>& lights,
+  const std::vector<double>& radii, const FarFieldGrid& grid, const std::vector<double>& values,
+  int count)
+{
+  struct Parts
+  {
+    glm::dvec3 TrueD{ 0.0 }, TrueS{ 0.0 }, PointD{ 0.0 }, PointS{ 0.0 }, GridD{ 0.0 }, GridS{ 0.0 };
+    double Largest = 0.0; ///< the largest single far part (unit colour, before shading)
+    double Total = 0.0;   ///< the sum of far parts (unit colour)
+    int Nearest = -1;
+    double NearestDistance = 0.0;
+    double GridSError = 0.0;  ///< (interpolated - exact) S at the point, over exact S
+    double GridVNError = 0.0; ///< (interpolated - exact) V.N at the point, over exact S
+  };
+  std::vector<Parts> parts(samples.size());
+  ParallelFor(samples.size(),
+    [&](std::size_t i)
+    {
+      const Sample& smp = samples[i];
+      const glm::dvec3 R = 2.0 * glm::dot(smp.N, smp.V) * smp.N - smp.V;
+      Parts& q = parts[i];
+      std::array<double, FarFieldFloatsPerNode> m{};
+      for (std::size_t l = 0; l < lights.size(); ++l)
+      {
+        double far;
+        glm::dvec3 u;
+        if (ComputeFarContribution(lights[l], radii[l], smp.P, far, u))
+        {
+          const glm::dvec2 sh = Shade(smp, u);
+          q.TrueD += lights[l].Color * far * sh.x;
+          q.TrueS += lights[l].Color * far * sh.y;
+          AccumulateFarMoments(lights[l].Color, far, u, m.data());
+          q.Total += far;
+          if (far > q.Largest)
+          {
+            q.Largest = far;
+            q.Nearest = static_cast<int>(l);
+            q.NearestDistance = glm::length(lights[l].PositionWC - smp.P) / radii[l];
+          }
+        }
+      }
+      q.PointD = EvaluateFarDiffuse(m, smp.N);
+      q.PointS = smp.Ks > 0.0 ? EvaluateFarSpecular(m, R, smp.Power) : glm::dvec3(0.0);
+      const auto g = InterpolateFarMoments(grid, values, smp.P);
+      q.GridD = EvaluateFarDiffuse(g, smp.N);
+      q.GridS = smp.Ks > 0.0 ? EvaluateFarSpecular(g, R, smp.Power) : glm::dvec3(0.0);
+      double total = 0.0;
+      for (int c = 0; c < 3; ++c)
+      {
+        const std::size_t o = static_cast<std::size_t>(c) * FarFieldMomentsPerChannel;
+        total += m[o];
+        q.GridSError += g[o] - m[o];
+        for (int a = 0; a < 3; ++a)
+        {
+          q.GridVNError += (g[o + 1 + a] - m[o + 1 + a]) * smp.N[a];
+        }
+      }
+      q.GridSError = total > 0.0 ? q.GridSError / total : 0.0;
+      q.GridVNError = total > 0.0 ? q.GridVNError / total : 0.0;
+    });
+  std::vector<std::pair<int, std::size_t>> order;
+  double kernelD = 0.0, kernelS = 0.0, gridD = 0.0, gridS = 0.0;
+  for (std::size_t i = 0; i < samples.size(); ++i)
+  {
+    int q = 0;
+    for (int c = 0; c < 3; ++c)
+    {
+      q = std::max(q, std::abs(Quantize(exact[i][c]) - Quantize(approx[i][c])));
+    }
+    order.emplace_back(q, i);
+    const Parts& p = parts[i];
+    for (int c = 0; c < 3; ++c)
+    {
+      kernelD += std::abs(p.PointD[c] - p.TrueD[c]) * samples[i].Kd[c];
+      kernelS += std::abs(p.PointS[c] - p.TrueS[c]) * samples[i].Ks;
+      gridD += std::abs(p.GridD[c] - p.PointD[c]) * samples[i].Kd[c];
+      gridS += std::abs(p.GridS[c] - p.PointS[c]) * samples[i].Ks;
+    }
+  }
+  // The image error with one share removed: the far specular exact, the far diffuse
+  // kernel exact, and both (only the grid's interpolation and grouping left).
+  {
+    Errors perfectSpecular, perfectDiffuseKernel, onlyGrid;
+    for (std::size_t i = 0; i < samples.size(); ++i)
+    {
+      const Sample& smp = samples[i];
+      const Parts& p = parts[i];
+      const glm::dvec3 nearPart = approx[i] - p.GridD * smp.Kd - p.GridS * smp.Ks;
+      perfectSpecular.Add(exact[i], nearPart + p.GridD * smp.Kd + p.TrueS * smp.Ks);
+      perfectDiffuseKernel.Add(
+        exact[i], nearPart + (p.GridD - p.PointD + p.TrueD) * smp.Kd + p.GridS * smp.Ks);
+      onlyGrid.Add(exact[i],
+        nearPart + (p.GridD - p.PointD + p.TrueD) * smp.Kd +
+          (p.GridS - p.PointS + p.TrueS) * smp.Ks);
+    }
+    perfectSpecular.Print("    far specular exact", 0.0, 0);
+    perfectDiffuseKernel.Print("    far diffuse kernel exact", 0.0, 0);
+    onlyGrid.Print("    both kernels exact (grid only)", 0.0, 0);
+  }
+  double sError = 0.0, vnError = 0.0;
+  for (const Parts& p : parts)
+  {
+    sError += p.GridSError;
+    vnError += p.GridVNError;
+  }
+  std::printf("    the grid's mean relative error at the points: S %+.3f%%, V.N %+.3f%% of S\n",
+    100.0 * sError / parts.size(), 100.0 * vnError / parts.size());
+  const double per = 255.0 / (3.0 * samples.size());
+  std::printf("    mean |error| in steps: kernel diffuse %.3f, kernel specular %.3f, grid diffuse "
+              "%.3f, grid specular %.3f\n",
+    kernelD * per, kernelS * per, gridD * per, gridS * per);
+  std::sort(order.begin(), order.end(), std::greater<std::pair<int, std::size_t>>());
+  for (int w = 0; w < count && w < static_cast<int>(order.size()); ++w)
+  {
+    const std::size_t i = order[static_cast<std::size_t>(w)].second;
+    const Sample& smp = samples[i];
+    const Parts& p = parts[i];
+    int c = 0;
+    for (int k = 1; k < 3; ++k)
+    {
+      c = std::abs(approx[i][k] - exact[i][k]) > std::abs(approx[i][c] - exact[i][c]) ? k : c;
+    }
+    const double kd = smp.Kd[c] * 255.0, ks = smp.Ks * 255.0;
+    std::printf("    #%d err %d (ch %d): exact %.2f approx %.2f | far diffuse true %.2f point "
+                "%.2f grid %.2f | far specular (n %g) true %.2f point %.2f grid %.2f | far "
+                "total %.3g, largest %.3g at d/r %.2f, N.L %.2f\n",
+      w, order[static_cast<std::size_t>(w)].first, c, 255.0 * exact[i][c], 255.0 * approx[i][c],
+      kd * p.TrueD[c], kd * p.PointD[c], kd * p.GridD[c], smp.Power, ks * p.TrueS[c],
+      ks * p.PointS[c], ks * p.GridS[c], p.Total, p.Largest, p.NearestDistance,
+      p.Nearest >= 0
+        ? glm::dot(
+            smp.N, glm::normalize(lights[static_cast<std::size_t>(p.Nearest)].PositionWC - smp.P))
+        : 0.0);
+  }
+}
+
 }
 
 int main(int argc, char* argv[])
@@ -272,6 +419,7 @@ int main(int argc, char* argv[])
   std::vector<double> hierarchyEpsilons;
   bool bounds = false;
   bool copies = false;
+  int worst = -1;
   auto parseList = [](const char* text, double (*f)(double))
   {
     std::vector<double> out;
@@ -334,6 +482,10 @@ int main(int argc, char* argv[])
     else if (a == "--copies")
     {
       copies = true;
+    }
+    else if (a == "--worst" && value)
+    {
+      worst = std::atoi(argv[++i]);
     }
     else
     {
@@ -493,6 +645,7 @@ int main(int argc, char* argv[])
         const double ms =
           std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
         Errors e;
+        std::vector<glm::dvec3> approx(samples.size());
         double near = 0.0, sumBound = 0.0, maxBound = 0.0, maxRatio = 0.0;
         std::size_t violations = 0;
         for (std::size_t i = 0; i < samples.size(); ++i)
@@ -539,6 +692,11 @@ int main(int argc, char* argv[])
             }
           }
           e.Add(exact[i], sum);
+          approx[i] = sum;
+        }
+        if (worst >= 0 && plan.Active)
+        {
+          PrintWorstSamples(samples, exact, approx, lights, radii, grid, values, worst);
         }
         char name[160];
         std::snprintf(name, sizeof(name), "far field: %g nodes, h %.3g, r <= %g h, grouping %g",

@@ -113,7 +113,8 @@ std::vector<Step> MakePlan(const PlanOptions& options)
         if (layout == "uniform" && n == 65536 && !quick)
         {
           // The far field's resolution where it holds most of the light (the same
-          // reference): finer grids give shorter near radii and smaller grid errors.
+          // reference): finer grids give shorter near radii, so fewer lights walked per
+          // pixel; what they do to accuracy is measured (docs/far-field.md).
           for (int nodes : { 65536, 131072, 262144 })
           {
             Step r = s;

@@ -277,12 +277,12 @@ void PrintWorstSamples(const std::vector<Sample>& samples, const std::vector<glm
   struct Parts
   {
     glm::dvec3 TrueD{ 0.0 }, TrueS{ 0.0 }, PointD{ 0.0 }, PointS{ 0.0 }, GridD{ 0.0 }, GridS{ 0.0 };
-    double Largest = 0.0; ///< the largest single far part (unit colour, before shading)
-    double Total = 0.0;   ///< the sum of far parts (unit colour)
-    int Nearest = -1;
-    double NearestDistance = 0.0;
-    double GridSError = 0.0;  ///< (interpolated - exact) S at the point, over exact S
-    double GridVNError = 0.0; ///< (interpolated - exact) V.N at the point, over exact S
+    double Largest = 0.0;           ///< the largest single far part (unit colour, before shading)
+    double Total = 0.0;             ///< the sum of far parts (unit colour)
+    int Brightest = -1;             ///< the light of the largest far part
+    double BrightestDistance = 0.0; ///< its distance over its near radius
+    double GridSError = 0.0;        ///< (interpolated - exact) S at the point, over exact S
+    double GridVNError = 0.0;       ///< (interpolated - exact) V.N at the point, over exact S
   };
   std::vector<Parts> parts(samples.size());
   ParallelFor(samples.size(),
@@ -306,8 +306,8 @@ void PrintWorstSamples(const std::vector<Sample>& samples, const std::vector<glm
           if (far > q.Largest)
           {
             q.Largest = far;
-            q.Nearest = static_cast<int>(l);
-            q.NearestDistance = glm::length(lights[l].PositionWC - smp.P) / radii[l];
+            q.Brightest = static_cast<int>(l);
+            q.BrightestDistance = glm::length(lights[l].PositionWC - smp.P) / radii[l];
           }
         }
       }
@@ -330,51 +330,38 @@ void PrintWorstSamples(const std::vector<Sample>& samples, const std::vector<glm
       q.GridSError = total > 0.0 ? q.GridSError / total : 0.0;
       q.GridVNError = total > 0.0 ? q.GridVNError / total : 0.0;
     });
+  // One pass over the samples: their image errors (for the worst), each share's mean
+  // |error|, the grid's relative errors, and the image error with one share removed: the
+  // far specular exact, the far diffuse kernel exact, and both (only the grid's
+  // interpolation and grouping left).
   std::vector<std::pair<int, std::size_t>> order;
-  double kernelD = 0.0, kernelS = 0.0, gridD = 0.0, gridS = 0.0;
+  double kernelD = 0.0, kernelS = 0.0, gridD = 0.0, gridS = 0.0, sError = 0.0, vnError = 0.0;
+  Errors perfectSpecular, perfectDiffuseKernel, onlyGrid;
   for (std::size_t i = 0; i < samples.size(); ++i)
   {
+    const Sample& smp = samples[i];
+    const Parts& p = parts[i];
     int q = 0;
     for (int c = 0; c < 3; ++c)
     {
       q = std::max(q, std::abs(Quantize(exact[i][c]) - Quantize(approx[i][c])));
+      kernelD += std::abs(p.PointD[c] - p.TrueD[c]) * smp.Kd[c];
+      kernelS += std::abs(p.PointS[c] - p.TrueS[c]) * smp.Ks;
+      gridD += std::abs(p.GridD[c] - p.PointD[c]) * smp.Kd[c];
+      gridS += std::abs(p.GridS[c] - p.PointS[c]) * smp.Ks;
     }
     order.emplace_back(q, i);
-    const Parts& p = parts[i];
-    for (int c = 0; c < 3; ++c)
-    {
-      kernelD += std::abs(p.PointD[c] - p.TrueD[c]) * samples[i].Kd[c];
-      kernelS += std::abs(p.PointS[c] - p.TrueS[c]) * samples[i].Ks;
-      gridD += std::abs(p.GridD[c] - p.PointD[c]) * samples[i].Kd[c];
-      gridS += std::abs(p.GridS[c] - p.PointS[c]) * samples[i].Ks;
-    }
-  }
-  // The image error with one share removed: the far specular exact, the far diffuse
-  // kernel exact, and both (only the grid's interpolation and grouping left).
-  {
-    Errors perfectSpecular, perfectDiffuseKernel, onlyGrid;
-    for (std::size_t i = 0; i < samples.size(); ++i)
-    {
-      const Sample& smp = samples[i];
-      const Parts& p = parts[i];
-      const glm::dvec3 nearPart = approx[i] - p.GridD * smp.Kd - p.GridS * smp.Ks;
-      perfectSpecular.Add(exact[i], nearPart + p.GridD * smp.Kd + p.TrueS * smp.Ks);
-      perfectDiffuseKernel.Add(
-        exact[i], nearPart + (p.GridD - p.PointD + p.TrueD) * smp.Kd + p.GridS * smp.Ks);
-      onlyGrid.Add(exact[i],
-        nearPart + (p.GridD - p.PointD + p.TrueD) * smp.Kd +
-          (p.GridS - p.PointS + p.TrueS) * smp.Ks);
-    }
-    perfectSpecular.Print("    far specular exact", 0.0, 0);
-    perfectDiffuseKernel.Print("    far diffuse kernel exact", 0.0, 0);
-    onlyGrid.Print("    both kernels exact (grid only)", 0.0, 0);
-  }
-  double sError = 0.0, vnError = 0.0;
-  for (const Parts& p : parts)
-  {
     sError += p.GridSError;
     vnError += p.GridVNError;
+    const glm::dvec3 nearPart = approx[i] - p.GridD * smp.Kd - p.GridS * smp.Ks;
+    const glm::dvec3 diffuseKernelExact = (p.GridD - p.PointD + p.TrueD) * smp.Kd;
+    perfectSpecular.Add(exact[i], nearPart + p.GridD * smp.Kd + p.TrueS * smp.Ks);
+    perfectDiffuseKernel.Add(exact[i], nearPart + diffuseKernelExact + p.GridS * smp.Ks);
+    onlyGrid.Add(exact[i], nearPart + diffuseKernelExact + (p.GridS - p.PointS + p.TrueS) * smp.Ks);
   }
+  perfectSpecular.Print("    far specular exact", 0.0, 0);
+  perfectDiffuseKernel.Print("    far diffuse kernel exact", 0.0, 0);
+  onlyGrid.Print("    both kernels exact (grid only)", 0.0, 0);
   std::printf("    the grid's mean relative error at the points: S %+.3f%%, V.N %+.3f%% of S\n",
     100.0 * sError / parts.size(), 100.0 * vnError / parts.size());
   const double per = 255.0 / (3.0 * samples.size());
@@ -398,10 +385,10 @@ void PrintWorstSamples(const std::vector<Sample>& samples, const std::vector<glm
                 "total %.3g, largest %.3g at d/r %.2f, N.L %.2f\n",
       w, order[static_cast<std::size_t>(w)].first, c, 255.0 * exact[i][c], 255.0 * approx[i][c],
       kd * p.TrueD[c], kd * p.PointD[c], kd * p.GridD[c], smp.Power, ks * p.TrueS[c],
-      ks * p.PointS[c], ks * p.GridS[c], p.Total, p.Largest, p.NearestDistance,
-      p.Nearest >= 0
+      ks * p.PointS[c], ks * p.GridS[c], p.Total, p.Largest, p.BrightestDistance,
+      p.Brightest >= 0
         ? glm::dot(
-            smp.N, glm::normalize(lights[static_cast<std::size_t>(p.Nearest)].PositionWC - smp.P))
+            smp.N, glm::normalize(lights[static_cast<std::size_t>(p.Brightest)].PositionWC - smp.P))
         : 0.0);
   }
 }

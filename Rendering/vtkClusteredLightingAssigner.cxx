@@ -373,7 +373,9 @@ const vtkClusteredLightingAssignment& vtkClusteredLightingAssigner::Update(
 //------------------------------------------------------------------------------
 // The far field's region follows the geometry but is sticky: it changes only when the
 // geometry leaves it or shrinks to less than half of it on some axis, so that animated
-// geometry does not rebuild the far field every frame. It is grown by 10% when adopted.
+// geometry does not rebuild the far field every frame. It is grown by FarFieldRegionMargin
+// on every side when adopted, and the geometry's lower corner at that time anchors the
+// grid's node planes (ComputeFarFieldGrid: a floor at the bottom lies on a node plane).
 void vtkClusteredLightingAssigner::UpdateRegion(const vtkClusteredLightingAssignerInputs& inputs)
 {
   const glm::dvec3 lo = inputs.RegionLo, hi = inputs.RegionHi;
@@ -391,9 +393,10 @@ void vtkClusteredLightingAssigner::UpdateRegion(const vtkClusteredLightingAssign
   }
   if (!keep)
   {
-    const glm::dvec3 grow = 0.05 * (hi - lo);
+    const glm::dvec3 grow = vtkClusteredLighting::FarFieldRegionMargin * (hi - lo);
     this->RegionLo = lo - grow;
     this->RegionHi = hi + grow;
+    this->RegionAnchor = lo;
   }
 }
 
@@ -417,8 +420,8 @@ void vtkClusteredLightingAssigner::PrepareLights(const vtkClusteredLightingAssig
   this->EffectiveCutoff = options.Cutoff;
   this->Prepared = vtkClusteredLighting::PrepareLights(lights.Sources, options, nameOf);
   // Near radii and the far field's grid (caps the culling radii of far-field lights).
-  this->FarFieldPlan =
-    PlanFarField(this->Prepared.Lights, this->RegionLo, this->RegionHi, inputs.FarField);
+  this->FarFieldPlan = PlanFarField(
+    this->Prepared.Lights, this->RegionLo, this->RegionHi, inputs.FarField, this->RegionAnchor);
   this->NumberReachingEveryCluster = static_cast<std::size_t>(std::count_if(
     this->Prepared.Lights.begin(), this->Prepared.Lights.end(), &ReachesEveryCluster));
   // Report each problem once: a bad light stays reported while it stays bad, even when

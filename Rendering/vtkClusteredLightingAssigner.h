@@ -299,7 +299,8 @@ private:
   vtkClusteredLightingTextureBuffer LightView;
   vtkClusteredLighting::FarFieldPlan FarFieldPlan;
   vtkClusteredLightingFarFieldTextures FarField;
-  glm::dvec3 RegionLo = glm::dvec3(1.0), RegionHi = glm::dvec3(-1.0); ///< the far field's
+  glm::dvec3 RegionLo = glm::dvec3(1.0), RegionHi = glm::dvec3(-1.0); ///< the far field's region
+  glm::dvec3 RegionAnchor = glm::dvec3(0.0); ///< its node planes (see UpdateRegion)
   std::unique_ptr<vtkClusteredLightingAssignmentBackend> Backend;
 
   vtkClusteredLightingAssignment Result;

@@ -170,22 +170,40 @@ struct FarFieldPlan
 };
 
 /**
- * A grid of at most maxNodes nodes with spacing at most `spacing` covering the box [lo,
- * hi] (grown by one node on every side, so trilinear interpolation never reads outside).
- * If the box needs more nodes, the spacing grows until it fits (the caller then uses
- * larger near radii, see ComputeNearRadiusFloor).
+ * The far field's region is the box of the geometry to be shaded, grown by this fraction of
+ * its size on every side when it is adopted (so that geometry moving a little does not
+ * rebuild the far field; vtkClusteredLightingAssigner keeps it until the geometry leaves
+ * it or shrinks to half of it).
  */
-inline FarFieldGrid ComputeFarFieldGrid(
-  const glm::dvec3& lo, const glm::dvec3& hi, double spacing, std::int64_t maxNodes)
+constexpr double FarFieldRegionMargin = 0.05;
+
+/**
+ * A grid of at most maxNodes nodes with spacing at most `spacing` covering the box [lo,
+ * hi] (grown by at least one node on every side, so trilinear interpolation never reads
+ * outside), with node planes through `anchor` (clamped into the box).
+ *
+ * Why an anchor: a surface with every far light on one side of it (a floor under the
+ * lights) is where V.N peaks, and trilinear interpolation between a node plane below it and
+ * one above shades it darker than exact (docs/far-field.md). The pass anchors the grid at
+ * the geometry's lower corner, so a floor at the bottom of the scene lies on a node plane.
+ * If the box needs more nodes than maxNodes, the spacing grows until it fits (the caller
+ * then uses larger near radii, see ComputeNearRadiusFloor).
+ */
+inline FarFieldGrid ComputeFarFieldGrid(const glm::dvec3& lo, const glm::dvec3& hi, double spacing,
+  std::int64_t maxNodes, const glm::dvec3& anchor)
 {
   FarFieldGrid g;
-  const glm::dvec3 size = glm::max(hi - lo, glm::dvec3(0.0));
+  const glm::dvec3 a = glm::clamp(anchor, lo, glm::max(lo, hi));
+  const glm::dvec3 below = glm::max(a - lo, glm::dvec3(0.0));
+  const glm::dvec3 above = glm::max(hi - a, glm::dvec3(0.0));
   double h = spacing > 0.0 ? spacing : 1.0;
+  std::array<int, 3> nodesBelow = { { 0, 0, 0 } };
   for (int attempt = 0; attempt < 64; ++attempt)
   {
-    for (int a = 0; a < 3; ++a)
+    for (int i = 0; i < 3; ++i)
     {
-      g.Dims[a] = static_cast<int>(std::ceil(size[a] / h)) + 3;
+      nodesBelow[i] = static_cast<int>(std::ceil(below[i] / h)) + 1;
+      g.Dims[i] = nodesBelow[i] + static_cast<int>(std::ceil(above[i] / h)) + 2;
     }
     if (g.GetNumberOfNodes() <= maxNodes)
     {
@@ -195,9 +213,7 @@ inline FarFieldGrid ComputeFarFieldGrid(
       std::cbrt(static_cast<double>(g.GetNumberOfNodes()) / static_cast<double>(maxNodes)) * 1.0001;
   }
   g.Spacing = h;
-  const glm::dvec3 center = 0.5 * (lo + hi);
-  const glm::dvec3 half = 0.5 * h * glm::dvec3(g.Dims[0] - 1, g.Dims[1] - 1, g.Dims[2] - 1);
-  g.Origin = center - half;
+  g.Origin = a - h * glm::dvec3(nodesBelow[0], nodesBelow[1], nodesBelow[2]);
   return g;
 }
 
@@ -225,10 +241,12 @@ inline FarFieldGrid ComputeFarFieldGrid(
  * below the cutoff everywhere (radius 0) go to the far field whole. Their
  * PreparedLight::Radius (the culling radius) becomes the near radius and
  * PreparedLight::FarField is set. Does nothing when disabled, when no light qualifies or
- * when every qualifying light's sphere holds the whole region within the budget.
+ * when every qualifying light's sphere holds the whole region within the budget. The grid
+ * has node planes through `anchor` (ComputeFarFieldGrid; the pass gives the geometry's
+ * lower corner, the overload without one the region's).
  */
-inline FarFieldPlan PlanFarField(
-  std::vector<PreparedLight>& lights, glm::dvec3 lo, glm::dvec3 hi, const FarFieldOptions& options)
+inline FarFieldPlan PlanFarField(std::vector<PreparedLight>& lights, glm::dvec3 lo, glm::dvec3 hi,
+  const FarFieldOptions& options, glm::dvec3 anchor)
 {
   FarFieldPlan plan;
   for (const PreparedLight& l : lights)
@@ -251,6 +269,7 @@ inline FarFieldPlan PlanFarField(
       lo = glm::min(lo, l.PositionWC);
       hi = glm::max(hi, l.PositionWC);
     }
+    anchor = lo;
   }
   const glm::dvec3 size = hi - lo;
   const double longest = std::max(size.x, std::max(size.y, size.z));
@@ -262,7 +281,7 @@ inline FarFieldPlan PlanFarField(
   const glm::dvec3 counted = glm::max(size, glm::dvec3(longest / 16.0));
   const std::int64_t target = std::max<std::int64_t>(options.TargetNodes, 64);
   const double h = std::cbrt(counted.x * counted.y * counted.z / static_cast<double>(target));
-  plan.Grid = ComputeFarFieldGrid(lo, hi, h, 8 * target);
+  plan.Grid = ComputeFarFieldGrid(lo, hi, h, 8 * target, anchor);
   const double smallest = std::max(options.CellsPerRadius, 1.0) * plan.Grid.Spacing;
   plan.Grouping = std::max(options.Grouping, 0.0);
   plan.Active = true;
@@ -362,6 +381,13 @@ inline FarFieldPlan PlanFarField(
     }
   }
   return plan;
+}
+
+/// PlanFarField with node planes through the region's lower corner.
+inline FarFieldPlan PlanFarField(
+  std::vector<PreparedLight>& lights, glm::dvec3 lo, glm::dvec3 hi, const FarFieldOptions& options)
+{
+  return PlanFarField(lights, lo, hi, options, lo);
 }
 
 /// Near radii of the lights for the far-field builders: the culling radius of far-field

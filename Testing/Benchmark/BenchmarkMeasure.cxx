@@ -51,7 +51,7 @@ void CompareWithReference(const std::vector<float>& img, const std::vector<float
   {
     return;
   }
-  double maxErr = 0.0, sum = 0.0;
+  double maxErr = 0.0, sum = 0.0, signedSum = 0.0;
   std::size_t over = 0;
   const std::size_t pixels = ref.size() / 3;
   for (std::size_t p = 0; p < pixels; ++p)
@@ -59,9 +59,11 @@ void CompareWithReference(const std::vector<float>& img, const std::vector<float
     double worst = 0.0;
     for (int c = 0; c < 3; ++c)
     {
-      const double d = std::abs(double(img[3 * p + c]) - double(ref[3 * p + c]));
+      const double signedDiff = double(img[3 * p + c]) - double(ref[3 * p + c]);
+      const double d = std::abs(signedDiff);
       worst = std::max(worst, d);
       sum += d * d;
+      signedSum += signedDiff;
     }
     maxErr = std::max(maxErr, worst);
     over += worst > 1.5 / 255.0 ? 1 : 0;
@@ -69,6 +71,7 @@ void CompareWithReference(const std::vector<float>& img, const std::vector<float
   row.MaxError = maxErr;
   row.RMSE = std::sqrt(sum / (3.0 * pixels));
   row.OverOneStep = double(over) / pixels;
+  row.SignedError = signedSum / (3.0 * pixels);
 }
 
 //------------------------------------------------------------------------------
@@ -378,14 +381,15 @@ Row Context::Measure(const Step& step)
     }
     this->Renderer->SetPass(this->Pass);
   }
-  std::printf(
-    "%-6s %-8s %6d %-9s %-9s %-14s %8.1f ms [%7.1f, %7.1f]  assign %6s  lights %6s  "
-    "eval/px %6s reach/px %6s  max err %5s  rmse %7s  prepass %6s  shaded/px %5s  far build "
-    "%6s bound %5s\n",
+  std::printf("%-6s %-8s %6d %-9s %-9s %-14s %8.1f ms [%7.1f, %7.1f]  assign %6s  lights %6s  "
+              "eval/px %6s reach/px %6s  max err %5s  rmse %7s  signed %7s  prepass %6s  shaded/px "
+              "%5s  far build "
+              "%6s bound %5s\n",
     row.Scene.c_str(), row.Layout.c_str(), row.Lights, row.Method.c_str(), row.Sweep.c_str(),
     row.Value.c_str(), row.MsMedian, row.MsMin, row.MsMax, Num(row.AssignMs).c_str(),
     Num(row.LightUpdateMs).c_str(), Num(row.Evaluated).c_str(), Num(row.Reached).c_str(),
-    Num(row.MaxError * 255.0).c_str(), Num(row.RMSE * 255.0).c_str(), Num(row.PrepassMs).c_str(),
+    Num(row.MaxError * 255.0).c_str(), Num(row.RMSE * 255.0).c_str(),
+    Num(row.SignedError * 255.0).c_str(), Num(row.PrepassMs).c_str(),
     Num(row.ShadedPerVisible).c_str(), Num(row.FarBuildMs).c_str(), Num(row.FarBoundSteps).c_str());
   std::fflush(stdout);
   return row;

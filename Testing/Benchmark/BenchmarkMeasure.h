@@ -10,7 +10,8 @@
  *    every frame) or still; each frame ends with glFinish before the clock is read; the
  *    pass's own timers (MeasureTimings) split assignment from shading;
  *  - back at the view, compares the image with the exact reference (brute force: every
- *    light, no cutoff) in 8-bit steps (max, RMSE, share of pixels off by more than one);
+ *    light, no cutoff) in 8-bit steps (max, RMSE, share of pixels off by more than one,
+ *    and the signed mean: a bias, which RMSE does not show);
  *  - counts, exactly per fragment with the pass's debug views, the lights the shader
  *    evaluates per pixel and the ones that really reach it (closer than the radius,
  *    inside the cone), averaged over the pixels that show geometry;
@@ -48,6 +49,7 @@ struct Row
   double FarBuildMs = NAN;    ///< the far field's last build (every frame when lights move)
   double FarBoundSteps = NAN; ///< the far field's stated bound (ComputeFarFieldErrorBound)
   double MaxError = NAN, RMSE = NAN, OverOneStep = NAN;
+  double SignedError = NAN; ///< mean of (image - reference): negative = darker than exact
   double ListMiB = NAN, MasterMiB = NAN, LightsMiB = NAN;
   double Cutoff = NAN, Budget = NAN;
   std::string Note;
@@ -104,7 +106,8 @@ private:
   std::vector<vtkSmartPointer<vtkLight>> RendererLights; ///< the "always-on" layout's lights
 };
 
-/// Max error, RMSE and share of pixels off by more than one 8-bit step, into row.
+/// Max error, RMSE, share of pixels off by more than one 8-bit step and signed mean error
+/// (negative: darker than the reference), into row.
 void CompareWithReference(const std::vector<float>& img, const std::vector<float>& ref, Row& row);
 
 /// Median of a list (0 for an empty one).

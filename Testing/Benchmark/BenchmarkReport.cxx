@@ -85,6 +85,7 @@ const std::vector<Column>& Columns()
     CL_NUMBER_COLUMN("max_error", MaxError),
     CL_NUMBER_COLUMN("rmse", RMSE),
     CL_NUMBER_COLUMN("over_one_step", OverOneStep),
+    CL_NUMBER_COLUMN("signed_error", SignedError),
     CL_NUMBER_COLUMN("list_mib", ListMiB),
     CL_NUMBER_COLUMN("master_mib", MasterMiB),
     CL_NUMBER_COLUMN("lights_mib", LightsMiB),
@@ -323,12 +324,12 @@ static void WriteFloors(const std::vector<Row>& rows, std::ostream& out)
 void WriteMarkdown(const std::vector<Row>& rows, const std::string& path)
 {
   std::ofstream out(path);
-  out
-    << "| scene | layout | lights | method | knob | value | ms (median) | [min, max] | "
-       "assign ms | evaluated/px | reaching/px | max err (steps) | RMSE (steps) | "
-       "px > 1 step | list MiB | prepass ms | shaded/visible px | far build ms | far bound (steps) "
-       "|\n";
-  out << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  out << "| scene | layout | lights | method | knob | value | ms (median) | [min, max] | "
+         "assign ms | evaluated/px | reaching/px | max err (steps) | RMSE (steps) | "
+         "px > 1 step | signed (steps) | list MiB | prepass ms | shaded/visible px | far build ms "
+         "| far bound (steps) "
+         "|\n";
+  out << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const Row& r : rows)
   {
     out << "| " << r.Scene << " | " << r.Layout << " | " << r.Lights << " | " << r.Method << " | "
@@ -337,9 +338,9 @@ void WriteMarkdown(const std::vector<Row>& rows, const std::string& path)
         << " | " << Num(r.Reached, 3) << " | " << Num(r.MaxError * 255.0, 3) << " | "
         << Num(r.RMSE * 255.0, 3) << " | "
         << (std::isnan(r.OverOneStep) ? std::string() : Num(100.0 * r.OverOneStep, 3) + "%")
-        << " | " << Num(r.ListMiB, 3) << " | " << Num(r.PrepassMs, 3) << " | "
-        << Num(r.ShadedPerVisible, 3) << " | " << Num(r.FarBuildMs, 3) << " | "
-        << Num(r.FarBoundSteps, 3) << " |\n";
+        << " | " << Num(r.SignedError * 255.0, 3) << " | " << Num(r.ListMiB, 3) << " | "
+        << Num(r.PrepassMs, 3) << " | " << Num(r.ShadedPerVisible, 3) << " | "
+        << Num(r.FarBuildMs, 3) << " | " << Num(r.FarBoundSteps, 3) << " |\n";
   }
   WriteFloors(rows, out);
 }

@@ -574,6 +574,11 @@ int main(int argc, char* argv[])
     lo = glm::min(lo, s.P);
     hi = glm::max(hi, s.P);
   }
+  // The region as the pass adopts it: the samples' box grown by FarFieldRegionMargin, the
+  // grid's node planes through the box's lower corner (vtkClusteredLightingAssigner).
+  const glm::dvec3 anchor = lo, grow = FarFieldRegionMargin * (hi - lo);
+  lo -= grow;
+  hi += grow;
 
   // Today: every light cut at its cutoff radius.
   for (double cutoff : cutoffs)
@@ -613,7 +618,7 @@ int main(int argc, char* argv[])
       {
         std::vector<PreparedLight> lights = base.Lights;
         const FarFieldPlan plan = PlanFarField(lights, lo, hi,
-          FarFieldOptions{ true, cells, static_cast<std::int64_t>(target), grouping });
+          FarFieldOptions{ true, cells, static_cast<std::int64_t>(target), grouping }, anchor);
         const std::vector<double> radii = GetFarFieldNearRadii(lights);
         const FarFieldGrid& grid = plan.Grid;
         const auto t0 = std::chrono::steady_clock::now();
@@ -748,7 +753,8 @@ int main(int argc, char* argv[])
   {
     std::vector<PreparedLight> lights = base.Lights;
     PlanFarField(lights, lo, hi,
-      FarFieldOptions{ true, cellsPerRadius[0], static_cast<std::int64_t>(nodeTargets[0]), 0.0 });
+      FarFieldOptions{ true, cellsPerRadius[0], static_cast<std::int64_t>(nodeTargets[0]), 0.0 },
+      anchor);
     const std::vector<double> radii = GetFarFieldNearRadii(lights);
     const FarFieldLightTree tree = BuildFarFieldLightTree(lights, radii);
     Errors e;

@@ -231,6 +231,41 @@ TEST(FarFieldPlan, ErrorBudgetChoosesTheCutoffFromTheCulledLightsOnly)
   }
 }
 
+TEST(FarFieldPlan, GridHasNodePlanesThroughTheAnchorAndCoversTheBox)
+{
+  // At every scale and offset: a node plane through the anchor on every axis (clamped
+  // into the box), at least one node beyond the box on every side, within maxNodes.
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> U(0.0, 1.0);
+  for (double scale : { 1e-3, 1.0, 1e6 })
+  {
+    for (double offset : { 0.0, 1e5 })
+    {
+      for (int trial = 0; trial < 20; ++trial)
+      {
+        const glm::dvec3 lo =
+          scale * (offset + glm::dvec3(U(rng), U(rng), U(rng)) - glm::dvec3(0.5));
+        const glm::dvec3 hi = lo + scale * glm::dvec3(0.1 + U(rng), 0.1 + U(rng), 0.1 + U(rng));
+        // Inside the box, on a face, or outside it (then clamped).
+        const glm::dvec3 t(U(rng) * 1.4 - 0.2, trial % 3 == 0 ? 0.0 : U(rng), U(rng));
+        const glm::dvec3 anchor = lo + t * (hi - lo);
+        const glm::dvec3 clamped = glm::clamp(anchor, lo, hi);
+        const std::int64_t maxNodes = 4096;
+        const FarFieldGrid g = ComputeFarFieldGrid(lo, hi, 0.05 * scale, maxNodes, anchor);
+        EXPECT_LE(g.GetNumberOfNodes(), maxNodes);
+        const double h = g.Spacing;
+        for (int a = 0; a < 3; ++a)
+        {
+          const double k = (clamped[a] - g.Origin[a]) / h;
+          EXPECT_NEAR(k, std::round(k), 1e-6) << "scale " << scale << " axis " << a;
+          EXPECT_LE(g.Origin[a], lo[a] - h * (1.0 - 1e-9));
+          EXPECT_GE(g.Origin[a] + h * (g.Dims[a] - 1), hi[a] + h * (1.0 - 1e-9));
+        }
+      }
+    }
+  }
+}
+
 TEST(FarFieldPlan, AHandfulOfLightsNeedsNoFarField)
 {
   // Five bright vtkLights reaching everywhere: exact shading costs 5 per point, within
@@ -581,6 +616,65 @@ TEST(FarFieldBuild, GroupingKeepsTheFarLightOfTheExactSums)
   std::printf("far light over the nodes: grouped %.6g, exact %.6g (%+.3f%%)\n", total, totalExact,
     100.0 * (total / totalExact - 1.0));
   EXPECT_NEAR(total, totalExact, 2e-3 * totalExact);
+}
+
+TEST(FarFieldBuild, AFloorOnANodePlaneIsNotShadedDarker)
+{
+  // Lights over a floor: every light on one side of it, and V.N at its highest there.
+  // Interpolated between a node plane below the floor and one above, the far diffuse is
+  // darker than the same kernel on the point's own moments, at every floor point in the
+  // same direction; on a node plane (the grid anchored at the geometry's lower corner, as
+  // the pass does) much less. Exact node sums (no grouping) against the exact moments at
+  // each point: only the grid's interpolation is measured, not the kernel's truncation.
+  std::mt19937 rng(4);
+  std::uniform_real_distribution<double> U(0.0, 1.0);
+  std::vector<PreparedLight> lights = MakeLights(4096, glm::dvec3(0, 0, 1),
+    [&](int) { return glm::dvec3(4 * U(rng), 4 * U(rng), 0.25 + 1.75 * U(rng)); });
+  const glm::dvec3 geometryLo(0.0), geometryHi(4.0, 4.0, 2.0);
+  const glm::dvec3 grow = FarFieldRegionMargin * (geometryHi - geometryLo);
+  FarFieldOptions options;
+  options.Grouping = 0.0;
+  options.TargetNodes = 4096;
+  auto floorBias = [&](const glm::dvec3& anchor, double& spacing)
+  {
+    std::vector<PreparedLight> copy = lights;
+    const FarFieldPlan plan =
+      PlanFarField(copy, geometryLo - grow, geometryHi + grow, options, anchor);
+    EXPECT_TRUE(plan.Active);
+    spacing = plan.Grid.Spacing;
+    const std::vector<double> radii = GetFarFieldNearRadii(copy);
+    const std::vector<double> moments = ComputeFarFieldMomentsExact(plan.Grid, copy, radii);
+    double signedSum = 0.0, pointSum = 0.0;
+    std::mt19937 points(9);
+    for (int i = 0; i < 400; ++i)
+    {
+      const glm::dvec3 p(0.5 + 3 * U(points), 0.5 + 3 * U(points), 0.0);
+      const glm::dvec3 n(0, 0, 1);
+      std::array<double, FarFieldFloatsPerNode> atPoint{};
+      for (std::size_t l = 0; l < copy.size(); ++l)
+      {
+        double far;
+        glm::dvec3 toLight;
+        if (ComputeFarContribution(copy[l], radii[l], p, far, toLight))
+        {
+          AccumulateFarMoments(copy[l].Color, far, toLight, atPoint.data());
+        }
+      }
+      const glm::dvec3 point = EvaluateFarDiffuse(atPoint, n);
+      const glm::dvec3 grid = EvaluateFarDiffuse(InterpolateFarMoments(plan.Grid, moments, p), n);
+      signedSum += grid.x + grid.y + grid.z - (point.x + point.y + point.z);
+      pointSum += point.x + point.y + point.z;
+    }
+    return signedSum / pointSum;
+  };
+  double h = 0.0, unused = 0.0;
+  const double onPlane = floorBias(geometryLo, h);
+  const double midCell = floorBias(geometryLo + glm::dvec3(0, 0, 0.5 * h), unused);
+  std::printf("the grid's mean signed error on the floor, of its far diffuse: on a node plane "
+              "%+.4f%%, halfway between two %+.4f%%\n",
+    100.0 * onPlane, 100.0 * midCell);
+  EXPECT_LT(midCell, 0.0);
+  EXPECT_LT(std::abs(onPlane), 0.25 * std::abs(midCell));
 }
 
 TEST(FarFieldBuild, EveryCopyThisCPURunsMatchesThePortableBuild)

@@ -382,9 +382,8 @@ Row Context::Measure(const Step& step)
     this->Renderer->SetPass(this->Pass);
   }
   std::printf("%-6s %-8s %6d %-9s %-9s %-14s %8.1f ms [%7.1f, %7.1f]  assign %6s  lights %6s  "
-              "eval/px %6s reach/px %6s  max err %5s  rmse %7s  signed %7s  prepass %6s  shaded/px "
-              "%5s  far build "
-              "%6s bound %5s\n",
+              "eval/px %6s reach/px %6s  max err %5s  rmse %7s  signed %7s  prepass %6s  "
+              "shaded/px %5s  far build %6s bound %5s\n",
     row.Scene.c_str(), row.Layout.c_str(), row.Lights, row.Method.c_str(), row.Sweep.c_str(),
     row.Value.c_str(), row.MsMedian, row.MsMin, row.MsMax, Num(row.AssignMs).c_str(),
     Num(row.LightUpdateMs).c_str(), Num(row.Evaluated).c_str(), Num(row.Reached).c_str(),

@@ -326,9 +326,8 @@ void WriteMarkdown(const std::vector<Row>& rows, const std::string& path)
   std::ofstream out(path);
   out << "| scene | layout | lights | method | knob | value | ms (median) | [min, max] | "
          "assign ms | evaluated/px | reaching/px | max err (steps) | RMSE (steps) | "
-         "px > 1 step | signed (steps) | list MiB | prepass ms | shaded/visible px | far build ms "
-         "| far bound (steps) "
-         "|\n";
+         "px > 1 step | signed (steps) | list MiB | prepass ms | shaded/visible px | "
+         "far build ms | far bound (steps) |\n";
   out << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const Row& r : rows)
   {

@@ -233,8 +233,9 @@ TEST(FarFieldPlan, ErrorBudgetChoosesTheCutoffFromTheCulledLightsOnly)
 
 TEST(FarFieldPlan, GridHasNodePlanesThroughTheAnchorAndCoversTheBox)
 {
-  // At every scale and offset: a node plane through the anchor on every axis (clamped
-  // into the box), at least one node beyond the box on every side, within maxNodes.
+  // At every scale, near the origin and 1e5 box sizes from it: a node plane through the
+  // anchor on every axis (clamped into the box), at least one node beyond the box on every
+  // side, within maxNodes.
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> U(0.0, 1.0);
   for (double scale : { 1e-3, 1.0, 1e6 })
@@ -622,10 +623,10 @@ TEST(FarFieldBuild, AFloorOnANodePlaneIsNotShadedDarker)
 {
   // Lights over a floor: every light on one side of it, and V.N at its highest there.
   // Interpolated between a node plane below the floor and one above, the far diffuse is
-  // darker than the same kernel on the point's own moments, at every floor point in the
-  // same direction; on a node plane (the grid anchored at the geometry's lower corner, as
-  // the pass does) much less. Exact node sums (no grouping) against the exact moments at
-  // each point: only the grid's interpolation is measured, not the kernel's truncation.
+  // on average darker than the same kernel on the point's own moments; on a node plane
+  // (the grid anchored at the geometry's lower corner, as the pass does) much less. Exact node sums
+  // (no grouping) against the exact moments at each point: only the grid's interpolation is
+  // measured, not the kernel's truncation.
   std::mt19937 rng(4);
   std::uniform_real_distribution<double> U(0.0, 1.0);
   std::vector<PreparedLight> lights = MakeLights(4096, glm::dvec3(0, 0, 1),

@@ -444,10 +444,28 @@ inline bool ComputeFarContribution(
 }
 
 /**
- * Exact node moments: every light's far part summed at every node (O(nodes x lights)).
- * nearRadii[i] is light i's near radius (inf: no far part). Returns FarFieldFloatsPerNode
- * doubles per node (the 27 moments, channel-major), node index order
- * (FarFieldGrid::NodeIndex). The reference for the tree build (vtkClusteredLightingFarFieldTree.h).
+ * The exact far moments at point p: every light's far part (nearRadii[i] is light i's near
+ * radius, inf: no far part) added into m (FarFieldFloatsPerNode doubles, channel-major).
+ */
+inline void AddFarMomentsAt(const glm::dvec3& p, const std::vector<PreparedLight>& lights,
+  const std::vector<double>& nearRadii, double* m)
+{
+  for (std::size_t l = 0; l < lights.size(); ++l)
+  {
+    double far;
+    glm::dvec3 toLight;
+    if (ComputeFarContribution(lights[l], nearRadii[l], p, far, toLight))
+    {
+      AccumulateFarMoments(lights[l].Color, far, toLight, m);
+    }
+  }
+}
+
+/**
+ * Exact node moments: every light's far part summed at every node (O(nodes x lights),
+ * AddFarMomentsAt at each node). Returns FarFieldFloatsPerNode doubles per node (the 27
+ * moments, channel-major), node index order (FarFieldGrid::NodeIndex). The reference for
+ * the tree build (vtkClusteredLightingFarFieldTree.h).
  */
 inline std::vector<double> ComputeFarFieldMomentsExact(const FarFieldGrid& grid,
   const std::vector<PreparedLight>& lights, const std::vector<double>& nearRadii)
@@ -460,17 +478,8 @@ inline std::vector<double> ComputeFarFieldMomentsExact(const FarFieldGrid& grid,
     {
       for (int i = 0; i < grid.Dims[0]; ++i)
       {
-        const glm::dvec3 p = grid.NodePosition(i, j, k);
-        double* o = &m[static_cast<std::size_t>(grid.NodeIndex(i, j, k)) * FarFieldFloatsPerNode];
-        for (std::size_t l = 0; l < lights.size(); ++l)
-        {
-          double far;
-          glm::dvec3 toLight;
-          if (ComputeFarContribution(lights[l], nearRadii[l], p, far, toLight))
-          {
-            AccumulateFarMoments(lights[l].Color, far, toLight, o);
-          }
-        }
+        AddFarMomentsAt(grid.NodePosition(i, j, k), lights, nearRadii,
+          &m[static_cast<std::size_t>(grid.NodeIndex(i, j, k)) * FarFieldFloatsPerNode]);
       }
     }
   }

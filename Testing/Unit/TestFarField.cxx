@@ -652,15 +652,7 @@ TEST(FarFieldBuild, AFloorOnANodePlaneIsNotShadedDarker)
       const glm::dvec3 p(0.5 + 3 * U(points), 0.5 + 3 * U(points), 0.0);
       const glm::dvec3 n(0, 0, 1);
       std::array<double, FarFieldFloatsPerNode> atPoint{};
-      for (std::size_t l = 0; l < copy.size(); ++l)
-      {
-        double far;
-        glm::dvec3 toLight;
-        if (ComputeFarContribution(copy[l], radii[l], p, far, toLight))
-        {
-          AccumulateFarMoments(copy[l].Color, far, toLight, atPoint.data());
-        }
-      }
+      AddFarMomentsAt(p, copy, radii, atPoint.data());
       const glm::dvec3 point = EvaluateFarDiffuse(atPoint, n);
       const glm::dvec3 grid = EvaluateFarDiffuse(InterpolateFarMoments(plan.Grid, moments, p), n);
       signedSum += grid.x + grid.y + grid.z - (point.x + point.y + point.z);

@@ -108,7 +108,8 @@ bool vtkClusteredLightingAssigner::PreparationKey::operator!=(const PreparationK
     this->FarField.CellsPerRadius != o.FarField.CellsPerRadius ||
     this->FarField.TargetNodes != o.FarField.TargetNodes ||
     this->FarField.Grouping != o.FarField.Grouping ||
-    this->FarField.NearBudget != o.FarField.NearBudget || this->RegionLo != o.RegionLo ||
+    this->FarField.NearBudget != o.FarField.NearBudget ||
+    this->FarField.SharedColor != o.FarField.SharedColor || this->RegionLo != o.RegionLo ||
     this->RegionHi != o.RegionHi;
 }
 
@@ -308,7 +309,7 @@ const vtkClusteredLightingAssignment& vtkClusteredLightingAssigner::Update(
       r.FarFieldBuildTime = this->FarField.GetBuildTime();
       if (!r.FarField)
       {
-        r.NewError = "Could not upload the far field (7 RGBA32F 3D textures).";
+        r.NewError = "Could not upload the far field (its RGBA32F 3D textures).";
       }
     }
     else
@@ -325,6 +326,12 @@ const vtkClusteredLightingAssignment& vtkClusteredLightingAssigner::Update(
     r.FarFieldDims[a] = this->FarFieldPlan.Active ? this->FarFieldPlan.Grid.Dims[a] : 0;
   }
   r.FarFieldBytes = this->FarField.GetBytes();
+  const glm::dvec3 shared = r.FarField ? this->FarField.GetSharedColor() : glm::dvec3(0.0);
+  r.FarFieldOneChannel = shared != glm::dvec3(0.0);
+  for (int c = 0; c < 3; ++c)
+  {
+    r.FarFieldColor[c] = static_cast<float>(shared[c]);
+  }
   if (r.Reasons & (CL_DIRTY_LIGHTS | CL_DIRTY_PREPARATION))
   {
     if (inputs.MeasureTimings)

@@ -157,6 +157,10 @@ struct vtkClusteredLightingAssignment
   double NearRadiusCap = 0.0;     ///< near radius of bright and always-on lights
   int FarFieldDims[3] = { 0, 0, 0 };
   std::uint64_t FarFieldBytes = 0;
+  /// The far-field lights share a colour: one channel in 3 textures, times FarFieldColor
+  /// (FindFarFieldSharedColor); else three channels in 7.
+  bool FarFieldOneChannel = false;
+  float FarFieldColor[3] = { 0.0f, 0.0f, 0.0f };
   float FarFieldFromVC[16] = { 0 }; ///< VC -> far-field texture coordinates (column-major)
   float WorldFromVC[9] = { 0 };     ///< VC -> world directions (column-major)
   std::array<int, vtkClusteredLighting::FarFieldTextures> FarFieldUnits{}; ///< while bound

@@ -30,9 +30,20 @@ bool vtkClusteredLightingFarFieldTextures::Build(
   // (rebuilt every frame for moving lights).
   const std::size_t nodes = static_cast<std::size_t>(grid.GetNumberOfNodes());
   this->Moments.resize(nodes * FarFieldFloatsPerNode);
-  for (std::vector<float>& t : this->Texels)
+  // Lights that share a colour need one channel: 3 textures (FindFarFieldSharedColor).
+  const bool oneChannel = plan.SharedColor != glm::dvec3(0.0);
+  const int textures = oneChannel ? FarFieldSharedColorTextures : FarFieldTextures;
+  for (int q = 0; q < FarFieldTextures; ++q)
   {
-    t.resize(4 * nodes);
+    std::vector<float>& t = this->Texels[static_cast<std::size_t>(q)];
+    if (q < textures)
+    {
+      t.resize(4 * nodes);
+    }
+    else
+    {
+      std::vector<float>().swap(t);
+    }
   }
   vtkSMPTools::For(0, static_cast<vtkIdType>(GetNumberOfFarFieldBlocks(grid)), 1,
     [&](vtkIdType b0, vtkIdType b1)
@@ -43,8 +54,16 @@ bool vtkClusteredLightingFarFieldTextures::Build(
   vtkSMPTools::For(0, static_cast<vtkIdType>(nodes), 4096,
     [&](vtkIdType n0, vtkIdType n1)
     {
-      PackFarFieldTexels(
-        this->Moments, static_cast<std::size_t>(n0), static_cast<std::size_t>(n1), this->Texels);
+      if (oneChannel)
+      {
+        PackFarFieldTexelsOneChannel(this->Moments, GetSharedColorChannel(plan.SharedColor),
+          static_cast<std::size_t>(n0), static_cast<std::size_t>(n1), this->Texels);
+      }
+      else
+      {
+        PackFarFieldTexels(
+          this->Moments, static_cast<std::size_t>(n0), static_cast<std::size_t>(n1), this->Texels);
+      }
     });
 
   bool ok = true;
@@ -52,11 +71,15 @@ bool vtkClusteredLightingFarFieldTextures::Build(
   for (int q = 0; q < FarFieldTextures && ok; ++q)
   {
     vtkTextureObject*& tex = this->Textures[static_cast<std::size_t>(q)];
-    if (tex && resize)
+    if (tex && (resize || q >= textures))
     {
       tex->ReleaseGraphicsResources(rw);
       tex->Delete();
       tex = nullptr;
+    }
+    if (q >= textures)
+    {
+      continue;
     }
     if (!tex)
     {
@@ -77,6 +100,7 @@ bool vtkClusteredLightingFarFieldTextures::Build(
       VTK_FLOAT, this->Texels[static_cast<std::size_t>(q)].data());
   }
   this->Dims = ok ? grid.Dims : std::array<int, 3>{ { 0, 0, 0 } };
+  this->SharedColor = ok ? plan.SharedColor : glm::dvec3(0.0);
   this->BuildTime =
     std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   return ok;
@@ -118,8 +142,8 @@ std::array<int, FarFieldTextures> vtkClusteredLightingFarFieldTextures::GetUnits
 //------------------------------------------------------------------------------
 std::uint64_t vtkClusteredLightingFarFieldTextures::GetBytes() const
 {
-  return 16ull * FarFieldTextures * static_cast<std::uint64_t>(this->Dims[0]) * this->Dims[1] *
-    this->Dims[2];
+  return 16ull * static_cast<std::uint64_t>(this->GetNumberOfGLObjects()) *
+    static_cast<std::uint64_t>(this->Dims[0]) * this->Dims[1] * this->Dims[2];
 }
 
 int vtkClusteredLightingFarFieldTextures::GetNumberOfGLObjects() const
@@ -159,6 +183,7 @@ void vtkClusteredLightingFarFieldTextures::Release(vtkWindow* w)
     }
   }
   this->Dims = { { 0, 0, 0 } };
+  this->SharedColor = glm::dvec3(0.0);
   for (std::vector<float>& t : this->Texels)
   {
     std::vector<float>().swap(t);

@@ -16,7 +16,12 @@
  *
  * GL objects: 7 3D textures, RGBA32F, of the grid's dimensions (27 moments per node, 112
  * bytes with the padding), linear filtering (the shading code's trilinear interpolation),
- * clamped to edge.
+ * clamped to edge. When the far-field lights share a colour (FarFieldPlan::SharedColor,
+ * FindFarFieldSharedColor) the far field is one channel times that colour: 3 textures (9
+ * moments per node, 48 bytes), textures 3 to 6 released (their units -1).
+ *
+ * (The node sums still run for the three channels: a one-channel builder would cut the
+ * build to a third, not done yet.)
  *
  * @sa vtkClusteredLightingAssigner
  */
@@ -48,6 +53,8 @@ public:
     const std::vector<vtkClusteredLighting::PreparedLight>& lights);
 
   double GetBuildTime() const { return this->BuildTime; }
+  /// The shared colour of the last build ((0, 0, 0): three channels, 7 textures).
+  const glm::dvec3& GetSharedColor() const { return this->SharedColor; }
   /// The light tree and near radii of the last build (for its error bound).
   const vtkClusteredLighting::FarFieldLightTree& GetTree() const { return this->Tree; }
   const std::vector<double>& GetNearRadii() const { return this->NearRadii; }
@@ -74,6 +81,7 @@ private:
   std::array<std::vector<float>, vtkClusteredLighting::FarFieldTextures> Texels; ///< packed, reused
   std::vector<double> NearRadii;
   vtkClusteredLighting::FarFieldLightTree Tree;
+  glm::dvec3 SharedColor = glm::dvec3(0.0);
   double BuildTime = 0.0;
 };
 

@@ -561,6 +561,7 @@ vtkClusteredLightingAssignerInputs vtkClusteredLightingPass::MakeAssignerInputs(
   in.FarField.CellsPerRadius = this->FarFieldCellsPerRadius;
   in.FarField.Grouping = this->FarFieldGrouping;
   in.FarField.NearBudget = this->NearFieldBudget;
+  in.FarField.SharedColor = this->FarFieldSharedColor;
   double bounds[6];
   ren->ComputeVisiblePropBounds(bounds);
   in.RegionLo = glm::dvec3(bounds[0], bounds[2], bounds[4]);
@@ -636,6 +637,7 @@ void vtkClusteredLightingPass::ReportAssignment(const vtkClusteredLightingAssign
     this->FarFieldDimensions[a] = r.FarField ? r.FarFieldDims[a] : 0;
   }
   this->FarFieldTextureBytes = r.FarFieldBytes;
+  this->FarFieldSharedColorUsed = r.FarField && r.FarFieldOneChannel;
   this->DepthAwareClustersUsed = r.Enabled && r.DepthAware;
   for (int k = 0; k < 2; ++k)
   {
@@ -665,6 +667,7 @@ void vtkClusteredLightingPass::UpdateShaderVariant(const vtkClusteredLightingAss
   variant.Window = this->Falloff == FALLOFF_WINDOWED;
   variant.Explicit = r.NumberOfExplicitRadius > 0;
   variant.FarField = r.FarField;
+  variant.FarFieldOneChannel = r.FarField && r.FarFieldOneChannel;
   variant.LinearSlices = r.Linear;
   variant.MasterTexels = r.MasterTexels;
   variant.DebugView = ToVariantDebug(this->DebugView);
@@ -958,6 +961,10 @@ bool vtkClusteredLightingPass::SetShaderParameters(
         program->SetUniformi(farFieldSamplers[q], r.FarFieldUnits[static_cast<std::size_t>(q)]);
       }
     }
+    if (program->IsUniformUsed("clFarFieldColor"))
+    {
+      program->SetUniform3f("clFarFieldColor", r.FarFieldColor);
+    }
     if (program->IsUniformUsed("clFarFieldFromVC"))
     {
       program->SetUniformMatrix4x4("clFarFieldFromVC", const_cast<float*>(r.FarFieldFromVC));
@@ -1041,6 +1048,7 @@ void vtkClusteredLightingPass::PrintSelf(ostream& os, vtkIndent indent)
   os << next << "FarFieldCellsPerRadius: " << this->FarFieldCellsPerRadius << "\n";
   os << next << "FarFieldTolerance: " << this->FarFieldTolerance << "\n";
   os << next << "FarFieldGrouping: " << this->FarFieldGrouping << "\n";
+  os << next << "FarFieldSharedColor: " << (this->FarFieldSharedColor ? "On" : "Off") << "\n";
   os << next << "NearFieldBudget: " << this->NearFieldBudget << "\n";
   os << next << "MortonOrder: " << (this->MortonOrder ? "On" : "Off") << "\n";
   os << next << "PerClusterCulling: " << (this->PerClusterCulling ? "On" : "Off") << "\n";
@@ -1061,6 +1069,8 @@ void vtkClusteredLightingPass::PrintSelf(ostream& os, vtkIndent indent)
   os << next << "NumberOfSpotLights: " << this->NumberOfSpotLights << "\n";
   os << next << "NumberOfAssignedLights: " << this->NumberOfAssignedLights << "\n";
   os << next << "NumberOfFarFieldLights: " << this->NumberOfFarFieldLights << "\n";
+  os << next << "FarFieldSharedColorUsed: " << (this->FarFieldSharedColorUsed ? "yes" : "no")
+     << "\n";
   os << next << "ClusterGridInUse: " << this->ClusterGridInUse[0] << " x "
      << this->ClusterGridInUse[1] << " x " << this->ClusterGridInUse[2] << "\n";
   os << next << "ClusteringBypassed: " << (this->ClusteringBypassed ? "yes" : "no") << "\n";

@@ -327,6 +327,22 @@ public:
 
   //@{
   /**
+   * Advanced: when every light the far field holds has the same colour up to its
+   * intensity (white vtkLights, VTK's default, for one), store and read the far field as
+   * one channel times that colour: 3 texture reads per shaded fragment instead of 7 and 48
+   * bytes per grid node instead of 112. Exact: each channel's moments are then the same
+   * multiple of one channel's (FindFarFieldSharedColor in
+   * Rendering/Core/vtkClusteredLightingFarField.h), so the image is the same up to float
+   * rounding. Off always keeps three channels (for comparisons). See
+   * GetFarFieldSharedColorUsed(). Default is on.
+   */
+  vtkSetMacro(FarFieldSharedColor, bool);
+  vtkGetMacro(FarFieldSharedColor, bool);
+  vtkBooleanMacro(FarFieldSharedColor, bool);
+  //@}
+
+  //@{
+  /**
    * Advanced: how many lights per point, on average over the box of the visible geometry,
    * the near field may evaluate exactly (a light counts at most once per point). When all
    * lights fit whole, each keeps its cutoff radius and the far field holds only the tails
@@ -551,6 +567,9 @@ public:
   vtkGetVector3Macro(FarFieldDimensions, int);
   /// GPU memory of the far field in bytes.
   vtkGetMacro(FarFieldTextureBytes, vtkTypeUInt64);
+  /// Whether the last render's far field was one channel (FarFieldSharedColor: its lights
+  /// share a colour); false without a far field.
+  vtkGetMacro(FarFieldSharedColorUsed, bool);
   /// Whether the last render reassigned lights to clusters.
   vtkGetMacro(LastAssignmentUpdated, bool);
 
@@ -645,6 +664,7 @@ protected:
   double FarFieldCellsPerRadius = 2.0;
   double FarFieldTolerance = 2.0 / 255.0;
   double FarFieldGrouping = 1.0;
+  bool FarFieldSharedColor = true;
   double NearFieldBudget = 16.0;
 
   int NumberOfClusteredLights = 0;
@@ -668,6 +688,7 @@ protected:
   double NearRadiusCap = 0.0;
   int FarFieldDimensions[3] = { 0, 0, 0 };
   vtkTypeUInt64 FarFieldTextureBytes = 0;
+  bool FarFieldSharedColorUsed = false;
   double LastShadingTime = 0.0;
   bool DepthPrepassUsed = false;
   double LastDepthPrepassTime = 0.0;

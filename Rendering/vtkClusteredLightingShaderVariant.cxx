@@ -15,8 +15,8 @@ bool vtkClusteredLightingShaderVariant::SameGlobalPart(
 {
   return this->Enabled == o.Enabled && this->Clustered == o.Clustered && this->Spot == o.Spot &&
     this->Window == o.Window && this->Explicit == o.Explicit && this->FarField == o.FarField &&
-    this->LinearSlices == o.LinearSlices && this->MasterTexels == o.MasterTexels &&
-    this->DebugView == o.DebugView;
+    this->FarFieldOneChannel == o.FarFieldOneChannel && this->LinearSlices == o.LinearSlices &&
+    this->MasterTexels == o.MasterTexels && this->DebugView == o.DebugView;
 }
 
 //------------------------------------------------------------------------------
@@ -34,6 +34,10 @@ std::set<std::string> vtkClusteredLightingShaderVariant::GetFlags() const
     if (this->FarField)
     {
       f.insert("FAR_FIELD");
+      if (this->FarFieldOneChannel)
+      {
+        f.insert("FAR_SHARED_COLOR");
+      }
     }
   }
   // The light model: brute force stops at explicit radii and windows only there.

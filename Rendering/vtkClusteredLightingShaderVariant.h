@@ -14,10 +14,11 @@
  * MODEL_RADIUS (the explicit radius of the light model is read: brute force stops there,
  * windows end there), VIEW1 (the second view texel is read: spot axis, explicit radius),
  * FAR_FIELD (clustered only: split lights' near parts are windowed and the far field is
- * added), PHONG or PBR, SPECULAR, SPOT, WINDOW, LINEAR_SLICES, SATURATION (clustered Phong
- * whose colour nothing rescales after the lighting: a fragment stops at saturation where
- * the uniform clClampsAtOne says the target clamps), COUNT, CLUSTER_INDEX, HEAT_MAP,
- * EVALUATED_COUNT, REACHED_COUNT, NON_FINITE, NORMAL.
+ * added), FAR_SHARED_COLOR (with FAR_FIELD: the far-field lights share a colour, so the
+ * far field is one channel in 3 textures times clFarFieldColor), PHONG or PBR, SPECULAR, SPOT,
+ * WINDOW, LINEAR_SLICES, SATURATION (clustered Phong whose colour nothing rescales after the
+ * lighting: a fragment stops at saturation where the uniform clClampsAtOne says the target clamps),
+ * COUNT, CLUSTER_INDEX, HEAT_MAP, EVALUATED_COUNT, REACHED_COUNT, NON_FINITE, NORMAL.
  *
  * Brute force evaluates the same light model as clustered shading (explicit radius,
  * windowed falloff, spot cone) and differs only in not culling: lights without an explicit
@@ -39,6 +40,7 @@ public:
   bool Window = false;   ///< windowed falloff (FALLOFF_WINDOWED)
   bool Explicit = false; ///< some light has an explicit radius (its model's range)
   bool FarField = false; ///< lights have far parts: window their near parts, add the far field
+  bool FarFieldOneChannel = false; ///< the far-field lights share a colour: 3 textures, not 7
   bool LinearSlices = false;
   int MasterTexels = 1;
 

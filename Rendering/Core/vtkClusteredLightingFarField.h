@@ -156,6 +156,7 @@ struct FarFieldOptions
   std::int64_t TargetNodes = 32768; ///< nodes over the region (the grid's resolution)
   double Grouping = 1.0;    ///< light-tree aggregation: extent / distance below it (0: exact)
   double NearBudget = 16.0; ///< lights per point the near field may evaluate, on average
+  bool SharedColor = true;  ///< one channel when the far lights share a colour (see below)
 };
 
 /// What PlanFarField decided.
@@ -167,7 +168,53 @@ struct FarFieldPlan
   std::size_t NumberOfFarFieldLights = 0;
   double Grouping = 1.0;           ///< FarFieldOptions::Grouping
   double NearLightsPerPoint = 0.0; ///< estimated mean near lights per point of the region
+  /// The colour every far-field light shares (FindFarFieldSharedColor), largest component
+  /// 1; (0, 0, 0) when they differ or FarFieldOptions::SharedColor is off.
+  glm::dvec3 SharedColor = glm::dvec3(0.0);
 };
+
+/**
+ * The colour the far-field lights (PreparedLight::FarField) share, if they do. Each
+ * light's far moments are its Color (colour x intensity) times terms of its position and
+ * attenuation alone, and a group of the light tree sums its lights' colours. So when every
+ * far-field light's Color is a multiple of one colour c, every channel's moments at every
+ * node are c's component times the moments of the channel where c is largest: the far
+ * field is exactly one channel and a colour (3 texture reads per shaded fragment instead
+ * of 7; the shading code multiplies by the colour). White vtkLights, VTK's default, are the
+ * common case. Returns c scaled so its largest component is 1, or (0, 0, 0) when the
+ * lights' hues differ (a component off by more than 1e-6 relative to the largest: a
+ * float's precision is 6e-8, so a shared colour read from float data still counts) or no
+ * far-field light has a colour. Black lights add nothing and share any colour.
+ */
+inline glm::dvec3 FindFarFieldSharedColor(const std::vector<PreparedLight>& lights)
+{
+  glm::dvec3 shared(0.0);
+  for (const PreparedLight& l : lights)
+  {
+    const double largest = std::max(l.Color.x, std::max(l.Color.y, l.Color.z));
+    if (!l.FarField || !(largest > 0.0))
+    {
+      continue;
+    }
+    const glm::dvec3 c = l.Color / largest;
+    if (shared == glm::dvec3(0.0))
+    {
+      shared = c;
+    }
+    else if (std::abs(c.x - shared.x) > 1e-6 || std::abs(c.y - shared.y) > 1e-6 ||
+      std::abs(c.z - shared.z) > 1e-6)
+    {
+      return glm::dvec3(0.0);
+    }
+  }
+  return shared;
+}
+
+/// The channel where a shared colour (FindFarFieldSharedColor) is 1; 0 when there is none.
+inline int GetSharedColorChannel(const glm::dvec3& shared)
+{
+  return shared.x >= shared.y && shared.x >= shared.z ? 0 : (shared.y >= shared.z ? 1 : 2);
+}
 
 /**
  * The far field's region is the box of the geometry to be shaded, grown by this fraction of
@@ -350,6 +397,7 @@ inline FarFieldPlan PlanFarField(std::vector<PreparedLight>& lights, glm::dvec3 
       none.NearLightsPerPoint = plan.NearLightsPerPoint;
       return none;
     }
+    plan.SharedColor = options.SharedColor ? FindFarFieldSharedColor(lights) : glm::dvec3(0.0);
     return plan;
   }
   double R = fillBudget();
@@ -380,6 +428,7 @@ inline FarFieldPlan PlanFarField(std::vector<PreparedLight>& lights, glm::dvec3 
       l.FarField = true;
     }
   }
+  plan.SharedColor = options.SharedColor ? FindFarFieldSharedColor(lights) : glm::dvec3(0.0);
   return plan;
 }
 
@@ -636,6 +685,32 @@ inline void PackFarFieldTexels(const std::vector<double>& moments, std::size_t n
       }
     }
     out[FarFieldTextures - 1][4 * n + 3] = 0.0f;
+  }
+}
+
+/**
+ * The node moments of one channel (`channel`, 0 to 2) for a far field whose lights share a
+ * colour (FindFarFieldSharedColor): 3 RGBA32F 3D textures, texel (i, j, k) of texture 0
+ * holding (S, Vx, Vy, Vz), of texture 1 (Txx, Tyy, Txy, Txz), of texture 2 (Tyz, 0, 0, 0).
+ * `out` holds (at least) 3 arrays of 4 floats per node; nodes [n0, n1) are packed.
+ */
+constexpr int FarFieldSharedColorTextures = 3;
+inline void PackFarFieldTexelsOneChannel(const std::vector<double>& moments, int channel,
+  std::size_t n0, std::size_t n1, std::array<std::vector<float>, FarFieldTextures>& out)
+{
+  for (std::size_t n = n0; n < n1; ++n)
+  {
+    const double* m = &moments[n * FarFieldFloatsPerNode +
+      static_cast<std::size_t>(channel) * FarFieldMomentsPerChannel];
+    for (int moment = 0; moment < FarFieldMomentsPerChannel; ++moment)
+    {
+      out[static_cast<std::size_t>(moment / 4)][4 * n + static_cast<std::size_t>(moment % 4)] =
+        static_cast<float>(m[moment]);
+    }
+    for (int q = FarFieldMomentsPerChannel; q < 4 * FarFieldSharedColorTextures; ++q)
+    {
+      out[static_cast<std::size_t>(q / 4)][4 * n + static_cast<std::size_t>(q % 4)] = 0.0f;
+    }
   }
 }
 

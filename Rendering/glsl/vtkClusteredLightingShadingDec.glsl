@@ -79,14 +79,20 @@ uniform int clLightCount;
 //CL_IF(FAR_FIELD)
 // The far field (Rendering/Core/vtkClusteredLightingFarField.h): per node of a world
 // grid, the order-2 moments of the far light's directions, S, V and T (trace T = S), RGB
-// each, in 7 RGBA32F 3D textures (moment-major: S, Vx, Vy, Vz, Txx, Tyy, Txy, Txz, Tyz).
+// each, in 7 RGBA32F 3D textures (moment-major: S, Vx, Vy, Vz, Txx, Tyy, Txy, Txz, Tyz);
+// when the far-field lights share a colour, one channel in 3 textures ((S, Vx, Vy, Vz),
+// (Txx, Tyy, Txy, Txz), (Tyz, 0, 0, 0)) times that colour (PackFarFieldTexelsOneChannel).
 uniform sampler3D clFarField0;
 uniform sampler3D clFarField1;
 uniform sampler3D clFarField2;
+//CL_IF(FAR_SHARED_COLOR)
+uniform vec3 clFarFieldColor; // the shared colour, largest component 1
+//CL_ELSE
 uniform sampler3D clFarField3;
 uniform sampler3D clFarField4;
 uniform sampler3D clFarField5;
 uniform sampler3D clFarField6;
+//CL_ENDIF
 uniform mat4 clFarFieldFromVC; // VC -> texture coordinates of the grid
 uniform mat3 clWorldFromVC;    // VC -> world directions (the moments' axes)
 

@@ -17,6 +17,21 @@
   // The far field: the moments at the fragment (trilinear), then the diffuse kernel in
   // the normal's direction and the Phong lobe in the mirrored view's direction.
   vec3 clUVW = (clFarFieldFromVC * vertexVC).xyz;
+//CL_IF(FAR_SHARED_COLOR)
+  // One channel times the colour every far-field light shares (exact, see the Dec).
+  vec4 clT0 = texture(clFarField0, clUVW);
+  vec4 clT1 = texture(clFarField1, clUVW);
+  float clT2 = texture(clFarField2, clUVW).x;
+  vec3 clS = clT0.x * clFarFieldColor;
+  vec3 clVx = clT0.y * clFarFieldColor;
+  vec3 clVy = clT0.z * clFarFieldColor;
+  vec3 clVz = clT0.w * clFarFieldColor;
+  vec3 clTxx = clT1.x * clFarFieldColor;
+  vec3 clTyy = clT1.y * clFarFieldColor;
+  vec3 clTxy = clT1.z * clFarFieldColor;
+  vec3 clTxz = clT1.w * clFarFieldColor;
+  vec3 clTyz = clT2 * clFarFieldColor;
+//CL_ELSE
   vec4 clT0 = texture(clFarField0, clUVW);
   vec4 clT1 = texture(clFarField1, clUVW);
   vec4 clT2 = texture(clFarField2, clUVW);
@@ -33,6 +48,7 @@
   vec3 clTxy = vec3(clT4.zw, clT5.x);
   vec3 clTxz = clT5.yzw;
   vec3 clTyz = clT6.xyz;
+//CL_ENDIF
 //CL_IF(PHONG)
   vec3 clN = normalVCVSOutput;
 //CL_ENDIF

@@ -2,11 +2,13 @@
 // The far field (vtkClusteredLightingFarField*.h): the near/far split conserves every
 // light, the moment kernels' clamping intervals hold the truth, the blocked tree build
 // matches the exact node sums, and the stated error bound holds point by point against
-// the exact far sum, for uniform, clumped and hard light layouts at scales 1e-3 to 1e6.
+// the exact far sum, for uniform, clumped and hard light layouts at scales 1e-3 to 1e6;
+// lights of one hue need one channel of it (FindFarFieldSharedColor).
 #include "vtkClusteredLightingFarFieldBound.h"
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <random>
 #include <utility>
@@ -668,6 +670,105 @@ TEST(FarFieldBuild, AFloorOnANodePlaneIsNotShadedDarker)
     100.0 * onPlane, 100.0 * midCell);
   EXPECT_LT(midCell, 0.0);
   EXPECT_LT(std::abs(onPlane), 0.25 * std::abs(midCell));
+}
+
+TEST(FarFieldSharedColor, FoundWhenTheFarLightsShareAHue)
+{
+  std::mt19937 rng(4);
+  std::uniform_real_distribution<double> U(-1.0, 1.0);
+  std::vector<PreparedLight> lights =
+    MakeLights(400, glm::dvec3(1, 0, 4), [&](int) { return glm::dvec3(U(rng), U(rng), U(rng)); });
+  const glm::dvec3 tint(0.6, 0.9, 0.3);
+  for (std::size_t i = 0; i < lights.size(); ++i)
+  {
+    lights[i].Color = tint * (0.01 + 0.1 * static_cast<double>(i % 9));
+  }
+  lights[5].Color = glm::dvec3(0.0); // black: adds nothing, shares any colour
+  FarFieldOptions options;
+  options.TargetNodes = 2000;
+  FarFieldPlan plan = PlanFarField(lights, glm::dvec3(-1), glm::dvec3(1), options);
+  ASSERT_TRUE(plan.Active);
+  ASSERT_EQ(plan.NumberOfFarFieldLights, lights.size());
+  // Largest component 1: the moments are the green channel's.
+  EXPECT_NEAR(plan.SharedColor.x, 0.6 / 0.9, 1e-12);
+  EXPECT_EQ(plan.SharedColor.y, 1.0);
+  EXPECT_NEAR(plan.SharedColor.z, 0.3 / 0.9, 1e-12);
+  EXPECT_EQ(GetSharedColorChannel(plan.SharedColor), 1);
+  // Off: three channels whatever the lights.
+  options.SharedColor = false;
+  EXPECT_EQ(
+    PlanFarField(lights, glm::dvec3(-1), glm::dvec3(1), options).SharedColor, glm::dvec3(0.0));
+  options.SharedColor = true;
+
+  // Colours read from float data (a vtkClusteredLightSet's arrays) still share the hue.
+  for (PreparedLight& l : lights)
+  {
+    l.Color = glm::dvec3(glm::vec3(l.Color));
+  }
+  EXPECT_NE(FindFarFieldSharedColor(lights), glm::dvec3(0.0));
+  // A light the far field does not hold may have any colour.
+  lights[7].FarField = false;
+  lights[7].Color = glm::dvec3(1.0, 0.0, 0.0);
+  EXPECT_NE(FindFarFieldSharedColor(lights), glm::dvec3(0.0));
+  // One far-field light of another hue, even slightly: three channels.
+  lights[8].Color *= glm::dvec3(1.0, 1.0, 1.0 + 1e-4);
+  EXPECT_EQ(FindFarFieldSharedColor(lights), glm::dvec3(0.0));
+  // No far-field light with a colour: none.
+  for (PreparedLight& l : lights)
+  {
+    l.Color = l.FarField ? glm::dvec3(0.0) : l.Color;
+  }
+  EXPECT_EQ(FindFarFieldSharedColor(lights), glm::dvec3(0.0));
+}
+
+TEST(FarFieldSharedColor, OneChannelTimesTheColourIsEveryChannel)
+{
+  // Lights of one tint at different intensities, built by the product's tree build: each
+  // channel's moments at every node are the tint's component times the packed channel,
+  // as the shading code reconstructs them (float texels, relative 1e-6 of the node's S).
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> U(-1.0, 1.0);
+  std::vector<PreparedLight> lights = MakeLights(
+    500, glm::dvec3(1, 0, 4), [&](int) { return glm::dvec3(U(rng), U(rng), 0.5 * U(rng)); });
+  for (std::size_t i = 0; i < lights.size(); ++i)
+  {
+    lights[i].Color = glm::dvec3(1.0, 0.8, 0.55) * (0.05 + 0.02 * static_cast<double>(i % 5));
+  }
+  const Built b = Build(lights, glm::dvec3(-1), glm::dvec3(1), 1.0, 2000);
+  ASSERT_TRUE(b.Plan.Active);
+  const glm::dvec3 shared = b.Plan.SharedColor;
+  ASSERT_LT(glm::length(shared - glm::dvec3(1.0, 0.8, 0.55)), 1e-12);
+  const std::size_t nodes = static_cast<std::size_t>(b.Plan.Grid.GetNumberOfNodes());
+  std::array<std::vector<float>, FarFieldTextures> one, three;
+  for (int q = 0; q < FarFieldTextures; ++q)
+  {
+    one[static_cast<std::size_t>(q)].assign(4 * nodes, -1.0f);
+    three[static_cast<std::size_t>(q)].assign(4 * nodes, -1.0f);
+  }
+  PackFarFieldTexelsOneChannel(b.Moments, GetSharedColorChannel(shared), 0, nodes, one);
+  PackFarFieldTexels(b.Moments, 0, nodes, three);
+  for (std::size_t n = 0; n < nodes; ++n)
+  {
+    const double scale = std::max(std::abs(b.Moments[n * FarFieldFloatsPerNode]), 1e-30);
+    for (int moment = 0; moment < FarFieldMomentsPerChannel; ++moment)
+    {
+      // The shading code's layout: moment m at texture m / 4, component m % 4.
+      const float texel =
+        one[static_cast<std::size_t>(moment / 4)][4 * n + static_cast<std::size_t>(moment % 4)];
+      for (int c = 0; c < 3; ++c)
+      {
+        const int q = 3 * moment + c;
+        const float rgb =
+          three[static_cast<std::size_t>(q / 4)][4 * n + static_cast<std::size_t>(q % 4)];
+        ASSERT_NEAR(shared[c] * texel, rgb, 1e-6 * scale) << "node " << n << " moment " << moment;
+      }
+    }
+    for (int q = FarFieldMomentsPerChannel; q < 4 * FarFieldSharedColorTextures; ++q)
+    {
+      ASSERT_EQ(
+        one[static_cast<std::size_t>(q / 4)][4 * n + static_cast<std::size_t>(q % 4)], 0.0f);
+    }
+  }
 }
 
 TEST(FarFieldBuild, EveryCopyThisCPURunsMatchesThePortableBuild)

@@ -191,6 +191,7 @@ void Context::ResetPassDefaults()
   p->SetFarFieldCellsPerRadius(2.0);
   p->SetFarFieldTolerance(2.0 / 255.0);
   p->SetFarFieldGrouping(1.0);
+  p->SetFarFieldSharedColor(true);
   p->SetNearFieldBudget(16.0);
   p->SetFalloff(vtkClusteredLightingPass::FALLOFF_HARD_CUT);
   p->SetTilesX(32);

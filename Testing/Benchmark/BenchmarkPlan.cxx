@@ -333,6 +333,22 @@ std::vector<Step> MakePlan(const PlanOptions& options)
         }
       };
       tenth->Teardown = [](Context& ctx) { ctx.MakeLights(4096, "uniform"); };
+      // White lights (VTK's default colour): the far field is one channel times the colour
+      // (FarFieldSharedColor), side by side with the same lights kept in three channels.
+      for (bool shared : { true, false })
+      {
+        Step* white = knob("light colour", shared ? "white" : "white, shared colour off",
+          [shared](vtkClusteredLightingPass* p) { p->SetFarFieldSharedColor(shared); });
+        white->ChangesScene = "white lights";
+        white->Setup = [](Context& ctx)
+        {
+          for (vtkIdType i = 0; i < 4096; ++i)
+          {
+            ctx.GetLights()->SetColor(i, 1.0, 1.0, 1.0);
+          }
+        };
+        white->Teardown = [](Context& ctx) { ctx.MakeLights(4096, "uniform"); };
+      }
     }
     const std::vector<double> budgets =
       quick ? std::vector<double>{ 4 } : std::vector<double>{ 1, 4, 16 };

@@ -385,7 +385,11 @@ public:
    * is shaded: the shading render then keeps that depth buffer and every opaque fragment
    * behind the visible surface fails the depth test before its lights are walked. Costs
    * one more pass over the opaque geometry (vertex work and rasterization, no lighting).
-   * Depth-aware clusters render it whatever this option says. Default is on.
+   * Depth-aware clusters render it whatever this option says. It pays for itself when the
+   * scene hides much of its geometry or many lights reach each cluster; on a heavy mesh
+   * that hides little, lit by up to about a thousand lights, it costs more than it saves
+   * on a software rasterizer (turn both options off there; measured in docs/depth.md).
+   * Default is on.
    */
   vtkSetMacro(DepthPrepass, bool);
   vtkGetMacro(DepthPrepass, bool);

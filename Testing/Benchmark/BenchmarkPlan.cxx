@@ -216,6 +216,24 @@ std::vector<Step> MakePlan(const PlanOptions& options)
 
     // The depth prepass and depth-aware clusters (on by default), off one by one at 4,096
     // uniform lights, on every scene: their gain depends on the scene's depth complexity.
+    // Both off at 64 and 1,024 lights too: the prepass costs a geometry pass whatever the
+    // lights, and with few lights per pixel it saves less than that (docs/depth.md).
+    if (!quick)
+    {
+      for (int n : { 64, 1024 })
+      {
+        Step off = base;
+        off.Lights = n;
+        off.Sweep = "depth";
+        off.Value = "prepass and depth-aware off";
+        off.Apply = [](vtkClusteredLightingPass* p)
+        {
+          p->SetDepthPrepass(false);
+          p->SetDepthAwareClusters(false);
+        };
+        plan.push_back(off);
+      }
+    }
     auto depthRows = [&]()
     {
       Step off = base;

@@ -30,8 +30,10 @@ bool vtkClusteredLightingFarFieldTextures::Build(
   // (rebuilt every frame for moving lights).
   const std::size_t nodes = static_cast<std::size_t>(grid.GetNumberOfNodes());
   this->Moments.resize(nodes * FarFieldFloatsPerNode);
-  // Lights that share a colour need one channel: 3 textures (FindFarFieldSharedColor).
+  // Lights that share a colour need one channel: its sums only, 3 textures
+  // (FindFarFieldSharedColor).
   const bool oneChannel = plan.SharedColor != glm::dvec3(0.0);
+  const int channel = oneChannel ? GetSharedColorChannel(plan.SharedColor) : -1;
   const int textures = oneChannel ? FarFieldSharedColorTextures : FarFieldTextures;
   for (int q = 0; q < FarFieldTextures; ++q)
   {
@@ -49,15 +51,15 @@ bool vtkClusteredLightingFarFieldTextures::Build(
     [&](vtkIdType b0, vtkIdType b1)
     {
       ComputeFarFieldMomentsForThisCPU(
-        grid, lights, nearRadii, tree, plan.Grouping, b0, b1, this->Moments);
+        grid, lights, nearRadii, tree, plan.Grouping, b0, b1, this->Moments, channel);
     });
   vtkSMPTools::For(0, static_cast<vtkIdType>(nodes), 4096,
     [&](vtkIdType n0, vtkIdType n1)
     {
       if (oneChannel)
       {
-        PackFarFieldTexelsOneChannel(this->Moments, GetSharedColorChannel(plan.SharedColor),
-          static_cast<std::size_t>(n0), static_cast<std::size_t>(n1), this->Texels);
+        PackFarFieldTexelsOneChannel(this->Moments, channel, static_cast<std::size_t>(n0),
+          static_cast<std::size_t>(n1), this->Texels);
       }
       else
       {

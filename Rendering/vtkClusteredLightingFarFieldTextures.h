@@ -18,10 +18,8 @@
  * bytes with the padding), linear filtering (the shading code's trilinear interpolation),
  * clamped to edge. When the far-field lights share a colour (FarFieldPlan::SharedColor,
  * FindFarFieldSharedColor) the far field is one channel times that colour: 3 textures (9
- * moments per node, 48 bytes), textures 3 to 6 released (their units -1).
- *
- * (The node sums still run for the three channels: a one-channel builder would cut the
- * build to a third, not done yet.)
+ * moments per node, 48 bytes), textures 3 to 6 released (their units -1), and the node
+ * sums run for that channel only (a third of the multiply-adds).
  *
  * @sa vtkClusteredLightingAssigner
  */

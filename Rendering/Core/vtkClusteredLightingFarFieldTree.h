@@ -446,9 +446,10 @@ inline void ComputeFarFieldTerms(float dx, float dy, float dz, float a0, float a
  *   32 registers of 16 floats hold them; with fewer registers they spill, and Lanes 0
  *   is faster).
  */
-/// Adds the far light of `src` at the node (px, py, pz) into column i of the 27 moment
-/// rows (channel-major, as the nodes store them).
-template <bool Windowed, int Columns>
+/// Adds the far light of `src` at the node (px, py, pz) into column i of the moment rows
+/// (channel-major, as the nodes store them): 27 rows, or with Channels 1 the 9 rows of
+/// the one channel whose colour the source carries in R.
+template <bool Windowed, int Columns, int Channels>
 inline void AddFarFieldSource(
   const FarFieldSource& src, float px, float py, float pz, float (*rows)[Columns], int i)
 {
@@ -459,15 +460,19 @@ inline void AddFarFieldSource(
   for (int m = 0; m < M; ++m)
   {
     rows[m][i] += src.R * t[m];
-    rows[M + m][i] += src.G * t[m];
-    rows[2 * M + m][i] += src.B * t[m];
+    if (Channels == 3)
+    {
+      rows[M + m][i] += src.G * t[m];
+      rows[2 * M + m][i] += src.B * t[m];
+    }
   }
 }
 
-template <bool Windowed, int Lanes>
+template <bool Windowed, int Lanes, int Channels>
 inline void AccumulateBlock(const FarFieldSources& s, const float* px, const float* py,
   const float* pz, float (*acc)[FarFieldBlockNodes])
 {
+  constexpr int Rows = Channels * FarFieldMomentsPerChannel;
   if constexpr (Lanes == 0)
   {
     for (std::size_t q = 0; q < s.Size(); ++q)
@@ -475,7 +480,7 @@ inline void AccumulateBlock(const FarFieldSources& s, const float* px, const flo
       const FarFieldSource src = s.Get(q);
       for (int i = 0; i < FarFieldBlockNodes; ++i)
       {
-        AddFarFieldSource<Windowed>(src, px[i], py[i], pz[i], acc, i);
+        AddFarFieldSource<Windowed, FarFieldBlockNodes, Channels>(src, px[i], py[i], pz[i], acc, i);
       }
     }
   }
@@ -484,8 +489,8 @@ inline void AccumulateBlock(const FarFieldSources& s, const float* px, const flo
     static_assert(FarFieldBlockNodes % Lanes == 0, "lanes must divide the block");
     for (int i0 = 0; i0 < FarFieldBlockNodes; i0 += Lanes)
     {
-      float a[FarFieldFloatsPerNode][Lanes];
-      for (int m = 0; m < FarFieldFloatsPerNode; ++m)
+      float a[Rows][Lanes];
+      for (int m = 0; m < Rows; ++m)
       {
         std::copy(acc[m] + i0, acc[m] + i0 + Lanes, a[m]);
       }
@@ -494,37 +499,34 @@ inline void AccumulateBlock(const FarFieldSources& s, const float* px, const flo
         const FarFieldSource src = s.Get(q);
         for (int i = 0; i < Lanes; ++i)
         {
-          AddFarFieldSource<Windowed>(src, px[i0 + i], py[i0 + i], pz[i0 + i], a, i);
+          AddFarFieldSource<Windowed, Lanes, Channels>(
+            src, px[i0 + i], py[i0 + i], pz[i0 + i], a, i);
         }
       }
-      for (int m = 0; m < FarFieldFloatsPerNode; ++m)
+      for (int m = 0; m < Rows; ++m)
       {
         std::copy(a[m], a[m] + Lanes, acc[m] + i0);
       }
     }
   }
 }
-} // namespace Detail
-
-/**
- * The grid's node moments (FarFieldFloatsPerNode per node, channel-major, as
- * ComputeFarFieldMomentsExact gives them) with the light tree, a block at a time (see the
- * file description). Fills blocks [b0, b1) (block index x fastest, GetFarFieldBlocks);
- * `moments` must hold every node. Returns the number of (node, source) pairs summed: the
- * cost. Lanes picks the loop order of the sums (Detail::AccumulateBlock); the default
- * suits any processor.
- */
-template <int Lanes = 0>
-std::int64_t ComputeFarFieldMoments(const FarFieldGrid& grid,
+/// ComputeFarFieldMoments for Channels 3 (every channel) or 1 (channel `channel` only).
+template <int Lanes, int Channels>
+std::int64_t ComputeFarFieldMomentsOf(const FarFieldGrid& grid,
   const std::vector<PreparedLight>& lights, const std::vector<double>& nearRadii,
   const FarFieldLightTree& tree, double grouping, std::int64_t b0, std::int64_t b1,
-  std::vector<double>& moments)
+  std::vector<double>& moments, int channel)
 {
+  constexpr int Rows = Channels * FarFieldMomentsPerChannel;
+  // Where the rows go in a node's moments (channel-major), and the sources' colours.
+  const int first = Channels == 1 ? channel * FarFieldMomentsPerChannel : 0;
+  auto colorOf = [channel](const glm::dvec3& c)
+  { return Channels == 1 ? glm::dvec3(c[channel], 0.0, 0.0) : c; };
   const std::array<int, 3> blocks = GetFarFieldBlocks(grid);
   Detail::FarFieldSources whole, windowed;
   std::vector<int> stack;
   float px[FarFieldBlockNodes], py[FarFieldBlockNodes], pz[FarFieldBlockNodes];
-  float acc[FarFieldFloatsPerNode][FarFieldBlockNodes];
+  float acc[Rows][FarFieldBlockNodes];
   // The groups' spread terms of a block. On the heap: ASan's fake stack does not keep the
   // 64-byte alignment GCC gives a local array in the AVX-512 copy (its zeroing crashed).
   std::vector<double> spread(FarFieldFloatsPerNode);
@@ -560,7 +562,7 @@ std::int64_t ComputeFarFieldMoments(const FarFieldGrid& grid,
       [&](int node)
       {
         const FarFieldLightTree::Node& n = tree.Nodes[static_cast<std::size_t>(node)];
-        whole.Add(n.Centroid - center, n.Color, n.Attenuation, 0.0);
+        whole.Add(n.Centroid - center, colorOf(n.Color), n.Attenuation, 0.0);
         double dm[FarFieldMomentsPerChannel];
         ComputeGroupSpreadTerms(n, center, dm);
         for (int c = 0; c < 3; ++c)
@@ -575,15 +577,15 @@ std::int64_t ComputeFarFieldMoments(const FarFieldGrid& grid,
       {
         const PreparedLight& l = lights[static_cast<std::size_t>(light)];
         (isWindowed ? windowed : whole)
-          .Add(l.PositionWC - center, l.Color, l.Attenuation,
+          .Add(l.PositionWC - center, colorOf(l.Color), l.Attenuation,
             isWindowed ? 1.0 / nearRadii[static_cast<std::size_t>(light)] : 0.0);
       });
     for (auto& row : acc)
     {
       std::fill(row, row + FarFieldBlockNodes, 0.0f);
     }
-    Detail::AccumulateBlock<false, Lanes>(whole, px, py, pz, acc);
-    Detail::AccumulateBlock<true, Lanes>(windowed, px, py, pz, acc);
+    AccumulateBlock<false, Lanes, Channels>(whole, px, py, pz, acc);
+    AccumulateBlock<true, Lanes, Channels>(windowed, px, py, pz, acc);
     pairs += static_cast<std::int64_t>(whole.Size() + windowed.Size()) * ni * nj * nk;
     for (int dk = 0; dk < nk; ++dk)
     {
@@ -594,15 +596,41 @@ std::int64_t ComputeFarFieldMoments(const FarFieldGrid& grid,
           const int n = (dk * FarFieldBlockSize + dj) * FarFieldBlockSize + di;
           double* o = &moments[static_cast<std::size_t>(grid.NodeIndex(i0 + di, j0 + dj, k0 + dk)) *
             FarFieldFloatsPerNode];
-          for (int q = 0; q < FarFieldFloatsPerNode; ++q)
+          for (int q = 0; q < Rows; ++q)
           {
-            o[q] = acc[q][n] + spread[q];
+            o[first + q] = acc[q][n] + spread[static_cast<std::size_t>(first + q)];
           }
         }
       }
     }
   }
   return pairs;
+}
+} // namespace Detail
+
+/**
+ * The grid's node moments (FarFieldFloatsPerNode per node, channel-major, as
+ * ComputeFarFieldMomentsExact gives them) with the light tree, a block at a time (see the
+ * file description). Fills blocks [b0, b1) (block index x fastest, GetFarFieldBlocks);
+ * `moments` must hold every node. Returns the number of (node, source) pairs summed: the
+ * cost. Lanes picks the loop order of the sums (Detail::AccumulateBlock); the default
+ * suits any processor. With `channel` 0, 1 or 2 only that channel's 9 moments of each node
+ * are summed and written (the others are left as they are): a third of the multiply-adds,
+ * for lights that share a colour (FindFarFieldSharedColor, PackFarFieldTexelsOneChannel).
+ */
+template <int Lanes = 0>
+std::int64_t ComputeFarFieldMoments(const FarFieldGrid& grid,
+  const std::vector<PreparedLight>& lights, const std::vector<double>& nearRadii,
+  const FarFieldLightTree& tree, double grouping, std::int64_t b0, std::int64_t b1,
+  std::vector<double>& moments, int channel = -1)
+{
+  if (channel >= 0 && channel < 3)
+  {
+    return Detail::ComputeFarFieldMomentsOf<Lanes, 1>(
+      grid, lights, nearRadii, tree, grouping, b0, b1, moments, channel);
+  }
+  return Detail::ComputeFarFieldMomentsOf<Lanes, 3>(
+    grid, lights, nearRadii, tree, grouping, b0, b1, moments, 0);
 }
 
 // The node sums are arithmetic bound (per node and source: a square root, two divisions
@@ -621,17 +649,19 @@ namespace Detail
 __attribute__((target("avx2,fma"), flatten)) inline std::int64_t ComputeFarFieldMomentsAVX2(
   const FarFieldGrid& grid, const std::vector<PreparedLight>& lights,
   const std::vector<double>& nearRadii, const FarFieldLightTree& tree, double grouping,
-  std::int64_t b0, std::int64_t b1, std::vector<double>& moments)
+  std::int64_t b0, std::int64_t b1, std::vector<double>& moments, int channel)
 {
-  return ComputeFarFieldMoments<0>(grid, lights, nearRadii, tree, grouping, b0, b1, moments);
+  return ComputeFarFieldMoments<0>(
+    grid, lights, nearRadii, tree, grouping, b0, b1, moments, channel);
 }
 
 __attribute__((target("avx512f,avx512vl,avx512dq,avx2,fma"), flatten)) inline std::int64_t
 ComputeFarFieldMomentsAVX512(const FarFieldGrid& grid, const std::vector<PreparedLight>& lights,
   const std::vector<double>& nearRadii, const FarFieldLightTree& tree, double grouping,
-  std::int64_t b0, std::int64_t b1, std::vector<double>& moments)
+  std::int64_t b0, std::int64_t b1, std::vector<double>& moments, int channel)
 {
-  return ComputeFarFieldMoments<16>(grid, lights, nearRadii, tree, grouping, b0, b1, moments);
+  return ComputeFarFieldMoments<16>(
+    grid, lights, nearRadii, tree, grouping, b0, b1, moments, channel);
 }
 } // namespace Detail
 #endif
@@ -677,26 +707,27 @@ inline const char* GetFarFieldBuildCopyName(FarFieldBuildCopy copy)
 
 /// ComputeFarFieldMoments in the given copy (which the processor must be able to run:
 /// CanRunFarFieldBuildCopy). The copies agree to float rounding (fused multiply-adds round
-/// once instead of twice, and the AVX-512 copy adds in another order).
+/// once instead of twice, and the AVX-512 copy adds in another order). `channel` as
+/// ComputeFarFieldMoments (-1: every channel).
 inline std::int64_t ComputeFarFieldMomentsWith(FarFieldBuildCopy copy, const FarFieldGrid& grid,
   const std::vector<PreparedLight>& lights, const std::vector<double>& nearRadii,
   const FarFieldLightTree& tree, double grouping, std::int64_t b0, std::int64_t b1,
-  std::vector<double>& moments)
+  std::vector<double>& moments, int channel = -1)
 {
 #ifdef VTK_CLUSTERED_LIGHTING_VECTOR_BUILDS
   if (copy == FarFieldBuildCopy::AVX512)
   {
     return Detail::ComputeFarFieldMomentsAVX512(
-      grid, lights, nearRadii, tree, grouping, b0, b1, moments);
+      grid, lights, nearRadii, tree, grouping, b0, b1, moments, channel);
   }
   if (copy == FarFieldBuildCopy::AVX2)
   {
     return Detail::ComputeFarFieldMomentsAVX2(
-      grid, lights, nearRadii, tree, grouping, b0, b1, moments);
+      grid, lights, nearRadii, tree, grouping, b0, b1, moments, channel);
   }
 #endif
   (void)copy;
-  return ComputeFarFieldMoments(grid, lights, nearRadii, tree, grouping, b0, b1, moments);
+  return ComputeFarFieldMoments(grid, lights, nearRadii, tree, grouping, b0, b1, moments, channel);
 }
 
 /// ComputeFarFieldMoments in the widest copy this processor runs
@@ -704,10 +735,10 @@ inline std::int64_t ComputeFarFieldMomentsWith(FarFieldBuildCopy copy, const Far
 inline std::int64_t ComputeFarFieldMomentsForThisCPU(const FarFieldGrid& grid,
   const std::vector<PreparedLight>& lights, const std::vector<double>& nearRadii,
   const FarFieldLightTree& tree, double grouping, std::int64_t b0, std::int64_t b1,
-  std::vector<double>& moments)
+  std::vector<double>& moments, int channel = -1)
 {
-  return ComputeFarFieldMomentsWith(
-    GetFarFieldBuildCopyForThisCPU(), grid, lights, nearRadii, tree, grouping, b0, b1, moments);
+  return ComputeFarFieldMomentsWith(GetFarFieldBuildCopyForThisCPU(), grid, lights, nearRadii, tree,
+    grouping, b0, b1, moments, channel);
 }
 
 } // namespace vtkClusteredLighting

@@ -185,6 +185,29 @@ std::vector<Step> MakePlan(const PlanOptions& options)
         s.Frames = n > 16384 ? 3 : base.Frames;
         plan.push_back(s);
       }
+      // The same with white lights: the far field's build sums one channel
+      // (FarFieldSharedColor).
+      for (int k = 0; k < std::min(rows, 2); ++k)
+      {
+        const int n = static_cast<int>(animated[k]);
+        Step s = base;
+        s.Lights = n;
+        s.Sweep = "light colour";
+        s.Value = "white, animated";
+        s.AnimateLights = true;
+        s.Reference = n <= 16384;
+        s.Frames = n > 16384 ? 3 : base.Frames;
+        s.ChangesScene = "white lights";
+        s.Setup = [n](Context& ctx)
+        {
+          for (vtkIdType i = 0; i < n; ++i)
+          {
+            ctx.GetLights()->SetColor(i, 1.0, 1.0, 1.0);
+          }
+        };
+        s.Teardown = [n](Context& ctx) { ctx.MakeLights(n, "uniform"); };
+        plan.push_back(s);
+      }
     }
     if (main && !quick && options.LargestLights > 0)
     {

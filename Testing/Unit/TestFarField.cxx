@@ -814,6 +814,60 @@ TEST(FarFieldBuild, EveryCopyThisCPURunsMatchesThePortableBuild)
   }
 }
 
+TEST(FarFieldBuild, OneChannelBuildIsThatChannelOfTheFullBuild)
+{
+  // Lights of one tint (a far field of one channel, FindFarFieldSharedColor): the build of
+  // the shared channel alone, in every copy this processor runs, gives that channel's
+  // moments of the three-channel build and leaves the other channels' floats untouched.
+  std::mt19937 rng(6);
+  std::uniform_real_distribution<double> U(-1.0, 1.0);
+  std::vector<PreparedLight> lights = MakeLights(
+    2500, glm::dvec3(0, 0, 1), [&](int) { return glm::dvec3(U(rng), U(rng), 0.5 * U(rng)); });
+  for (std::size_t i = 0; i < lights.size(); ++i)
+  {
+    lights[i].Color = glm::dvec3(0.5, 0.7, 1.0) * (0.2 + 0.1 * static_cast<double>(i % 4));
+  }
+  const Built b = Build(lights, glm::dvec3(-1), glm::dvec3(1), 1.0, 6000);
+  ASSERT_TRUE(b.Plan.Active);
+  const int channel = GetSharedColorChannel(b.Plan.SharedColor);
+  ASSERT_EQ(channel, 2);
+  const FarFieldGrid& g = b.Plan.Grid;
+  for (FarFieldBuildCopy copy :
+    { FarFieldBuildCopy::Portable, FarFieldBuildCopy::AVX2, FarFieldBuildCopy::AVX512 })
+  {
+    const char* name = GetFarFieldBuildCopyName(copy);
+    if (!CanRunFarFieldBuildCopy(copy))
+    {
+      std::printf("this processor cannot run the %s copy: not tested\n", name);
+      continue;
+    }
+    std::vector<double> three(b.Moments.size(), 0.0), one(b.Moments.size(), -7.0);
+    const std::int64_t pairs3 = ComputeFarFieldMomentsWith(
+      copy, g, lights, b.Radii, b.Tree, 1.0, 0, GetNumberOfFarFieldBlocks(g), three);
+    const std::int64_t pairs1 = ComputeFarFieldMomentsWith(
+      copy, g, lights, b.Radii, b.Tree, 1.0, 0, GetNumberOfFarFieldBlocks(g), one, channel);
+    EXPECT_EQ(pairs1, pairs3) << name;
+    for (std::size_t n = 0; n < static_cast<std::size_t>(g.GetNumberOfNodes()); ++n)
+    {
+      const double* m3 = &three[n * FarFieldFloatsPerNode];
+      const double* m1 = &one[n * FarFieldFloatsPerNode];
+      const double scale = m3[channel * FarFieldMomentsPerChannel];
+      ASSERT_GT(scale, 0.0);
+      for (int q = 0; q < FarFieldFloatsPerNode; ++q)
+      {
+        if (q / FarFieldMomentsPerChannel == channel)
+        {
+          ASSERT_NEAR(m1[q], m3[q], 1e-6 * scale) << name << ", node " << n << " float " << q;
+        }
+        else
+        {
+          ASSERT_EQ(m1[q], -7.0) << name << ": another channel written, node " << n;
+        }
+      }
+    }
+  }
+}
+
 TEST(FarFieldBuild, ThisCPUUsesTheWidestCopyItRuns)
 {
   const FarFieldBuildCopy copy = GetFarFieldBuildCopyForThisCPU();

@@ -598,7 +598,8 @@ std::int64_t ComputeFarFieldMomentsOf(const FarFieldGrid& grid,
             FarFieldFloatsPerNode];
           for (int q = 0; q < Rows; ++q)
           {
-            o[first + q] = acc[q][n] + spread[static_cast<std::size_t>(first + q)];
+            const int at = first + q;
+            o[at] = acc[q][n] + spread[static_cast<std::size_t>(at)];
           }
         }
       }

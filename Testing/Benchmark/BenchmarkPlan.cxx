@@ -193,7 +193,7 @@ std::vector<Step> MakePlan(const PlanOptions& options)
         Step s = base;
         s.Lights = n;
         s.Sweep = "light colour";
-        s.Value = "white, animated";
+        s.Value = "white animated";
         s.AnimateLights = true;
         s.Reference = n <= 16384;
         s.Frames = n > 16384 ? 3 : base.Frames;
@@ -378,7 +378,7 @@ std::vector<Step> MakePlan(const PlanOptions& options)
       // (FarFieldSharedColor), side by side with the same lights kept in three channels.
       for (bool shared : { true, false })
       {
-        Step* white = knob("light colour", shared ? "white" : "white, shared colour off",
+        Step* white = knob("light colour", shared ? "white" : "white (shared colour off)",
           [shared](vtkClusteredLightingPass* p) { p->SetFarFieldSharedColor(shared); });
         white->ChangesScene = "white lights";
         white->Setup = [](Context& ctx)

@@ -418,7 +418,9 @@ int CheckCSV(const std::string& path)
     {
       f.push_back(cell);
     }
-    if (f.size() + 1 < Columns().size()) // an empty note may drop the last field
+    // An empty note may drop the last field; more fields than columns is a comma in a
+    // value (the plan's values and notes must have none).
+    if (f.size() + 1 < Columns().size() || f.size() > Columns().size())
     {
       std::printf("check: row %d has %zu fields\n", rows, f.size());
       ++failures;

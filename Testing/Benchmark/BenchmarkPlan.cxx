@@ -241,25 +241,10 @@ std::vector<Step> MakePlan(const PlanOptions& options)
     // uniform lights, on every scene: their gain depends on the scene's depth complexity.
     // Both off at 64 and 1,024 lights too: the prepass costs a geometry pass whatever the
     // lights, and with few lights per pixel it saves less than that (docs/depth.md).
-    if (!quick)
-    {
-      for (int n : { 64, 1024 })
-      {
-        Step off = base;
-        off.Lights = n;
-        off.Sweep = "depth";
-        off.Value = "prepass and depth-aware off";
-        off.Apply = [](vtkClusteredLightingPass* p)
-        {
-          p->SetDepthPrepass(false);
-          p->SetDepthAwareClusters(false);
-        };
-        plan.push_back(off);
-      }
-    }
-    auto depthRows = [&]()
+    auto bothOff = [&](int lights)
     {
       Step off = base;
+      off.Lights = lights;
       off.Sweep = "depth";
       off.Value = "prepass and depth-aware off";
       off.Apply = [](vtkClusteredLightingPass* p)
@@ -268,6 +253,17 @@ std::vector<Step> MakePlan(const PlanOptions& options)
         p->SetDepthAwareClusters(false);
       };
       plan.push_back(off);
+    };
+    if (!quick)
+    {
+      for (int n : { 64, 1024 })
+      {
+        bothOff(n);
+      }
+    }
+    auto depthRows = [&]()
+    {
+      bothOff(base.Lights);
       Step prepassOnly = base;
       prepassOnly.Sweep = "depth";
       prepassOnly.Value = "prepass only";

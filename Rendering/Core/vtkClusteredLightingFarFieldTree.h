@@ -510,6 +510,7 @@ inline void AccumulateBlock(const FarFieldSources& s, const float* px, const flo
     }
   }
 }
+
 /// ComputeFarFieldMoments for Channels 3 (every channel) or 1 (channel `channel` only).
 template <int Lanes, int Channels>
 std::int64_t ComputeFarFieldMomentsOf(const FarFieldGrid& grid,

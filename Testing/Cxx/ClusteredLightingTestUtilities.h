@@ -151,15 +151,32 @@ inline void SetUpTestScene(
   ren->ResetCameraClippingRange();
 }
 
+/// n seeded uniform lights in the box over AddTestScene, with the given parameters.
+inline void MakeTestLights(vtkClusteredLightSet* lights, int n,
+  const ClusteredLightingScenes::LightParameters& params, unsigned seed)
+{
+  const double lo[3] = { -3, -0.9, -3 }, hi[3] = { 3, 1.8, 3 };
+  ClusteredLightingScenes::MakeLights(
+    lights, n, ClusteredLightingScenes::Layout::Uniform, lo, hi, params, seed);
+}
+
 /// n seeded uniform lights over AddTestScene whose influence radius at the default cutoff
 /// is `radius`.
 inline void MakeTestLights(vtkClusteredLightSet* lights, int n, double radius, unsigned seed)
 {
   ClusteredLightingScenes::LightParameters params;
   params.TargetRadius = radius;
-  const double lo[3] = { -3, -0.9, -3 }, hi[3] = { 3, 1.8, 3 };
-  ClusteredLightingScenes::MakeLights(
-    lights, n, ClusteredLightingScenes::Layout::Uniform, lo, hi, params, seed);
+  MakeTestLights(lights, n, params, seed);
+}
+
+/// n seeded uniform lights over AddTestScene as users write them (issue 11's dense scene):
+/// VTK's inverse-square attenuation (1, 0, 8), no radius, `intensity` each.
+inline void MakeUserLights(vtkClusteredLightSet* lights, int n, double intensity, unsigned seed)
+{
+  ClusteredLightingScenes::LightParameters params;
+  params.Intensity = intensity;
+  params.Quadratic = 8.0;
+  MakeTestLights(lights, n, params, seed);
 }
 
 /// The brute-force image of the current scene; the pass is left in clustered mode,

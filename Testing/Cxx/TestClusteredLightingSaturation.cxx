@@ -72,12 +72,7 @@ int TestClusteredLightingSaturation(int, char*[])
   vtkNew<vtkRenderer> ren;
   ClusteredLightingTest::SetUpTestScene(rw, ren, 320, 240);
   vtkNew<vtkClusteredLightSet> lights;
-  ClusteredLightingScenes::LightParameters params;
-  params.Intensity = 1.0;
-  params.Quadratic = 8.0;
-  const double lo[3] = { -3, -0.9, -3 }, hi[3] = { 3, 1.8, 3 };
-  ClusteredLightingScenes::MakeLights(
-    lights, n, ClusteredLightingScenes::Layout::Uniform, lo, hi, params, 5);
+  ClusteredLightingTest::MakeUserLights(lights, n, 1.0, 5);
   vtkNew<vtkClusteredLightingPass> pass;
   pass->AddLightSet(lights);
   ren->SetPass(pass);

@@ -86,12 +86,7 @@ int TestClusteredLightingSharedColor(int, char*[])
   vtkNew<vtkRenderer> ren;
   ClusteredLightingTest::SetUpTestScene(rw, ren, 320, 240);
   vtkNew<vtkClusteredLightSet> lights;
-  ClusteredLightingScenes::LightParameters params;
-  params.Intensity = 0.02;
-  params.Quadratic = 8.0;
-  const double lo[3] = { -3, -0.9, -3 }, hi[3] = { 3, 1.8, 3 };
-  ClusteredLightingScenes::MakeLights(
-    lights, n, ClusteredLightingScenes::Layout::Uniform, lo, hi, params, 11);
+  ClusteredLightingTest::MakeUserLights(lights, n, 0.02, 11);
   for (vtkIdType i = 0; i < n; ++i)
   {
     lights->SetColor(i, 1.0, 1.0, 1.0);

@@ -38,6 +38,18 @@ std::vector<PreparedLight> MakeLights(int n, const glm::dvec3& attenuation, Plac
   return PrepareLights(sources, LightPreparationOptions{ 1.0 / 1024.0, false }).Lights;
 }
 
+/// Gives every light the colour `tint` at intensity base + step * (i % period): lights
+/// that share a colour (FindFarFieldSharedColor) at different brightnesses.
+void Tint(
+  std::vector<PreparedLight>& lights, const glm::dvec3& tint, double base, double step, int period)
+{
+  for (std::size_t i = 0; i < lights.size(); ++i)
+  {
+    lights[i].Color =
+      tint * (base + step * static_cast<double>(i % static_cast<std::size_t>(period)));
+  }
+}
+
 /// The exact far light at s: sum over lights of the far part times the Phong terms.
 glm::dvec3 ExactFar(const FarFieldShadingPoint& s, const std::vector<PreparedLight>& lights,
   const std::vector<double>& radii)
@@ -678,11 +690,7 @@ TEST(FarFieldSharedColor, FoundWhenTheFarLightsShareAHue)
   std::uniform_real_distribution<double> U(-1.0, 1.0);
   std::vector<PreparedLight> lights =
     MakeLights(400, glm::dvec3(1, 0, 4), [&](int) { return glm::dvec3(U(rng), U(rng), U(rng)); });
-  const glm::dvec3 tint(0.6, 0.9, 0.3);
-  for (std::size_t i = 0; i < lights.size(); ++i)
-  {
-    lights[i].Color = tint * (0.01 + 0.1 * static_cast<double>(i % 9));
-  }
+  Tint(lights, glm::dvec3(0.6, 0.9, 0.3), 0.01, 0.1, 9);
   lights[5].Color = glm::dvec3(0.0); // black: adds nothing, shares any colour
   FarFieldOptions options;
   options.TargetNodes = 2000;
@@ -730,10 +738,7 @@ TEST(FarFieldSharedColor, OneChannelTimesTheColourIsEveryChannel)
   std::uniform_real_distribution<double> U(-1.0, 1.0);
   std::vector<PreparedLight> lights = MakeLights(
     500, glm::dvec3(1, 0, 4), [&](int) { return glm::dvec3(U(rng), U(rng), 0.5 * U(rng)); });
-  for (std::size_t i = 0; i < lights.size(); ++i)
-  {
-    lights[i].Color = glm::dvec3(1.0, 0.8, 0.55) * (0.05 + 0.02 * static_cast<double>(i % 5));
-  }
+  Tint(lights, glm::dvec3(1.0, 0.8, 0.55), 0.05, 0.02, 5);
   const Built b = Build(lights, glm::dvec3(-1), glm::dvec3(1), 1.0, 2000);
   ASSERT_TRUE(b.Plan.Active);
   const glm::dvec3 shared = b.Plan.SharedColor;
@@ -823,10 +828,7 @@ TEST(FarFieldBuild, OneChannelBuildIsThatChannelOfTheFullBuild)
   std::uniform_real_distribution<double> U(-1.0, 1.0);
   std::vector<PreparedLight> lights = MakeLights(
     2500, glm::dvec3(0, 0, 1), [&](int) { return glm::dvec3(U(rng), U(rng), 0.5 * U(rng)); });
-  for (std::size_t i = 0; i < lights.size(); ++i)
-  {
-    lights[i].Color = glm::dvec3(0.5, 0.7, 1.0) * (0.2 + 0.1 * static_cast<double>(i % 4));
-  }
+  Tint(lights, glm::dvec3(0.5, 0.7, 1.0), 0.2, 0.1, 4);
   const Built b = Build(lights, glm::dvec3(-1), glm::dvec3(1), 1.0, 6000);
   ASSERT_TRUE(b.Plan.Active);
   const int channel = GetSharedColorChannel(b.Plan.SharedColor);

@@ -62,7 +62,8 @@
  *
  * Memory at the default grid (16384 clusters): the list texture takes 16384 times
  * ceil(N/32) times 4 bytes (8 MiB at 4,096 lights), the master 16384 times ceil(N/1024)
- * times 4 bytes, light records 64 bytes per light, the far field 112 bytes per node.
+ * times 4 bytes, light records 64 bytes per light, the far field 112 bytes per node (48
+ * when its lights share a colour, FarFieldSharedColor).
  *
  * @sa vtkClusteredLightSet vtkRenderStepsPass vtkLight
  */
@@ -243,7 +244,8 @@ public:
   //@{
   /**
    * Resolution of the far field: the number of grid nodes over the bounding box of the
-   * visible geometry (112 bytes of GPU memory each: 7 RGBA32F texels). The grid spacing h
+   * visible geometry (112 bytes of GPU memory each: 7 RGBA32F texels; 48 bytes, 3 texels,
+   * when the far-field lights share a colour, see FarFieldSharedColor). The grid spacing h
    * follows, and the near radius of bright and always-on lights is FarFieldCellsPerRadius
    * times h: more nodes mean smaller near radii, fewer lights evaluated per fragment,
    * longer far-field builds. Range [512, 16777216]. Default is 32768.

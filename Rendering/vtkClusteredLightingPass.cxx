@@ -8,6 +8,7 @@
 #include "vtkClusteredLightingDepthPrepass.h"
 #include "vtkClusteredLightingGLHelpers.h"
 #include "vtkClusteredLightingLightCollector.h"
+#include "vtkClusteredLightingPrepassChoice.h"
 #include "vtkClusteredLightingShaderCode.h"
 #include "vtkClusteredLightingShaderVariant.h"
 #include "vtkLight.h"
@@ -28,6 +29,7 @@
 #include <algorithm> // for std::find
 #include <chrono>    // for timings
 #include <cmath>     // for std::isnan
+#include <cstdint>   // for std::uint64_t
 #include <map>       // for std::map
 #include <set>       // for std::set
 #include <sstream>   // for std::ostringstream
@@ -246,6 +248,7 @@ struct vtkClusteredLightingPass::vtkInternals
   {
     vtkWeakPointer<vtkRenderer> Renderer;
     std::unique_ptr<vtkClusteredLightingAssigner> Assigner;
+    vtkClusteredLighting::PrepassChooser Chooser; ///< AutomaticDepthPrepass
   };
   std::map<vtkRenderer*, RendererEntry> Renderers;
   std::vector<vtkSmartPointer<vtkClusteredLightSet>> LightSets;
@@ -440,10 +443,26 @@ void vtkClusteredLightingPass::Render(const vtkRenderState* s)
     ren, this->ClusterRendererLights, lights);
   vtkClusteredLightingLightCollector::CollectLightSets(this->Internals->LightSets, lights);
 
-  // 2. Depth prepass (hidden fragments and depth-aware clusters), then assignment.
+  // 2. Depth prepass (hidden fragments and depth-aware clusters), then assignment. With
+  // AutomaticDepthPrepass the renderer's chooser says whether this frame draws it, and
+  // which frames to time for its trials (vtkClusteredLightingPrepassChoice.h).
   vtkClusteredLightingAssigner* assigner = this->Internals->GetAssigner(ren);
   vtkClusteredLightingAssignerInputs inputs = this->MakeAssignerInputs(ren, lights);
-  const bool prepassed = this->RenderDepthPrepass(s, rw, inputs);
+  this->DepthPrepassUsed = false;
+  this->DepthAwareClustersUsed = false;
+  this->LastDepthPrepassTime = 0.0;
+  const bool eligible = this->UsesDepthPrepass(s, lights);
+  PrepassChooser* chooser =
+    eligible && this->AutomaticDepthPrepass ? &this->Internals->Renderers[ren].Chooser : nullptr;
+  const PrepassFrame frame =
+    chooser ? chooser->BeginFrame(this->MakePrepassSignature(s, lights)) : PrepassFrame();
+  std::chrono::steady_clock::time_point start;
+  if (frame.Timed)
+  {
+    glFinish(); // earlier GL work is not this frame's
+    start = std::chrono::steady_clock::now();
+  }
+  const bool prepassed = eligible && frame.Prepass && this->RenderDepthPrepass(s, rw, inputs);
   const vtkClusteredLightingAssignment& result = assigner->Update(rw, inputs);
   this->Internals->Depths = vtkClusteredLighting::DepthImage();
   this->ReportAssignment(result);
@@ -463,6 +482,61 @@ void vtkClusteredLightingPass::Render(const vtkRenderState* s)
     ren->PreserveDepthBufferOff();
   }
   this->Internals->Current = nullptr;
+  if (frame.Timed)
+  {
+    glFinish();
+    chooser->EndFrame(Milliseconds(start, std::chrono::steady_clock::now()));
+  }
+  this->NumberOfDepthPrepassTrials = chooser ? chooser->GetNumberOfTrials() : 0;
+  const double ratio = chooser ? chooser->GetLastRatio() : 0.0;
+  this->DepthPrepassTrialRatio = std::isnan(ratio) ? 0.0 : ratio;
+}
+
+//------------------------------------------------------------------------------
+// Whether this frame may draw the depth prepass: the options ask for it, there are
+// clustered lights and props, and it is not a selection render.
+bool vtkClusteredLightingPass::UsesDepthPrepass(
+  const vtkRenderState* s, const vtkClusteredLightingLightCollection& lights) const
+{
+  const bool hasLights = !lights.ClusteredLights.empty() || !lights.LightSets.empty();
+  return (this->DepthPrepass || this->DepthAwareClusters) && hasLights &&
+    !s->GetRenderer()->GetSelector() && s->GetPropArrayCount() > 0;
+}
+
+//------------------------------------------------------------------------------
+// What moves the prepass's break-even, hashed: the number of lights in powers of two, the
+// props, the viewport's size and the pass's options. A new value starts a new trial.
+std::uint64_t vtkClusteredLightingPass::MakePrepassSignature(
+  const vtkRenderState* s, const vtkClusteredLightingLightCollection& lights)
+{
+  std::uint64_t n = lights.ClusteredLights.size();
+  for (vtkClusteredLightSet* set : lights.LightSets)
+  {
+    n += static_cast<std::uint64_t>(set->GetNumberOfLights());
+  }
+  int bits = 0;
+  for (; n > 0; n >>= 1)
+  {
+    ++bits;
+  }
+  int width = 0, height = 0, x0 = 0, y0 = 0;
+  s->GetRenderer()->GetTiledSizeAndOrigin(&width, &height, &x0, &y0);
+  std::uint64_t h = 1469598103934665603ULL;
+  auto mix = [&h](std::uint64_t v)
+  {
+    h ^= v;
+    h *= 1099511628211ULL;
+  };
+  mix(static_cast<std::uint64_t>(bits));
+  mix(static_cast<std::uint64_t>(s->GetPropArrayCount()));
+  for (int i = 0; i < s->GetPropArrayCount(); ++i)
+  {
+    mix(reinterpret_cast<std::uintptr_t>(s->GetPropArray()[i]));
+  }
+  mix(static_cast<std::uint64_t>(width));
+  mix(static_cast<std::uint64_t>(height));
+  mix(static_cast<std::uint64_t>(this->GetMTime()));
+  return h;
 }
 
 //------------------------------------------------------------------------------
@@ -473,16 +547,6 @@ bool vtkClusteredLightingPass::RenderDepthPrepass(
   const vtkRenderState* s, vtkOpenGLRenderWindow* rw, vtkClusteredLightingAssignerInputs& inputs)
 {
   vtkRenderer* ren = s->GetRenderer();
-  this->DepthPrepassUsed = false;
-  this->DepthAwareClustersUsed = false;
-  this->LastDepthPrepassTime = 0.0;
-  const bool hasLights =
-    !inputs.Lights->ClusteredLights.empty() || !inputs.Lights->LightSets.empty();
-  if (!(this->DepthPrepass || this->DepthAwareClusters) || !hasLights || ren->GetSelector() ||
-    s->GetPropArrayCount() == 0)
-  {
-    return false;
-  }
   vtkClusteredLightingDepthPrepass* prepass = this->Internals->Prepass;
   // VTK's lighting code in the prepass's programs follows the renderer's lights: the same
   // as in the shading render (the clustered lights hidden), so that each mapper keeps
@@ -1053,6 +1117,8 @@ void vtkClusteredLightingPass::PrintSelf(ostream& os, vtkIndent indent)
   os << next << "MortonOrder: " << (this->MortonOrder ? "On" : "Off") << "\n";
   os << next << "PerClusterCulling: " << (this->PerClusterCulling ? "On" : "Off") << "\n";
   os << next << "DepthPrepass: " << (this->DepthPrepass ? "On" : "Off") << "\n";
+  os << next << "AutomaticDepthPrepass: " << (this->AutomaticDepthPrepass ? "On" : "Off")
+     << "\n";
   os << next << "DepthAwareClusters: " << (this->DepthAwareClusters ? "On" : "Off") << "\n";
   os << next << "MaximumTextureSize: " << this->MaximumTextureSize << "\n";
   os << indent << "Diagnostic:\n";
@@ -1080,6 +1146,8 @@ void vtkClusteredLightingPass::PrintSelf(ostream& os, vtkIndent indent)
      << " pixels)\n";
   os << next << "DepthPrepassUsed: " << (this->DepthPrepassUsed ? "yes" : "no") << " ("
      << this->LastDepthPrepassTime << " ms)\n";
+  os << next << "NumberOfDepthPrepassTrials: " << this->NumberOfDepthPrepassTrials
+     << " (last ratio with / without " << this->DepthPrepassTrialRatio << ")\n";
   os << next << "DepthAwareClustersUsed: " << (this->DepthAwareClustersUsed ? "yes" : "no")
      << ", visible depths " << this->VisibleDepthRange[0] << " to " << this->VisibleDepthRange[1]
      << ", slices over " << this->SlicingRangeInUse[0] << " to " << this->SlicingRangeInUse[1]

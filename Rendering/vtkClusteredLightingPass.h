@@ -73,7 +73,8 @@
 #include "vtkOpenGLRenderPass.h"
 #include "vtkRenderingClusteredModule.h" // For export macro
 
-#include <memory> // for std::unique_ptr
+#include <cstdint> // for std::uint64_t
+#include <memory>  // for std::unique_ptr
 #include <vector> // for std::vector
 
 class vtkClusteredLightSet;
@@ -418,6 +419,26 @@ public:
 
   //@{
   /**
+   * Choose the depth prepass per renderer by timing it: the pass renders a few frames
+   * with the prepass (and depth-aware clusters, as DepthPrepass and DepthAwareClusters
+   * say) and a few without, side by side on the device it runs on, and keeps the faster
+   * (the other must be 5% faster to change the choice). A trial runs 3 frames after the
+   * scene changes (the number of lights in powers of two, the props, the viewport, the
+   * pass's options) and again every 600 frames; it times its frames with a glFinish on
+   * each side. Where the prepass pays depends on the device (geometry against shading
+   * cost) and the scene, so no fixed rule is used (docs/depth.md). Both modes give the
+   * same image within the pass's stated bounds (bit for bit for lights with an explicit
+   * radius and windowed falloff). Off: the prepass follows DepthPrepass and
+   * DepthAwareClusters alone, in every frame. Has no effect when both are off.
+   * Default is on.
+   */
+  vtkSetMacro(AutomaticDepthPrepass, bool);
+  vtkGetMacro(AutomaticDepthPrepass, bool);
+  vtkBooleanMacro(AutomaticDepthPrepass, bool);
+  //@}
+
+  //@{
+  /**
    * Advanced: largest texture side, in texels, the pass allocates for its list and master
    * textures; 0 means the context's GL_MAX_TEXTURE_SIZE. A smaller value bounds GPU memory
    * (the list texture is at most MaximumTextureSize squared times 4 bytes) and lowers the
@@ -547,6 +568,14 @@ public:
   vtkGetMacro(DepthPrepassUsed, bool);
   /// Time in ms of the last depth prepass, its depth readback included.
   vtkGetMacro(LastDepthPrepassTime, double);
+  /// AutomaticDepthPrepass: trials completed for the last rendered renderer since its
+  /// scene last changed or began. Whether the last frame drew the prepass is
+  /// GetDepthPrepassUsed.
+  vtkGetMacro(NumberOfDepthPrepassTrials, int);
+  /// AutomaticDepthPrepass: the last trial's median frame time with the prepass over the
+  /// median without it, for the last rendered renderer (below 1: the prepass paid; 0
+  /// before any trial).
+  vtkGetMacro(DepthPrepassTrialRatio, double);
   /// Whether the last render's clusters were cut to the visible depths.
   vtkGetMacro(DepthAwareClustersUsed, bool);
   /// Nearest and deepest visible opaque depth (view coordinates) of the last depth-aware
@@ -663,6 +692,7 @@ protected:
   bool PerClusterCulling = true;
   bool DepthPrepass = true;
   bool DepthAwareClusters = true;
+  bool AutomaticDepthPrepass = true;
   int MaximumTextureSize = 0;
   bool MeasureTimings = false;
   bool FarField = true;
@@ -698,6 +728,8 @@ protected:
   double LastShadingTime = 0.0;
   bool DepthPrepassUsed = false;
   double LastDepthPrepassTime = 0.0;
+  int NumberOfDepthPrepassTrials = 0;
+  double DepthPrepassTrialRatio = 0.0;
   bool DepthAwareClustersUsed = false;
   double VisibleDepthRange[2] = { 0.0, 0.0 };
   double SlicingRangeInUse[2] = { 0.0, 0.0 };
@@ -729,6 +761,10 @@ private:
   void RenderDelegateOnce(const vtkRenderState* s);
   void HideClusteredLights(vtkRenderer* ren, const vtkClusteredLightingLightCollection& lights);
   void RestoreRendererLights(vtkRenderer* ren, const vtkClusteredLightingLightCollection& lights);
+  bool UsesDepthPrepass(
+    const vtkRenderState* s, const vtkClusteredLightingLightCollection& lights) const;
+  std::uint64_t MakePrepassSignature(
+    const vtkRenderState* s, const vtkClusteredLightingLightCollection& lights);
   bool RenderDepthPrepass(
     const vtkRenderState* s, vtkOpenGLRenderWindow* rw, vtkClusteredLightingAssignerInputs& inputs);
   void SetPixelCounts(const vtkRenderState* s, vtkOpenGLRenderWindow* rw);

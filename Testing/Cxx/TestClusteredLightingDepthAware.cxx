@@ -166,6 +166,9 @@ int TestClusteredLightingDepthAware(int, char*[])
   ClusteredLightingTest::SetUpTestScene(rw, ren, 300, 200);
   vtkNew<vtkClusteredLightingPass> pass;
   pass->SetFalloff(vtkClusteredLightingPass::FALLOFF_WINDOWED);
+  // This test checks the two options themselves, frame by frame: no timed trials
+  // (TestClusteredLightingAutomaticPrepass checks those).
+  pass->AutomaticDepthPrepassOff();
   vtkNew<vtkClusteredLightSet> lights;
   const double origin[3] = { 0.0, 0.0, 0.0 };
   MakeLights(lights, 600, 0.6, origin);

@@ -11,6 +11,7 @@
 #include "vtkClusteredLightingLights.h"
 #include "vtkClusteredLightingMessages.h"
 #include "vtkClusteredLightingMorton.h"
+#include "vtkClusteredLightingPrepassChoice.h"
 #include "vtkClusteredLightingReference.h"
 #include "vtkClusteredLightingShaderCode.h"
 #include "vtkClusteredLightingSphereBounds.h"

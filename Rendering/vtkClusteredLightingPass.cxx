@@ -18,6 +18,7 @@
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLRenderer.h"
 #include "vtkOpenGLState.h"
+#include "vtkPropCollection.h"
 #include "vtkProperty.h"
 #include "vtkRenderState.h"
 #include "vtkRenderStepsPass.h"
@@ -505,7 +506,8 @@ bool vtkClusteredLightingPass::UsesDepthPrepass(
 
 //------------------------------------------------------------------------------
 // What moves the prepass's break-even, hashed: the number of lights in powers of two, the
-// props, the viewport's size and the pass's options. A new value starts a new trial.
+// renderer's props (added or removed), the viewport's size and the pass's options. A new
+// value starts a new trial.
 std::uint64_t vtkClusteredLightingPass::MakePrepassSignature(
   const vtkRenderState* s, const vtkClusteredLightingLightCollection& lights)
 {
@@ -528,11 +530,11 @@ std::uint64_t vtkClusteredLightingPass::MakePrepassSignature(
     h *= 1099511628211ULL;
   };
   mix(static_cast<std::uint64_t>(bits));
-  mix(static_cast<std::uint64_t>(s->GetPropArrayCount()));
-  for (int i = 0; i < s->GetPropArrayCount(); ++i)
-  {
-    mix(reinterpret_cast<std::uintptr_t>(s->GetPropArray()[i]));
-  }
+  // The renderer's props, not the render state's: those change with the frustum culling
+  // as the camera moves, and a moving camera is no new scene.
+  vtkPropCollection* props = s->GetRenderer()->GetViewProps();
+  mix(static_cast<std::uint64_t>(props->GetNumberOfItems()));
+  mix(static_cast<std::uint64_t>(props->GetMTime()));
   mix(static_cast<std::uint64_t>(width));
   mix(static_cast<std::uint64_t>(height));
   mix(static_cast<std::uint64_t>(this->GetMTime()));

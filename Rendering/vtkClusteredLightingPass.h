@@ -391,8 +391,9 @@ public:
    * Depth-aware clusters render it whatever this option says. It pays for itself when the
    * scene hides much of its geometry or many lights reach each cluster; on a heavy mesh
    * that hides little, lit by up to about a thousand lights, it costs more than it saves
-   * on a software rasterizer (turn both options off there; measured in docs/depth.md).
-   * Default is on.
+   * on a software rasterizer (measured in docs/depth.md). AutomaticDepthPrepass (on by
+   * default) times both per renderer and drops the prepass, and the depth-aware clusters,
+   * where it does not pay. Default is on.
    */
   vtkSetMacro(DepthPrepass, bool);
   vtkGetMacro(DepthPrepass, bool);

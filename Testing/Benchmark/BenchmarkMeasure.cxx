@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <sstream>
 
 namespace ClusteredLightingBenchmark
 {
@@ -203,6 +204,7 @@ void Context::ResetPassDefaults()
   p->SetPerClusterCulling(true);
   p->SetDepthPrepass(true);
   p->SetDepthAwareClusters(true);
+  p->SetAutomaticDepthPrepass(false); // rows time the options as set; "automatic" rows turn it on
   p->SetShadingMode(vtkClusteredLightingPass::SHADING_CLUSTERED);
   p->SetDebugView(vtkClusteredLightingPass::DEBUG_NONE);
 }
@@ -316,7 +318,10 @@ Row Context::Measure(const Step& step)
   this->SetView();
   this->Pass->SetMeasureTimings(clustered);
   row.FirstFrameMs = ClusteredLightingScenes::TimeRender(this->Window); // shaders, assignment
-  ClusteredLightingScenes::TimeRender(this->Window);
+  for (int f = 0; f < step.Warmup; ++f)
+  {
+    ClusteredLightingScenes::TimeRender(this->Window);
+  }
   std::vector<double> ms, assign, update, shade, prepass, shaded, farBuild;
   for (int f = 0; f < step.Frames; ++f)
   {
@@ -355,6 +360,13 @@ Row Context::Measure(const Step& step)
     row.LightUpdateMs = Median(update);
     row.ShadeMs = Median(shade);
     row.PrepassMs = Median(prepass);
+    if (this->Pass->GetAutomaticDepthPrepass())
+    {
+      std::ostringstream note;
+      note << "trial: with / without prepass " << this->Pass->GetDepthPrepassTrialRatio()
+           << "; chose " << (this->Pass->GetDepthPrepassUsed() ? "prepass" : "no prepass");
+      row.Note = note.str();
+    }
     row.ShadedPerVisible = Median(shaded);
     if (this->Pass->GetNumberOfFarFieldLights() > 0)
     {

@@ -261,6 +261,23 @@ std::vector<Step> MakePlan(const PlanOptions& options)
         bothOff(n);
       }
     }
+    // The prepass chosen by timing (AutomaticDepthPrepass, off in every other row): its
+    // trial runs in the warm-up frames (3 settle frames, 4 with the prepass, 4 without),
+    // so the timed frames show the choice it made.
+    auto automatic = [&](int lights)
+    {
+      Step a = base;
+      a.Lights = lights;
+      a.Sweep = "depth";
+      a.Value = "automatic";
+      a.Warmup = 12;
+      a.Apply = [](vtkClusteredLightingPass* p) { p->SetAutomaticDepthPrepass(true); };
+      plan.push_back(a);
+    };
+    for (int n : quick ? std::vector<int>{ base.Lights } : std::vector<int>{ 64, 1024, base.Lights })
+    {
+      automatic(n);
+    }
     auto depthRows = [&]()
     {
       bothOff(base.Lights);

@@ -48,6 +48,7 @@ struct Step
   std::string Sweep = "count";      ///< the knob changed from the defaults
   std::string Value;
   int Frames = 10;
+  int Warmup = 1;             ///< frames rendered after the first, before the timed ones
   bool Moving = true;         ///< orbit the camera (the assignment runs every frame)
   bool AnimateLights = false; ///< move every light a little each frame (lights change)
   bool Counts = true;         ///< lights evaluated/reaching per pixel (clustered only)

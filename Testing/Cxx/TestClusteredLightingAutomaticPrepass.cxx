@@ -10,12 +10,20 @@
 //  - every frame gives the same image: bit for bit with lights that have an explicit
 //    radius and windowed falloff, within one step with lights as users write them
 //    (inverse-square, no radius, far field), and within the stated bound of brute force;
-//  - a changed scene (twice the lights, a changed option) starts over with the prepass;
+//  - a moving camera and props that leave the frame (frustum culling) do not restart the
+//    trial; a changed scene (twice the lights, a changed option) starts over with the
+//    prepass;
 //  - AutomaticDepthPrepassOff renders the prepass in every frame and runs no trial.
 #include "ClusteredLightingTestUtilities.h"
 
+#include "vtkActor.h"
+#include "vtkCamera.h"
 #include "vtkClusteredLightSet.h"
 #include "vtkClusteredLightingPass.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkSphereSource.h"
 
 #include <cmath>
 #include <cstdio>
@@ -130,14 +138,34 @@ int TestClusteredLightingAutomaticPrepass(int, char*[])
       0,
     "inverse-square lights: within the stated bound of brute force, no false negative");
 
-  // 3. Twice the lights: a new scene, which starts with the prepass and no trial.
+  // 3. A moving camera and a prop that leaves the frame and comes back (as frustum
+  // culling makes it) are the same scene: the trial runs through them.
+  vtkNew<vtkSphereSource> small;
+  small->SetCenter(2.0, 0.0, 2.0);
+  small->SetRadius(0.2);
+  vtkNew<vtkPolyDataMapper> smallMapper;
+  smallMapper->SetInputConnection(small->GetOutputPort());
+  vtkNew<vtkActor> extra;
+  extra->SetMapper(smallMapper);
+  ren->AddActor(extra);
+  for (int f = 0; f < 3 + 8; ++f)
+  {
+    extra->SetVisibility(f % 2);
+    ren->GetActiveCamera()->Azimuth(1.0);
+    ren->ResetCameraClippingRange();
+    rw->Render();
+  }
+  Check(pass->GetNumberOfDepthPrepassTrials() == 1,
+    "moving camera, a prop hidden every other frame: one trial completed in 11 frames");
+
+  // 4. Twice the lights: a new scene, which starts with the prepass and no trial.
   ClusteredLightingTest::MakeUserLights(userLights, 1200, 0.01, 13);
   frames = RenderFrames(rw, pass, 3);
   Check(Pattern(frames.Prepass) == "PPP" && pass->GetNumberOfDepthPrepassTrials() == 0 &&
       pass->GetDepthPrepassTrialRatio() == 0.0,
     "twice the lights: 3 frames with the prepass, no trial yet");
 
-  // 4. Off: the prepass in every frame, no trial.
+  // 5. Off: the prepass in every frame, no trial.
   pass->AutomaticDepthPrepassOff();
   frames = RenderFrames(rw, pass, 3 + 8 + 2);
   Check(Pattern(frames.Prepass) == std::string(13, 'P') &&

@@ -1119,8 +1119,7 @@ void vtkClusteredLightingPass::PrintSelf(ostream& os, vtkIndent indent)
   os << next << "MortonOrder: " << (this->MortonOrder ? "On" : "Off") << "\n";
   os << next << "PerClusterCulling: " << (this->PerClusterCulling ? "On" : "Off") << "\n";
   os << next << "DepthPrepass: " << (this->DepthPrepass ? "On" : "Off") << "\n";
-  os << next << "AutomaticDepthPrepass: " << (this->AutomaticDepthPrepass ? "On" : "Off")
-     << "\n";
+  os << next << "AutomaticDepthPrepass: " << (this->AutomaticDepthPrepass ? "On" : "Off") << "\n";
   os << next << "DepthAwareClusters: " << (this->DepthAwareClusters ? "On" : "Off") << "\n";
   os << next << "MaximumTextureSize: " << this->MaximumTextureSize << "\n";
   os << indent << "Diagnostic:\n";

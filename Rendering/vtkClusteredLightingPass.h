@@ -37,7 +37,8 @@
  *
  * Algorithm (compute-less clustered lighting, after wizgrav/cl2): the view frustum is cut
  * into TilesX by TilesY screen tiles and Slices depth slices. A depth prepass draws the
- * opaque geometry depth-only first (DepthPrepass), so no hidden fragment is shaded; its
+ * opaque geometry depth-only first (DepthPrepass, kept per renderer only where timing
+ * shows it pays: AutomaticDepthPrepass), so no hidden fragment is shaded; its
  * depth, read back, cuts every cluster to the depths it holds and places the slices
  * between the nearest and deepest visible surfaces (DepthAwareClusters, docs/depth.md).
  * When lights, camera, viewport or visible depths change, the CPU (GL-free core in
@@ -75,7 +76,7 @@
 
 #include <cstdint> // for std::uint64_t
 #include <memory>  // for std::unique_ptr
-#include <vector> // for std::vector
+#include <vector>  // for std::vector
 
 class vtkClusteredLightSet;
 class vtkClusteredLightingAssigner;

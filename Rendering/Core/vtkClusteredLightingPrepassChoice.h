@@ -50,10 +50,10 @@ namespace vtkClusteredLighting
 /// When and how long the trials run.
 struct PrepassChoiceOptions
 {
-  int SettleFrames = 3;       ///< frames of a new signature before its first trial
-  int FramesPerBlock = 3;     ///< timed frames per mode in a trial
-  double Margin = 0.05;       ///< relative gain needed to change the choice
-  int RetrialInterval = 600;  ///< frames between the end of a trial and the next
+  int SettleFrames = 3;      ///< frames of a new signature before its first trial
+  int FramesPerBlock = 3;    ///< timed frames per mode in a trial
+  double Margin = 0.05;      ///< relative gain needed to change the choice
+  int RetrialInterval = 600; ///< frames between the end of a trial and the next
 };
 
 /// What one frame does.

@@ -274,9 +274,45 @@ std::vector<Step> MakePlan(const PlanOptions& options)
       a.Apply = [](vtkClusteredLightingPass* p) { p->SetAutomaticDepthPrepass(true); };
       plan.push_back(a);
     };
-    for (int n : quick ? std::vector<int>{ base.Lights } : std::vector<int>{ 64, 1024, base.Lights })
+    for (int n :
+      quick ? std::vector<int>{ base.Lights } : std::vector<int>{ 64, 1024, base.Lights })
     {
       automatic(n);
+    }
+    // A multisampled window, as VTK's default asks for (8 samples): its depth cannot be
+    // read back, so the depth-aware clusters are off and only the prepass is left; the
+    // default, both off, and the prepass chosen by timing, each against the window's own
+    // exact reference.
+    if (!quick)
+    {
+      for (int n : { 1024, base.Lights })
+      {
+        for (const char* variant : { "", " both off", " automatic" })
+        {
+          Step m = base;
+          m.Lights = n;
+          m.Sweep = "window";
+          m.Value = std::string("8 samples") + variant;
+          m.ChangesScene = "8 samples";
+          m.Setup = [](Context& ctx) { ctx.GetWindow()->SetMultiSamples(8); };
+          m.Teardown = [](Context& ctx) { ctx.GetWindow()->SetMultiSamples(0); };
+          const std::string v = variant;
+          if (v == " both off")
+          {
+            m.Apply = [](vtkClusteredLightingPass* p)
+            {
+              p->SetDepthPrepass(false);
+              p->SetDepthAwareClusters(false);
+            };
+          }
+          else if (v == " automatic")
+          {
+            m.Warmup = 12;
+            m.Apply = [](vtkClusteredLightingPass* p) { p->SetAutomaticDepthPrepass(true); };
+          }
+          plan.push_back(m);
+        }
+      }
     }
     auto depthRows = [&]()
     {

@@ -134,8 +134,8 @@ int TestClusteredLightingAutomaticPrepass(int, char*[])
   std::printf("inverse-square lights: largest difference from the first frame %.2f steps\n", worst);
   Check(worst <= 1.0 + 1e-6, "inverse-square lights: every frame within one step of the first");
   Check(pass->GetNumberOfFarFieldLights() > 0, "inverse-square lights: the far field is used");
-  Check(ClusteredLightingTest::CheckClusteredFrame(pass, rw, ren, 1.4, "inverse-square lights") ==
-      0,
+  Check(
+    ClusteredLightingTest::CheckClusteredFrame(pass, rw, ren, 1.4, "inverse-square lights") == 0,
     "inverse-square lights: within the stated bound of brute force, no false negative");
 
   // 3. A moving camera and a prop that leaves the frame and comes back (as frustum
@@ -168,8 +168,8 @@ int TestClusteredLightingAutomaticPrepass(int, char*[])
   // 5. Off: the prepass in every frame, no trial.
   pass->AutomaticDepthPrepassOff();
   frames = RenderFrames(rw, pass, 3 + 8 + 2);
-  Check(Pattern(frames.Prepass) == std::string(13, 'P') &&
-      pass->GetNumberOfDepthPrepassTrials() == 0,
+  Check(
+    Pattern(frames.Prepass) == std::string(13, 'P') && pass->GetNumberOfDepthPrepassTrials() == 0,
     "AutomaticDepthPrepassOff: the prepass in every frame, no trial");
   return Status;
 }

@@ -64,8 +64,8 @@ TEST(PrepassChoice, ATrialIsTwoBlocksAfterTheSettleFrames)
   PrepassChooser chooser(Small());
   const std::vector<Seen> seen =
     RunFrames(chooser, 2 + 8 + 10, [](bool prepass) { return prepass ? 100.0 : 150.0; });
-  const std::vector<Seen> expected = { { true, false }, { true, false }, // settle
-    { true, false }, { true, true }, { true, true }, { true, true },     // with
+  const std::vector<Seen> expected = { { true, false }, { true, false },   // settle
+    { true, false }, { true, true }, { true, true }, { true, true },       // with
     { false, false }, { false, true }, { false, true }, { false, true } }; // without
   for (std::size_t f = 0; f < expected.size(); ++f)
   {
@@ -126,15 +126,18 @@ TEST(PrepassChoice, TheMarginKeepsTheChoiceAgainstNoise)
 TEST(PrepassChoice, ANewSceneStartsOver)
 {
   PrepassChooser chooser(Small());
-  RunFrames(chooser, 2 + 8, [](bool prepass) { return prepass ? 300.0 : 100.0; }, 1);
+  RunFrames(
+    chooser, 2 + 8, [](bool prepass) { return prepass ? 300.0 : 100.0; }, 1);
   EXPECT_FALSE(chooser.GetChoice());
   // Half a trial of the same scene, then the scene changes.
-  RunFrames(chooser, 10 + 6, [](bool prepass) { return prepass ? 300.0 : 100.0; }, 1);
-  std::vector<Seen> seen = RunFrames(chooser, 1, [](bool) { return 1.0; }, 2);
+  RunFrames(
+    chooser, 10 + 6, [](bool prepass) { return prepass ? 300.0 : 100.0; }, 1);
+  std::vector<Seen> seen = RunFrames(
+    chooser, 1, [](bool) { return 1.0; }, 2);
   EXPECT_EQ(chooser.GetNumberOfTrials(), 0);
   EXPECT_TRUE(std::isnan(chooser.GetLastRatio()));
-  const std::vector<Seen> rest =
-    RunFrames(chooser, 1 + 8, [](bool prepass) { return prepass ? 100.0 : 300.0; }, 2);
+  const std::vector<Seen> rest = RunFrames(
+    chooser, 1 + 8, [](bool prepass) { return prepass ? 100.0 : 300.0; }, 2);
   seen.insert(seen.end(), rest.begin(), rest.end());
   EXPECT_TRUE(seen[0].Prepass && !seen[0].Timed && seen[1].Prepass && !seen[1].Timed);
   EXPECT_TRUE(seen[2].Prepass && !seen[2].Timed && seen[3].Prepass && seen[3].Timed);

@@ -14,6 +14,7 @@
 //    trial; a changed scene (twice the lights, a changed option) starts over with the
 //    prepass;
 //  - AutomaticDepthPrepassOff renders the prepass in every frame and runs no trial.
+#include "ClusteredLightingGLTestUtilities.h" // for Check
 #include "ClusteredLightingTestUtilities.h"
 
 #include "vtkActor.h"
@@ -32,16 +33,7 @@
 
 namespace
 {
-int Status = EXIT_SUCCESS;
-
-void Check(bool ok, const std::string& what)
-{
-  std::printf("%s: %s\n", ok ? "ok" : "FAILED", what.c_str());
-  if (!ok)
-  {
-    Status = EXIT_FAILURE;
-  }
-}
+using ClusteredLightingTest::Check;
 
 /// n frames of the unchanged scene: whether each drew the prepass, and its image.
 struct Frames
@@ -171,5 +163,5 @@ int TestClusteredLightingAutomaticPrepass(int, char*[])
   Check(
     Pattern(frames.Prepass) == std::string(13, 'P') && pass->GetNumberOfDepthPrepassTrials() == 0,
     "AutomaticDepthPrepassOff: the prepass in every frame, no trial");
-  return Status;
+  return ClusteredLightingTest::CheckStatus();
 }

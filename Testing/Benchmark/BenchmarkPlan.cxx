@@ -207,6 +207,23 @@ std::vector<Step> MakePlan(const PlanOptions& options)
         };
         s.Teardown = [n](Context& ctx) { ctx.MakeLights(n, "uniform"); };
         plan.push_back(s);
+        // Still white lights at 65,536, with a reference, with and without the exact far
+        // sums near saturation (FarFieldTolerance 1 turns them off): where the time of
+        // white lights goes (docs/far-field.md).
+        for (double tolerance : { 2.0 / 255.0, 1.0 })
+        {
+          if (n > 16384)
+          {
+            Step still = s;
+            still.AnimateLights = false;
+            still.Reference = true;
+            still.Frames = 2;
+            still.Value = tolerance < 1.0 ? "white" : "white far tolerance 1";
+            still.Apply = [tolerance](vtkClusteredLightingPass* p)
+            { p->SetFarFieldTolerance(tolerance); };
+            plan.push_back(still);
+          }
+        }
       }
     }
     if (main && !quick && options.LargestLights > 0)

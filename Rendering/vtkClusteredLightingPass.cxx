@@ -463,7 +463,11 @@ void vtkClusteredLightingPass::Render(const vtkRenderState* s)
     glFinish(); // earlier GL work is not this frame's
     start = std::chrono::steady_clock::now();
   }
-  const bool prepassed = eligible && frame.Prepass && this->RenderDepthPrepass(s, rw, inputs);
+  const bool prepassed = eligible && frame.Prepass;
+  if (prepassed)
+  {
+    this->RenderDepthPrepass(s, rw, inputs);
+  }
   const vtkClusteredLightingAssignment& result = assigner->Update(rw, inputs);
   this->Internals->Depths = vtkClusteredLighting::DepthImage();
   this->ReportAssignment(result);
@@ -542,10 +546,10 @@ std::uint64_t vtkClusteredLightingPass::MakePrepassSignature(
 }
 
 //------------------------------------------------------------------------------
-// The depth prepass: when the options ask for it and the render has clustered lights to
-// shade (not in a selection render). With depth-aware clusters it also reads the depth
-// back for the assigner.
-bool vtkClusteredLightingPass::RenderDepthPrepass(
+// The depth prepass, for a frame that draws it (UsesDepthPrepass, and the chooser with
+// AutomaticDepthPrepass). With depth-aware clusters it also reads the depth back for the
+// assigner.
+void vtkClusteredLightingPass::RenderDepthPrepass(
   const vtkRenderState* s, vtkOpenGLRenderWindow* rw, vtkClusteredLightingAssignerInputs& inputs)
 {
   vtkRenderer* ren = s->GetRenderer();
@@ -594,7 +598,6 @@ bool vtkClusteredLightingPass::RenderDepthPrepass(
     }
   }
   this->LastDepthPrepassTime = prepass->GetRenderTime();
-  return true;
 }
 
 //------------------------------------------------------------------------------

@@ -767,7 +767,7 @@ private:
     const vtkRenderState* s, const vtkClusteredLightingLightCollection& lights) const;
   std::uint64_t MakePrepassSignature(
     const vtkRenderState* s, const vtkClusteredLightingLightCollection& lights);
-  bool RenderDepthPrepass(
+  void RenderDepthPrepass(
     const vtkRenderState* s, vtkOpenGLRenderWindow* rw, vtkClusteredLightingAssignerInputs& inputs);
   void SetPixelCounts(const vtkRenderState* s, vtkOpenGLRenderWindow* rw);
 

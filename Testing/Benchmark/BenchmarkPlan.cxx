@@ -258,17 +258,25 @@ std::vector<Step> MakePlan(const PlanOptions& options)
     // uniform lights, on every scene: their gain depends on the scene's depth complexity.
     // Both off at 64 and 1,024 lights too: the prepass costs a geometry pass whatever the
     // lights, and with few lights per pixel it saves less than that (docs/depth.md).
+    const auto turnBothOff = [](vtkClusteredLightingPass* p)
+    {
+      p->SetDepthPrepass(false);
+      p->SetDepthAwareClusters(false);
+    };
+    // The prepass chosen by timing: its trial runs in the warm-up frames (3 settle frames,
+    // 4 with the prepass, 4 without), so the timed frames show the choice it made.
+    const auto makeAutomatic = [](Step& step)
+    {
+      step.Warmup = 12;
+      step.Apply = [](vtkClusteredLightingPass* p) { p->SetAutomaticDepthPrepass(true); };
+    };
     auto bothOff = [&](int lights)
     {
       Step off = base;
       off.Lights = lights;
       off.Sweep = "depth";
       off.Value = "prepass and depth-aware off";
-      off.Apply = [](vtkClusteredLightingPass* p)
-      {
-        p->SetDepthPrepass(false);
-        p->SetDepthAwareClusters(false);
-      };
+      off.Apply = turnBothOff;
       plan.push_back(off);
     };
     if (!quick)
@@ -278,17 +286,14 @@ std::vector<Step> MakePlan(const PlanOptions& options)
         bothOff(n);
       }
     }
-    // The prepass chosen by timing (AutomaticDepthPrepass, off in every other row): its
-    // trial runs in the warm-up frames (3 settle frames, 4 with the prepass, 4 without),
-    // so the timed frames show the choice it made.
+    // The prepass chosen by timing (AutomaticDepthPrepass, off in every other row).
     auto automatic = [&](int lights)
     {
       Step a = base;
       a.Lights = lights;
       a.Sweep = "depth";
       a.Value = "automatic";
-      a.Warmup = 12;
-      a.Apply = [](vtkClusteredLightingPass* p) { p->SetAutomaticDepthPrepass(true); };
+      makeAutomatic(a);
       plan.push_back(a);
     };
     for (int n :
@@ -316,16 +321,11 @@ std::vector<Step> MakePlan(const PlanOptions& options)
           const std::string v = variant;
           if (v == " both off")
           {
-            m.Apply = [](vtkClusteredLightingPass* p)
-            {
-              p->SetDepthPrepass(false);
-              p->SetDepthAwareClusters(false);
-            };
+            m.Apply = turnBothOff;
           }
           else if (v == " automatic")
           {
-            m.Warmup = 12;
-            m.Apply = [](vtkClusteredLightingPass* p) { p->SetAutomaticDepthPrepass(true); };
+            makeAutomatic(m);
           }
           plan.push_back(m);
         }

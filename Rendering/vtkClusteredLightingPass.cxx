@@ -262,6 +262,7 @@ struct vtkClusteredLightingPass::vtkInternals
   std::set<std::size_t> BuiltSources; ///< hashes of the shader sources built (NumberOfShaderBuilds)
   vtkClusteredLighting::DepthImage Depths; ///< the prepass's readback, during Render()
   std::string ReportedDepthProblem;        ///< why depth-aware clusters are off, said once
+  bool ReportedLoopLimit = false;          ///< the llvmpipe loop limit was reported
 
   vtkClusteredLightingAssigner* GetAssigner(vtkRenderer* ren)
   {
@@ -471,6 +472,7 @@ void vtkClusteredLightingPass::Render(const vtkRenderState* s)
   const vtkClusteredLightingAssignment& result = assigner->Update(rw, inputs);
   this->Internals->Depths = vtkClusteredLighting::DepthImage();
   this->ReportAssignment(result);
+  this->ReportLoopLimit(result);
 
   // 3. Shading, on the prepass's depth buffer when there is one (the camera pass then
   // clears colour only).
@@ -652,6 +654,32 @@ vtkClusteredLightingAssignerInputs vtkClusteredLightingPass::MakeAssignerInputs(
   in.MaximumTextureSize = this->MaximumTextureSize;
   in.MeasureTimings = this->MeasureTimings;
   return in;
+}
+
+//------------------------------------------------------------------------------
+// Mesa's llvmpipe ends a fragment shader after 65,535 loop iterations in all. The loops
+// over every light (brute force, the exact far sums) take 16 lights per iteration, so
+// they reach about a million lights there; past that, say so once (docs/guide.md).
+void vtkClusteredLightingPass::ReportLoopLimit(const vtkClusteredLightingAssignment& r)
+{
+  constexpr int loopLimitLights = 16 * 65535;
+  const bool everyLight = this->ShadingMode == SHADING_BRUTE_FORCE || r.FarField;
+  if (this->Internals->ReportedLoopLimit || !r.Enabled || !everyLight ||
+    r.NumberOfLights <= loopLimitLights - 65536)
+  {
+    return;
+  }
+  const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  if (renderer && std::string(renderer).find("llvmpipe") != std::string::npos)
+  {
+    vtkWarningMacro(<< r.NumberOfLights
+                    << " lights: llvmpipe ends a shader after 65,535 loop iterations, so "
+                    << (this->ShadingMode == SHADING_BRUTE_FORCE ? "brute force"
+                                                                 : "the exact far sums")
+                    << " (16 lights per iteration) may leave out lights past about "
+                    << loopLimitLights - 65536 << ". Use fewer lights, or a GPU driver.");
+    this->Internals->ReportedLoopLimit = true;
+  }
 }
 
 //------------------------------------------------------------------------------

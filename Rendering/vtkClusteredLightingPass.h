@@ -457,10 +457,10 @@ public:
     DEBUG_NONE = 0,
     DEBUG_CLUSTER_INDEX = 1, ///< (tile x, tile y, slice) / (X-1, Y-1, Z-1) as RGB
     DEBUG_HEAT_MAP = 2,      ///< lights evaluated per pixel, colour map up to GetHeatMapScale
-    /// lights evaluated (R + 256 G), lights reaching (B, saturates), both up to where a
-    /// saturated fragment stops (class description)
+    /// lights evaluated (R + 256 G, saturates at 65,535), lights reaching (B, saturates at
+    /// 255), both up to where a saturated fragment stops (class description)
     DEBUG_EVALUATED_COUNT = 3,
-    DEBUG_REACHED_COUNT = 4, ///< lights that reach the fragment (R + 256 G)
+    DEBUG_REACHED_COUNT = 4, ///< lights that reach the fragment (R + 256 G, up to 65,535)
     DEBUG_NON_FINITE = 5,    ///< red where the lit colour is NaN or Inf
     DEBUG_NORMAL = 6         ///< the shading normal (view coordinates) as 0.5 + 0.5 N
   };
@@ -770,6 +770,7 @@ private:
   void RenderDepthPrepass(
     const vtkRenderState* s, vtkOpenGLRenderWindow* rw, vtkClusteredLightingAssignerInputs& inputs);
   void SetPixelCounts(const vtkRenderState* s, vtkOpenGLRenderWindow* rw);
+  void ReportLoopLimit(const vtkClusteredLightingAssignment& r);
 
   // Test hook (Testing/Cxx/vtkClusteredLightingInspector.h): the assigners of the renderers.
   friend class vtkClusteredLightingInspector;

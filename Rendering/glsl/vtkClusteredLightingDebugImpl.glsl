@@ -8,10 +8,12 @@
   gl_FragData[0] = vec4(clHeatColor(float(clEvaluated) / clHeatMapMaximum), 1.0);
 //CL_ENDIF
 //CL_IF(EVALUATED_COUNT)
-  // exact counts for measurements: evaluated lights in red+green (16 bits), lights that
-  // really reach the fragment (distance < radius, inside the cone) in blue (saturates),
+  // exact counts for measurements: evaluated lights in red+green (16 bits, saturating at
+  // 65,535: the exact far sums and brute force can evaluate more), lights that really
+  // reach the fragment (distance < radius, inside the cone) in blue (saturates at 255),
   // both up to where a saturated fragment stops (REACHED_COUNT counts every light)
-  gl_FragData[0] = vec4(float(clEvaluated & 255) / 255.0, float((clEvaluated >> 8) & 255) / 255.0,
+  int clShown = min(clEvaluated, 65535);
+  gl_FragData[0] = vec4(float(clShown & 255) / 255.0, float((clShown >> 8) & 255) / 255.0,
     float(min(clReached, 255)) / 255.0, 1.0);
 //CL_ENDIF
 //CL_IF(NON_FINITE)
@@ -19,8 +21,9 @@
   gl_FragData[0] = vec4(any(isnan(gl_FragData[0])) || any(isinf(gl_FragData[0])) ? 1.0 : 0.0, 0.0, 0.0, 1.0);
 //CL_ENDIF
 //CL_IF(REACHED_COUNT)
-  // exact count of lights that reach the fragment, red+green (16 bits)
-  gl_FragData[0] = vec4(float(clReached & 255) / 255.0, float((clReached >> 8) & 255) / 255.0, 0.0, 1.0);
+  // exact count of lights that reach the fragment, red+green (16 bits, saturating at 65,535)
+  int clShown = min(clReached, 65535);
+  gl_FragData[0] = vec4(float(clShown & 255) / 255.0, float((clShown >> 8) & 255) / 255.0, 0.0, 1.0);
 //CL_ENDIF
 //CL_IF(NORMAL)
   // the shading normal in view coordinates (flipped towards the viewer), 0.5 + 0.5 N

@@ -280,3 +280,101 @@ bool clShadeLight(int i, vec3 P, vec3 N, vec3 V, float NdV, vec3 albedo, float r
   return true;
 }
 //CL_ENDIF
+
+// The loops over lights. Mesa's llvmpipe ends a fragment shader after 65,535 loop
+// iterations in all (one counter shared by every loop of the shader), silently, so the
+// loops take several lights per iteration: 4 in a cluster's walk, 16 in brute force and
+// in the exact far sums (docs/guide.md, "Limits"). Each light is visited with one call:
+// the fragment's inputs and sums are globals, set where the shading code begins.
+vec3 clP;      // position VC
+vec3 clNormal; // unit normal VC
+vec3 clView;   // unit vector to the camera VC
+//CL_IF(PHONG)
+float clPower; // specular power
+vec3 clDiffuse;
+vec3 clSpecular;
+//CL_ENDIF
+//CL_IF(PBR)
+float clNdV, clRoughness, clMetallic;
+vec3 clAlbedo, clF0, clF90;
+vec3 clLo;
+//CL_ENDIF
+//CL_IF(COUNT)
+int clEvaluated; // lights evaluated (near and far parts), for the debug counts
+int clReached;   // lights that reach the fragment
+//CL_ENDIF
+//CL_IF(FAR_FIELD)
+int clFirst; // the first light walked: where the exact far sums start
+//CL_ENDIF
+
+// Shades light i (near part) at the fragment and counts it.
+void clVisitLight(int i)
+{
+//CL_IF(PHONG)
+  bool hit = clShadeLight(i, clP, clNormal, clView, clPower, clDiffuse, clSpecular);
+//CL_ENDIF
+//CL_IF(PBR)
+  bool hit = clShadeLight(
+    i, clP, clNormal, clView, clNdV, clAlbedo, clRoughness, clMetallic, clF0, clF90, clLo);
+//CL_ENDIF
+//CL_IF(COUNT)
+  ++clEvaluated;
+  clReached += hit ? 1 : 0;
+//CL_ENDIF
+//CL_IF(FAR_FIELD)
+  clFirst = clFirst < 0 ? i : clFirst;
+//CL_ENDIF
+}
+//CL_IF(CLUSTERED)
+
+// Visits the lowest light left in a list texel's bits (light base + bit), if any.
+void clVisitNextBit(int base, inout uint bits)
+{
+  if (bits != 0u)
+  {
+    int i = base + clFindLSB(bits);
+    bits &= bits - 1u;
+    clVisitLight(i);
+  }
+}
+//CL_ENDIF
+//CL_IF(BRUTE_FORCE)
+
+// Visits light i if there is one.
+void clVisitIfLight(int i)
+{
+  if (i < clLightCount)
+  {
+    clVisitLight(i);
+  }
+}
+//CL_ENDIF
+//CL_IF(FAR_FIELD)
+
+// Adds the far part of the light k places after `start` (wrapping around) to the sums.
+void clAddFarPart(int k, int start, inout vec3 diffuse, inout vec3 specular)
+{
+  if (k < clLightCount)
+  {
+    int i = start + k;
+    i -= i >= clLightCount ? clLightCount : 0;
+    vec3 L;
+    float att;
+    vec3 color;
+    if (clFarLight(i, clP, L, att, color))
+    {
+      float df = max(0.0, att * dot(clNormal, -L));
+      diffuse += df * color;
+//CL_IF(PHONG)
+//CL_IF(SPECULAR)
+      float rv = max(0.0, dot(reflect(L, clNormal), clView));
+      specular += sign(df) * att * (rv > 0.0 ? pow(rv, clPower) : 0.0) * color;
+//CL_ENDIF
+//CL_ENDIF
+    }
+//CL_IF(COUNT)
+    ++clEvaluated;
+//CL_ENDIF
+  }
+}
+//CL_ENDIF

@@ -2,16 +2,31 @@
   // Clustered lighting, injected after VTK's own lighting (Phong: //VTK::Light::Impl) or
   // before "color += Lo;" (PBR). Walks the master bits of the fragment's cluster, then
   // the list bits of each non-empty batch, and shades only those lights.
+  clP = vertexVC.xyz;
 //CL_IF(PHONG)
-  vec3 clDiffuse = vec3(0.0);
-  vec3 clSpecular = vec3(0.0);
+  clNormal = normalVCVSOutput;
+  clView = normalize(-vertexVC.xyz);
+  clPower = specularPower;
+  clDiffuse = vec3(0.0);
+  clSpecular = vec3(0.0);
 //CL_ENDIF
 //CL_IF(PBR)
-  vec3 clLo = vec3(0.0);
+  clNormal = N;
+  clView = V;
+  clNdV = NdV;
+  clAlbedo = albedo;
+  clRoughness = roughness;
+  clMetallic = metallic;
+  clF0 = F0;
+  clF90 = F90;
+  clLo = vec3(0.0);
 //CL_ENDIF
 //CL_IF(COUNT)
-  int clEvaluated = 0;
-  int clReached = 0;
+  clEvaluated = 0;
+  clReached = 0;
+//CL_ENDIF
+//CL_IF(FAR_FIELD)
+  clFirst = -1;
 //CL_ENDIF
 //CL_IF(FAR_FIELD)
   // The far field: the moments at the fragment (trilinear), then the diffuse kernel in
@@ -81,57 +96,53 @@
   clBase += clDiffuseLow * diffuseColor + clSpecularLow * specularColor;
 //CL_ENDIF
 //CL_ENDIF
-//CL_IF(FAR_FIELD)
-  int clFirst = -1; // the first near light walked: where the exact far sum starts
-//CL_ENDIF
 //CL_IF(CLUSTERED)
   ivec3 clCluster = clComputeCluster(vertexVC);
-  for (int clM = 0; clM < clMasterTexels; ++clM)
+  bool clSaturated = false;
+  for (int clM = 0; clM < clMasterTexels && !clSaturated; ++clM)
   {
     uint clMask = texelFetch(clMaster, clMasterTexel(clCluster, clM), 0).r;
-    while (clMask != 0u)
+    while (clMask != 0u && !clSaturated)
     {
       int clB = 32 * clM + clFindLSB(clMask);
       clMask &= clMask - 1u;
       uint clBits = texelFetch(clList, clListTexel(clCluster, clB), 0).r;
-      while (clBits != 0u)
+      while (clBits != 0u && !clSaturated) // 4 lights per iteration (see the Dec)
       {
-        int clLight = 32 * clB + clFindLSB(clBits);
-        clBits &= clBits - 1u;
-//CL_ENDIF
-//CL_IF(BRUTE_FORCE)
-  for (int clLight = 0; clLight < clLightCount; ++clLight)
-  {
-    {
-      {
-//CL_ENDIF
-//CL_IF(PHONG)
-        bool clHit = clShadeLight(clLight, vertexVC.xyz, normalVCVSOutput,
-          normalize(-vertexVC.xyz), specularPower, clDiffuse, clSpecular);
-//CL_ENDIF
-//CL_IF(PBR)
-        bool clHit = clShadeLight(
-          clLight, vertexVC.xyz, N, V, NdV, albedo, roughness, metallic, F0, F90, clLo);
-//CL_ENDIF
-//CL_IF(COUNT)
-        ++clEvaluated;
-        clReached += clHit ? 1 : 0;
-//CL_ENDIF
-//CL_IF(FAR_FIELD)
-        clFirst = clFirst < 0 ? clLight : clFirst;
-//CL_ENDIF
+        clVisitNextBit(32 * clB, clBits);
+        clVisitNextBit(32 * clB, clBits);
+        clVisitNextBit(32 * clB, clBits);
+        clVisitNextBit(32 * clB, clBits);
 //CL_IF(SATURATION)
-        if (clClampsAtOne && all(greaterThanEqual(
-              clBase + clDiffuse * diffuseColor + clSpecular * specularColor, vec3(1.0))))
-        {
-          clM = clMasterTexels; // leave all three loops
-          clMask = 0u;
-          break;
-        }
+        clSaturated = clClampsAtOne &&
+          all(greaterThanEqual(clBase + clDiffuse * diffuseColor + clSpecular * specularColor,
+            vec3(1.0)));
 //CL_ENDIF
       }
     }
   }
+//CL_ENDIF
+//CL_IF(BRUTE_FORCE)
+  for (int clGroup = 0; clGroup < clLightCount; clGroup += 16) // 16 lights per iteration
+  {
+    clVisitIfLight(clGroup);
+    clVisitIfLight(clGroup + 1);
+    clVisitIfLight(clGroup + 2);
+    clVisitIfLight(clGroup + 3);
+    clVisitIfLight(clGroup + 4);
+    clVisitIfLight(clGroup + 5);
+    clVisitIfLight(clGroup + 6);
+    clVisitIfLight(clGroup + 7);
+    clVisitIfLight(clGroup + 8);
+    clVisitIfLight(clGroup + 9);
+    clVisitIfLight(clGroup + 10);
+    clVisitIfLight(clGroup + 11);
+    clVisitIfLight(clGroup + 12);
+    clVisitIfLight(clGroup + 13);
+    clVisitIfLight(clGroup + 14);
+    clVisitIfLight(clGroup + 15);
+  }
+//CL_ENDIF
 //CL_IF(FAR_FIELD)
   {
 //CL_IF(PHONG)
@@ -169,36 +180,33 @@
       clFarSpecular = vec3(0.0);
       // Lights are stored in Morton order: from a near light of the fragment on, the
       // nearest (brightest) far parts come first, and a saturating sum stops sooner.
-      int clI = max(clFirst, 0);
-      for (int clK = 0; clK < clLightCount; ++clK, clI = clI + 1 < clLightCount ? clI + 1 : 0)
+      // 16 lights per iteration (see the Dec).
+      int clStart = max(clFirst, 0);
+      bool clStop = false;
+      for (int clK = 0; clK < clLightCount && !clStop; clK += 16)
       {
-        vec3 clL;
-        float clAtt;
-        vec3 clColor;
-        if (clFarLight(clI, vertexVC.xyz, clL, clAtt, clColor))
-        {
-          float clDf = max(0.0, clAtt * dot(clN, -clL));
-          clFarDiffuse += clDf * clColor;
-//CL_IF(PHONG)
-//CL_IF(SPECULAR)
-          float clRv = max(0.0, dot(reflect(clL, clN), clV));
-          clFarSpecular +=
-            sign(clDf) * clAtt * (clRv > 0.0 ? pow(clRv, specularPower) : 0.0) * clColor;
-//CL_ENDIF
-//CL_ENDIF
-        }
-//CL_IF(COUNT)
-        ++clEvaluated;
-//CL_ENDIF
+        clAddFarPart(clK, clStart, clFarDiffuse, clFarSpecular);
+        clAddFarPart(clK + 1, clStart, clFarDiffuse, clFarSpecular);
+        clAddFarPart(clK + 2, clStart, clFarDiffuse, clFarSpecular);
+        clAddFarPart(clK + 3, clStart, clFarDiffuse, clFarSpecular);
+        clAddFarPart(clK + 4, clStart, clFarDiffuse, clFarSpecular);
+        clAddFarPart(clK + 5, clStart, clFarDiffuse, clFarSpecular);
+        clAddFarPart(clK + 6, clStart, clFarDiffuse, clFarSpecular);
+        clAddFarPart(clK + 7, clStart, clFarDiffuse, clFarSpecular);
+        clAddFarPart(clK + 8, clStart, clFarDiffuse, clFarSpecular);
+        clAddFarPart(clK + 9, clStart, clFarDiffuse, clFarSpecular);
+        clAddFarPart(clK + 10, clStart, clFarDiffuse, clFarSpecular);
+        clAddFarPart(clK + 11, clStart, clFarDiffuse, clFarSpecular);
+        clAddFarPart(clK + 12, clStart, clFarDiffuse, clFarSpecular);
+        clAddFarPart(clK + 13, clStart, clFarDiffuse, clFarSpecular);
+        clAddFarPart(clK + 14, clStart, clFarDiffuse, clFarSpecular);
+        clAddFarPart(clK + 15, clStart, clFarDiffuse, clFarSpecular);
 //CL_IF(SATURATION)
         // Every far part adds light too, so the near sum plus the far parts so far is a
         // lower bound: once it saturates every channel, the rest cannot change the pixel.
-        if (clClampsAtOne &&
+        clStop = clClampsAtOne &&
           all(greaterThanEqual(
-            clNearSum + clFarDiffuse * diffuseColor + clFarSpecular * specularColor, vec3(1.0))))
-        {
-          break;
-        }
+            clNearSum + clFarDiffuse * diffuseColor + clFarSpecular * specularColor, vec3(1.0)));
 //CL_ENDIF
       }
     }

@@ -722,6 +722,11 @@ void vtkClusteredLightingAssigner::Assign(
   r.AssignmentTime += r.DepthBoundsTime; // the CPU part of depth-aware clusters
   r.NumberOfQuads = data.NumberOfQuads;
   const ClusterGridParams& g = inputs.View.Grid;
+  // For the shader loop limit of llvmpipe (vtkClusteredLightingPass::ReportLoopLimit):
+  // up to 100,000 lights no walk comes near it.
+  r.MostLightsInACluster = inputs.Clustered && r.NumberOfLights > 100000
+    ? ComputeMostLightsInACluster(data.Quads, g.TilesX, g.TilesY, g.Slices)
+    : r.NumberOfLights;
   const double clusters = this->DepthBounds.Valid
     ? static_cast<double>(std::max<std::size_t>(this->DepthBounds.NonEmptyClusters, 1))
     : static_cast<double>(g.TilesX) * static_cast<double>(g.TilesY) * static_cast<double>(g.Slices);

@@ -657,27 +657,43 @@ vtkClusteredLightingAssignerInputs vtkClusteredLightingPass::MakeAssignerInputs(
 }
 
 //------------------------------------------------------------------------------
-// Mesa's llvmpipe ends a fragment shader after 65,535 loop iterations in all. The loops
-// over every light (brute force, the exact far sums) take 16 lights per iteration, so
-// they reach about a million lights there; past that, say so once (docs/guide.md).
+// Mesa's llvmpipe ends a fragment shader after 65,535 loop iterations in all, silently.
+// The shader's loops take several lights per iteration (4 in a walk, 16 over every
+// light); where a fragment could still need more iterations (a cluster that lists about
+// 200,000 lights, brute force or the exact far sums past about a million), say so once
+// while it lasts (docs/guide.md, "Limits").
 void vtkClusteredLightingPass::ReportLoopLimit(const vtkClusteredLightingAssignment& r)
 {
-  constexpr int loopLimitLights = 16 * 65535;
-  const bool everyLight = this->ShadingMode == SHADING_BRUTE_FORCE || r.FarField;
-  if (this->Internals->ReportedLoopLimit || !r.Enabled || !everyLight ||
-    r.NumberOfLights <= loopLimitLights - 65536)
+  using namespace vtkClusteredLighting;
+  long long iterations = 0;
+  std::ostringstream what;
+  if (r.Enabled && this->ShadingMode == SHADING_BRUTE_FORCE)
   {
+    iterations = ComputeEveryLightIterations(r.NumberOfLights);
+    what << "brute force, 16 lights per iteration";
+  }
+  else if (r.Enabled && r.Clustered)
+  {
+    iterations = ComputeWalkIterations(r.MostLightsInACluster, r.NumberOfLights, r.MasterTexels) +
+      (r.FarField ? ComputeEveryLightIterations(r.NumberOfLights) : 0);
+    what << "a cluster lists up to " << r.MostLightsInACluster << " lights, walked 4 per iteration"
+         << (r.FarField ? ", and the exact far sums take 16 per iteration" : "");
+  }
+  if (iterations <= ShaderLoopLimit)
+  {
+    this->Internals->ReportedLoopLimit = false;
     return;
   }
   const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-  if (renderer && std::string(renderer).find("llvmpipe") != std::string::npos)
+  if (!this->Internals->ReportedLoopLimit && renderer &&
+    std::string(renderer).find("llvmpipe") != std::string::npos)
   {
     vtkWarningMacro(<< r.NumberOfLights
-                    << " lights: llvmpipe ends a shader after 65,535 loop iterations, so "
-                    << (this->ShadingMode == SHADING_BRUTE_FORCE ? "brute force"
-                                                                 : "the exact far sums")
-                    << " (16 lights per iteration) may leave out lights past about "
-                    << loopLimitLights - 65536 << ". Use fewer lights, or a GPU driver.");
+                    << " lights: llvmpipe ends a fragment shader after 65,535 loop iterations, "
+                       "and a fragment here can need up to "
+                    << iterations << " (" << what.str()
+                    << "), so some lights may be left out. Use fewer or shorter-ranged "
+                       "lights, or a GPU driver.");
     this->Internals->ReportedLoopLimit = true;
   }
 }

@@ -231,6 +231,82 @@ inline void AppendViewData(ViewData& out, const ViewData& part)
   out.ClusterCoverage += part.ClusterCoverage;
 }
 
+/**
+ * The most lights one cluster's list can hold after this view's list pass: the largest
+ * number of quads of one slice whose tile rectangles share a tile (the list pass's
+ * per-cluster culling only removes lights from that). A difference array per slice over
+ * the tiles, then its prefix sums: O(quads + tiles x slices).
+ */
+inline int ComputeMostLightsInACluster(
+  const std::vector<float>& quads, int tilesX, int tilesY, int slices)
+{
+  if (tilesX <= 0 || tilesY <= 0 || slices <= 0)
+  {
+    return 0;
+  }
+  const std::size_t w = static_cast<std::size_t>(tilesX) + 1;
+  const std::size_t plane = w * (static_cast<std::size_t>(tilesY) + 1);
+  std::vector<int> diff(plane * static_cast<std::size_t>(slices), 0);
+  for (std::size_t q = 0; q + FloatsPerQuad <= quads.size(); q += FloatsPerQuad)
+  {
+    const int x0 = std::max(0, static_cast<int>(quads[q]));
+    const int y0 = std::max(0, static_cast<int>(quads[q + 1]));
+    const int x1 = std::min(tilesX - 1, static_cast<int>(quads[q + 2]));
+    const int y1 = std::min(tilesY - 1, static_cast<int>(quads[q + 3]));
+    const int s = static_cast<int>(quads[q + 4]);
+    if (s < 0 || s >= slices || x0 > x1 || y0 > y1)
+    {
+      continue;
+    }
+    int* d = &diff[plane * static_cast<std::size_t>(s)];
+    d[y0 * w + x0] += 1;
+    d[y0 * w + x1 + 1] -= 1;
+    d[(y1 + 1) * w + x0] -= 1;
+    d[(y1 + 1) * w + x1 + 1] += 1;
+  }
+  int most = 0;
+  for (int s = 0; s < slices; ++s)
+  {
+    int* d = &diff[plane * static_cast<std::size_t>(s)];
+    for (int y = 0; y < tilesY; ++y)
+    {
+      for (int x = 0; x < tilesX; ++x)
+      {
+        const std::size_t i = y * w + x;
+        d[i] +=
+          (x > 0 ? d[i - 1] : 0) + (y > 0 ? d[i - w] : 0) - (x > 0 && y > 0 ? d[i - w - 1] : 0);
+        most = std::max(most, d[i]);
+      }
+    }
+  }
+  return most;
+}
+
+/**
+ * Mesa's llvmpipe ends a fragment shader after ShaderLoopLimit loop iterations in all (one
+ * counter shared by every loop; GPU drivers have none). ComputeWalkIterations bounds the
+ * iterations of a cluster's walk (vtkClusteredLightingShadingImpl.glsl) that lists `listed`
+ * of `lights` lights: one per master texel, one per non-empty batch of 32 (at most
+ * min(listed, batches)), and one per 4 lights of a batch, rounded up per batch; plus one
+ * per loop entered, in case the driver counts the exit too. ComputeEveryLightIterations
+ * is the loop over every light (brute force, the exact far sums), 16 lights per
+ * iteration.
+ */
+constexpr long long ShaderLoopLimit = 65535;
+
+inline long long ComputeWalkIterations(long long listed, long long lights, int masterTexels)
+{
+  const long long n = std::max(listed, 0LL);
+  const long long batches = std::min(n, (std::max(lights, 0LL) + 31) / 32);
+  const long long master = std::max(masterTexels, 0);
+  return 2 * master + 2 * batches + (n + 3 * batches + 3) / 4;
+}
+
+inline long long ComputeEveryLightIterations(long long lights)
+{
+  return (std::max(lights, 0LL) + 15) / 16;
+}
+
 /// ComputeViewDataRange over every light, in one thread.
 inline ViewData ComputeViewData(const std::vector<PreparedLight>& lights, const ViewParameters& v,
   const ClusterDepthBounds* depths = nullptr)

@@ -14,8 +14,9 @@
 //    65,535/100,000 of it (59 steps off), clustered 66 steps off;
 //  - the evaluated-lights count (DEBUG_EVALUATED_COUNT) saturates at 65,535; its 16-bit
 //    encoding wrapped past that;
-//  - no message below the limit; past it (a million lights in brute force) one warning
-//    on llvmpipe that names the limit, none on other drivers.
+//  - no message below the limit; past it one warning on llvmpipe that names the limit,
+//    none on other drivers: 1,100,000 lights in brute force, and 250,000 lights that
+//    every cluster lists.
 #include "ClusteredLightingGLTestUtilities.h"
 #include "ClusteredLightingTestUtilities.h"
 
@@ -111,9 +112,9 @@ int TestClusteredLightingLoopLimit(int, char*[])
     "no message below the limit (" + std::to_string(messages->Warnings.size()) + " warnings)");
 
   // Past what 65,535 iterations of 16 lights reach, brute force on llvmpipe says so, once
-  // (a 16x12 window: a million lights per pixel).
+  // (a 16x12 window: 1,100,000 lights per pixel, 68,750 iterations of 16).
   renWin->SetSize(16, 12);
-  MakeColocatedLights(lights, 1000000, 0.7, false);
+  MakeColocatedLights(lights, 1100000, 0.7, false);
   pass->SetShadingMode(vtkClusteredLightingPass::SHADING_BRUTE_FORCE);
   renWin->Render();
   renWin->Render();
@@ -121,15 +122,37 @@ int TestClusteredLightingLoopLimit(int, char*[])
   if (renderer.find("llvmpipe") != std::string::npos)
   {
     const bool named = messages->Warnings.size() == 1 &&
-      messages->Warnings[0].find("1000000 lights: llvmpipe ends a shader after 65,535") !=
+      messages->Warnings[0].find("1100000 lights: llvmpipe ends a fragment shader after 65,535") !=
         std::string::npos;
     std::printf(
       "%s\n", messages->Warnings.empty() ? "(no warning)" : messages->Warnings[0].c_str());
-    Check(named, "a million lights in brute force on llvmpipe: one warning naming the limit");
+    Check(named, "1,100,000 lights in brute force on llvmpipe: one warning naming the limit");
   }
   else
   {
     Check(messages->Warnings.empty(), "no loop-limit warning on " + renderer);
+  }
+
+  // A walk past the limit: 250,000 lights that every cluster lists (a new pass: the first
+  // one reports the limit once while it lasts).
+  vtkNew<vtkClusteredLightingPass> walkPass;
+  walkPass->AddLightSet(lights);
+  walkPass->SetTilesX(4);
+  walkPass->SetTilesY(3);
+  walkPass->SetSlices(4);
+  walkPass->SetContributionCutoff(1e-9);
+  messages->Clear();
+  messages->Watch(walkPass);
+  ren->SetPass(walkPass);
+  MakeColocatedLights(lights, 250000, 0.7, true);
+  renWin->Render();
+  if (renderer.find("llvmpipe") != std::string::npos)
+  {
+    const bool named = messages->Warnings.size() == 1 &&
+      messages->Warnings[0].find("a cluster lists up to 250000 lights") != std::string::npos;
+    std::printf(
+      "%s\n", messages->Warnings.empty() ? "(no warning)" : messages->Warnings[0].c_str());
+    Check(named, "250,000 lights in every cluster on llvmpipe: one warning naming the walk");
   }
   return CheckStatus();
 }

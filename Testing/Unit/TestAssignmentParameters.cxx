@@ -6,7 +6,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <random>
+#include <vector>
 
 using namespace vtkClusteredLighting;
 
@@ -113,4 +116,83 @@ TEST(ShadingParameters, GridProjectionAndSlicingAreTheAssignmentsOwn)
   }
   // Brute force has no layout: the batch rows stay a valid divisor.
   EXPECT_EQ(ComputeShadingParameters(v, ClusterTextureLayout()).Grid[3], 1);
+}
+
+// The most lights in one cluster, from the list pass's quads: against counting every
+// cluster directly, for random quads on a small grid.
+TEST(ShaderLoopLimit, MostLightsInAClusterCountsTheQuadsOverEachCluster)
+{
+  const int tilesX = 7, tilesY = 5, slices = 3;
+  EXPECT_EQ(ComputeMostLightsInACluster({}, tilesX, tilesY, slices), 0);
+  std::mt19937 rng(5);
+  for (int round = 0; round < 50; ++round)
+  {
+    std::vector<float> quads;
+    std::vector<int> count(static_cast<std::size_t>(tilesX * tilesY * slices), 0);
+    const int n = 1 + static_cast<int>(rng() % 60);
+    for (int q = 0; q < n; ++q)
+    {
+      const int x0 = static_cast<int>(rng() % tilesX), y0 = static_cast<int>(rng() % tilesY);
+      const int x1 = x0 + static_cast<int>(rng() % (tilesX - x0));
+      const int y1 = y0 + static_cast<int>(rng() % (tilesY - y0));
+      const int s = static_cast<int>(rng() % slices);
+      const float quad[FloatsPerQuad] = { static_cast<float>(x0), static_cast<float>(y0),
+        static_cast<float>(x1), static_cast<float>(y1), static_cast<float>(s),
+        static_cast<float>(q), 0.0f, 0.0f };
+      quads.insert(quads.end(), quad, quad + FloatsPerQuad);
+      for (int y = y0; y <= y1; ++y)
+      {
+        for (int x = x0; x <= x1; ++x)
+        {
+          ++count[static_cast<std::size_t>((s * tilesY + y) * tilesX + x)];
+        }
+      }
+    }
+    EXPECT_EQ(ComputeMostLightsInACluster(quads, tilesX, tilesY, slices),
+      *std::max_element(count.begin(), count.end()))
+      << "round " << round;
+  }
+}
+
+// The bound of a walk's loop iterations holds for any list: the shader's loops counted
+// for random lists (one iteration per master texel, per non-empty batch, and per 4 lights
+// of a batch), and the numbers the docs give.
+TEST(ShaderLoopLimit, WalkIterationsBoundTheShadersLoops)
+{
+  std::mt19937 rng(9);
+  for (int round = 0; round < 200; ++round)
+  {
+    const long long lights = 1 + static_cast<long long>(rng() % 200000);
+    const long long batches = (lights + 31) / 32;
+    const int master = static_cast<int>((batches + 31) / 32);
+    // A random list: each light with a probability from very sparse to all.
+    const double p = std::pow(10.0, -4.0 * (rng() % 1000) / 1000.0);
+    std::bernoulli_distribution listed(p);
+    std::vector<int> perBatch(static_cast<std::size_t>(batches), 0);
+    long long n = 0;
+    for (long long i = 0; i < lights; ++i)
+    {
+      if (listed(rng))
+      {
+        ++perBatch[static_cast<std::size_t>(i / 32)];
+        ++n;
+      }
+    }
+    long long actual = master;
+    for (int k : perBatch)
+    {
+      actual += k > 0 ? 1 + (k + 3) / 4 : 0;
+    }
+    EXPECT_GE(ComputeWalkIterations(n, lights, master), actual) << lights << " lights, " << n;
+  }
+  // Every light listed: within the limit up to 190,000 lights, past it at 250,000.
+  auto all = [](long long lights)
+  {
+    const long long batches = (lights + 31) / 32;
+    return ComputeWalkIterations(lights, lights, static_cast<int>((batches + 31) / 32));
+  };
+  EXPECT_LE(all(190000), ShaderLoopLimit);
+  EXPECT_GT(all(250000), ShaderLoopLimit);
+  EXPECT_LE(ComputeEveryLightIterations(16 * ShaderLoopLimit), ShaderLoopLimit);
+  EXPECT_GT(ComputeEveryLightIterations(16 * ShaderLoopLimit + 1), ShaderLoopLimit);
 }

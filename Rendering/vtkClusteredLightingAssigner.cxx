@@ -723,8 +723,8 @@ void vtkClusteredLightingAssigner::Assign(
   r.NumberOfQuads = data.NumberOfQuads;
   const ClusterGridParams& g = inputs.View.Grid;
   // For the shader loop limit of llvmpipe (vtkClusteredLightingPass::ReportLoopLimit):
-  // up to 100,000 lights no walk comes near it.
-  r.MostLightsInACluster = inputs.Clustered && r.NumberOfLights > 100000
+  // up to 50,000 lights no walk, with or without the exact far sums, comes near it.
+  r.MostLightsInACluster = inputs.Clustered && r.NumberOfLights > 50000
     ? ComputeMostLightsInACluster(data.Quads, g.TilesX, g.TilesY, g.Slices)
     : r.NumberOfLights;
   const double clusters = this->DepthBounds.Valid

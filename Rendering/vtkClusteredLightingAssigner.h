@@ -134,7 +134,7 @@ struct vtkClusteredLightingAssignment
   int NumberOfAssigned = 0;       ///< lights with at least one list-pass quad
   int NumberOfQuads = 0;
   /// The most lights one cluster's list can hold (ComputeMostLightsInACluster; up to
-  /// 100,000 lights, the number of lights: a bound that needs no count)
+  /// 50,000 lights, the number of lights: a bound that needs no count)
   int MostLightsInACluster = 0;
   int Grid[3] = { 0, 0, 0 }; ///< cluster grid used (smaller than asked when that cannot hold
                              ///< the lights)

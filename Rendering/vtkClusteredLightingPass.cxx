@@ -658,10 +658,10 @@ vtkClusteredLightingAssignerInputs vtkClusteredLightingPass::MakeAssignerInputs(
 
 //------------------------------------------------------------------------------
 // Mesa's llvmpipe ends a fragment shader after 65,535 loop iterations in all, silently.
-// The shader's loops take several lights per iteration (4 in a walk, 16 over every
-// light); where a fragment could still need more iterations (a cluster that lists about
-// 200,000 lights, brute force or the exact far sums past about a million), say so once
-// while it lasts (docs/guide.md, "Limits").
+// A cluster's walk takes one light per iteration, the loops over every light 16; where a
+// fragment could need more iterations (a cluster that lists about 60,000 lights, brute
+// force or the exact far sums past about a million), say so once while it lasts
+// (docs/guide.md, "Limits").
 void vtkClusteredLightingPass::ReportLoopLimit(const vtkClusteredLightingAssignment& r)
 {
   using namespace vtkClusteredLighting;
@@ -676,7 +676,7 @@ void vtkClusteredLightingPass::ReportLoopLimit(const vtkClusteredLightingAssignm
   {
     iterations = ComputeWalkIterations(r.MostLightsInACluster, r.NumberOfLights, r.MasterTexels) +
       (r.FarField ? ComputeEveryLightIterations(r.NumberOfLights) : 0);
-    what << "a cluster lists up to " << r.MostLightsInACluster << " lights, walked 4 per iteration"
+    what << "a cluster lists up to " << r.MostLightsInACluster << " lights, one per iteration"
          << (r.FarField ? ", and the exact far sums take 16 per iteration" : "");
   }
   if (iterations <= ShaderLoopLimit)

@@ -287,10 +287,9 @@ inline int ComputeMostLightsInACluster(
  * counter shared by every loop; GPU drivers have none). ComputeWalkIterations bounds the
  * iterations of a cluster's walk (vtkClusteredLightingShadingImpl.glsl) that lists `listed`
  * of `lights` lights: one per master texel, one per non-empty batch of 32 (at most
- * min(listed, batches)), and one per 4 lights of a batch, rounded up per batch; plus one
- * per loop entered, in case the driver counts the exit too. ComputeEveryLightIterations
- * is the loop over every light (brute force, the exact far sums), 16 lights per
- * iteration.
+ * min(listed, batches)) and one per light; plus one per loop entered, in case the driver
+ * counts the exit too. ComputeEveryLightIterations is the loop over every light (brute
+ * force, the exact far sums), 16 lights per iteration.
  */
 constexpr long long ShaderLoopLimit = 65535;
 
@@ -299,7 +298,7 @@ inline long long ComputeWalkIterations(long long listed, long long lights, int m
   const long long n = std::max(listed, 0LL);
   const long long batches = std::min(n, (std::max(lights, 0LL) + 31) / 32);
   const long long master = std::max(masterTexels, 0);
-  return 2 * master + 2 * batches + (n + 3 * batches + 3) / 4;
+  return 2 * master + 2 * batches + n;
 }
 
 inline long long ComputeEveryLightIterations(long long lights)

@@ -281,78 +281,44 @@ bool clShadeLight(int i, vec3 P, vec3 N, vec3 V, float NdV, vec3 albedo, float r
 }
 //CL_ENDIF
 
-// The loops over lights. Mesa's llvmpipe ends a fragment shader after 65,535 loop
-// iterations in all (one counter shared by every loop of the shader), silently, so the
-// loops take several lights per iteration: 4 in a cluster's walk, 16 in brute force and
-// in the exact far sums (docs/guide.md, "Limits"). Each light is visited with one call:
-// the fragment's inputs and sums are globals, set where the shading code begins.
-vec3 clP;      // position VC
-vec3 clNormal; // unit normal VC
-vec3 clView;   // unit vector to the camera VC
-//CL_IF(PHONG)
-float clPower; // specular power
-vec3 clDiffuse;
-vec3 clSpecular;
-//CL_ENDIF
-//CL_IF(PBR)
-float clNdV, clRoughness, clMetallic;
-vec3 clAlbedo, clF0, clF90;
-vec3 clLo;
-//CL_ENDIF
-//CL_IF(COUNT)
-int clEvaluated; // lights evaluated (near and far parts), for the debug counts
-int clReached;   // lights that reach the fragment
-//CL_ENDIF
-//CL_IF(FAR_FIELD)
-int clFirst; // the first light walked: where the exact far sums start
-//CL_ENDIF
-
-// Shades light i (near part) at the fragment and counts it.
-void clVisitLight(int i)
-{
-//CL_IF(PHONG)
-  bool hit = clShadeLight(i, clP, clNormal, clView, clPower, clDiffuse, clSpecular);
-//CL_ENDIF
-//CL_IF(PBR)
-  bool hit = clShadeLight(
-    i, clP, clNormal, clView, clNdV, clAlbedo, clRoughness, clMetallic, clF0, clF90, clLo);
-//CL_ENDIF
-//CL_IF(COUNT)
-  ++clEvaluated;
-  clReached += hit ? 1 : 0;
-//CL_ENDIF
-//CL_IF(FAR_FIELD)
-  clFirst = clFirst < 0 ? i : clFirst;
-//CL_ENDIF
-}
-//CL_IF(CLUSTERED)
-
-// Visits the lowest light left in a list texel's bits (light base + bit), if any.
-void clVisitNextBit(int base, inout uint bits)
-{
-  if (bits != 0u)
-  {
-    int i = base + clFindLSB(bits);
-    bits &= bits - 1u;
-    clVisitLight(i);
-  }
-}
-//CL_ENDIF
+// The loops over every light. Mesa's llvmpipe ends a fragment shader after 65,535 loop
+// iterations in all (one counter shared by every loop of the shader), silently, so brute
+// force and the exact far sums take 16 lights per iteration, one call each. A cluster's
+// walk takes one light per iteration: its lists are short, and several per iteration made
+// the bunny with 4,096 lights 40% slower on llvmpipe (each SIMD group of fragments runs
+// the rounded-up count); the pass reports a list too long for the limit (docs/guide.md,
+// "Limits").
 //CL_IF(BRUTE_FORCE)
-
-// Visits light i if there is one.
-void clVisitIfLight(int i)
+//CL_IF(PHONG)
+// Brute force's light i, if there is one; counts (evaluated, reached).
+void clBruteForceLight(int i, vec3 P, vec3 N, vec3 V, float power, inout vec3 diffuse,
+  inout vec3 specular, inout ivec2 counts)
 {
   if (i < clLightCount)
   {
-    clVisitLight(i);
+    bool hit = clShadeLight(i, P, N, V, power, diffuse, specular);
+    counts += ivec2(1, hit ? 1 : 0);
   }
 }
 //CL_ENDIF
+//CL_IF(PBR)
+// Brute force's light i, if there is one; counts (evaluated, reached).
+void clBruteForceLight(int i, vec3 P, vec3 N, vec3 V, float NdV, vec3 albedo, float roughness,
+  float metallic, vec3 F0, vec3 F90, inout vec3 Lo, inout ivec2 counts)
+{
+  if (i < clLightCount)
+  {
+    bool hit = clShadeLight(i, P, N, V, NdV, albedo, roughness, metallic, F0, F90, Lo);
+    counts += ivec2(1, hit ? 1 : 0);
+  }
+}
+//CL_ENDIF
+//CL_ENDIF
 //CL_IF(FAR_FIELD)
-
-// Adds the far part of the light k places after `start` (wrapping around) to the sums.
-void clAddFarPart(int k, int start, inout vec3 diffuse, inout vec3 specular)
+// Adds the far part of the light k places after `start` (wrapping around), if there is
+// one, to the sums (specular with Phong's power), and counts it.
+void clAddFarPart(int k, int start, vec3 P, vec3 N, vec3 V, float power, inout vec3 diffuse,
+  inout vec3 specular, inout int count)
 {
   if (k < clLightCount)
   {
@@ -361,20 +327,18 @@ void clAddFarPart(int k, int start, inout vec3 diffuse, inout vec3 specular)
     vec3 L;
     float att;
     vec3 color;
-    if (clFarLight(i, clP, L, att, color))
+    if (clFarLight(i, P, L, att, color))
     {
-      float df = max(0.0, att * dot(clNormal, -L));
+      float df = max(0.0, att * dot(N, -L));
       diffuse += df * color;
 //CL_IF(PHONG)
 //CL_IF(SPECULAR)
-      float rv = max(0.0, dot(reflect(L, clNormal), clView));
-      specular += sign(df) * att * (rv > 0.0 ? pow(rv, clPower) : 0.0) * color;
+      float rv = max(0.0, dot(reflect(L, N), V));
+      specular += sign(df) * att * (rv > 0.0 ? pow(rv, power) : 0.0) * color;
 //CL_ENDIF
 //CL_ENDIF
     }
-//CL_IF(COUNT)
-    ++clEvaluated;
-//CL_ENDIF
+    ++count;
   }
 }
 //CL_ENDIF

@@ -2,31 +2,16 @@
   // Clustered lighting, injected after VTK's own lighting (Phong: //VTK::Light::Impl) or
   // before "color += Lo;" (PBR). Walks the master bits of the fragment's cluster, then
   // the list bits of each non-empty batch, and shades only those lights.
-  clP = vertexVC.xyz;
 //CL_IF(PHONG)
-  clNormal = normalVCVSOutput;
-  clView = normalize(-vertexVC.xyz);
-  clPower = specularPower;
-  clDiffuse = vec3(0.0);
-  clSpecular = vec3(0.0);
+  vec3 clDiffuse = vec3(0.0);
+  vec3 clSpecular = vec3(0.0);
 //CL_ENDIF
 //CL_IF(PBR)
-  clNormal = N;
-  clView = V;
-  clNdV = NdV;
-  clAlbedo = albedo;
-  clRoughness = roughness;
-  clMetallic = metallic;
-  clF0 = F0;
-  clF90 = F90;
-  clLo = vec3(0.0);
+  vec3 clLo = vec3(0.0);
 //CL_ENDIF
 //CL_IF(COUNT)
-  clEvaluated = 0;
-  clReached = 0;
-//CL_ENDIF
-//CL_IF(FAR_FIELD)
-  clFirst = -1;
+  int clEvaluated = 0;
+  int clReached = 0;
 //CL_ENDIF
 //CL_IF(FAR_FIELD)
   // The far field: the moments at the fragment (trilinear), then the diffuse kernel in
@@ -96,51 +81,101 @@
   clBase += clDiffuseLow * diffuseColor + clSpecularLow * specularColor;
 //CL_ENDIF
 //CL_ENDIF
+//CL_IF(FAR_FIELD)
+  int clFirst = -1; // the first near light walked: where the exact far sum starts
+//CL_ENDIF
+//CL_IF(BRUTE_FORCE)
+  // 16 lights per iteration: llvmpipe ends a shader after 65,535 loop iterations in all
+  // (see clBruteForceLight).
+  ivec2 clCounts = ivec2(0);
+  for (int clGroup = 0; clGroup < clLightCount; clGroup += 16)
+  {
+//CL_IF(PHONG)
+    vec3 clP = vertexVC.xyz;
+    vec3 clNv = normalVCVSOutput;
+    vec3 clVv = normalize(-vertexVC.xyz);
+    clBruteForceLight(clGroup, clP, clNv, clVv, specularPower, clDiffuse, clSpecular, clCounts);
+    clBruteForceLight(clGroup + 1, clP, clNv, clVv, specularPower, clDiffuse, clSpecular, clCounts);
+    clBruteForceLight(clGroup + 2, clP, clNv, clVv, specularPower, clDiffuse, clSpecular, clCounts);
+    clBruteForceLight(clGroup + 3, clP, clNv, clVv, specularPower, clDiffuse, clSpecular, clCounts);
+    clBruteForceLight(clGroup + 4, clP, clNv, clVv, specularPower, clDiffuse, clSpecular, clCounts);
+    clBruteForceLight(clGroup + 5, clP, clNv, clVv, specularPower, clDiffuse, clSpecular, clCounts);
+    clBruteForceLight(clGroup + 6, clP, clNv, clVv, specularPower, clDiffuse, clSpecular, clCounts);
+    clBruteForceLight(clGroup + 7, clP, clNv, clVv, specularPower, clDiffuse, clSpecular, clCounts);
+    clBruteForceLight(clGroup + 8, clP, clNv, clVv, specularPower, clDiffuse, clSpecular, clCounts);
+    clBruteForceLight(clGroup + 9, clP, clNv, clVv, specularPower, clDiffuse, clSpecular, clCounts);
+    clBruteForceLight(clGroup + 10, clP, clNv, clVv, specularPower, clDiffuse, clSpecular, clCounts);
+    clBruteForceLight(clGroup + 11, clP, clNv, clVv, specularPower, clDiffuse, clSpecular, clCounts);
+    clBruteForceLight(clGroup + 12, clP, clNv, clVv, specularPower, clDiffuse, clSpecular, clCounts);
+    clBruteForceLight(clGroup + 13, clP, clNv, clVv, specularPower, clDiffuse, clSpecular, clCounts);
+    clBruteForceLight(clGroup + 14, clP, clNv, clVv, specularPower, clDiffuse, clSpecular, clCounts);
+    clBruteForceLight(clGroup + 15, clP, clNv, clVv, specularPower, clDiffuse, clSpecular, clCounts);
+//CL_ENDIF
+//CL_IF(PBR)
+    vec3 clP = vertexVC.xyz;
+    clBruteForceLight(clGroup, clP, N, V, NdV, albedo, roughness, metallic, F0, F90, clLo, clCounts);
+    clBruteForceLight(clGroup + 1, clP, N, V, NdV, albedo, roughness, metallic, F0, F90, clLo, clCounts);
+    clBruteForceLight(clGroup + 2, clP, N, V, NdV, albedo, roughness, metallic, F0, F90, clLo, clCounts);
+    clBruteForceLight(clGroup + 3, clP, N, V, NdV, albedo, roughness, metallic, F0, F90, clLo, clCounts);
+    clBruteForceLight(clGroup + 4, clP, N, V, NdV, albedo, roughness, metallic, F0, F90, clLo, clCounts);
+    clBruteForceLight(clGroup + 5, clP, N, V, NdV, albedo, roughness, metallic, F0, F90, clLo, clCounts);
+    clBruteForceLight(clGroup + 6, clP, N, V, NdV, albedo, roughness, metallic, F0, F90, clLo, clCounts);
+    clBruteForceLight(clGroup + 7, clP, N, V, NdV, albedo, roughness, metallic, F0, F90, clLo, clCounts);
+    clBruteForceLight(clGroup + 8, clP, N, V, NdV, albedo, roughness, metallic, F0, F90, clLo, clCounts);
+    clBruteForceLight(clGroup + 9, clP, N, V, NdV, albedo, roughness, metallic, F0, F90, clLo, clCounts);
+    clBruteForceLight(clGroup + 10, clP, N, V, NdV, albedo, roughness, metallic, F0, F90, clLo, clCounts);
+    clBruteForceLight(clGroup + 11, clP, N, V, NdV, albedo, roughness, metallic, F0, F90, clLo, clCounts);
+    clBruteForceLight(clGroup + 12, clP, N, V, NdV, albedo, roughness, metallic, F0, F90, clLo, clCounts);
+    clBruteForceLight(clGroup + 13, clP, N, V, NdV, albedo, roughness, metallic, F0, F90, clLo, clCounts);
+    clBruteForceLight(clGroup + 14, clP, N, V, NdV, albedo, roughness, metallic, F0, F90, clLo, clCounts);
+    clBruteForceLight(clGroup + 15, clP, N, V, NdV, albedo, roughness, metallic, F0, F90, clLo, clCounts);
+//CL_ENDIF
+  }
+//CL_IF(COUNT)
+  clEvaluated += clCounts.x;
+  clReached += clCounts.y;
+//CL_ENDIF
+//CL_ENDIF
 //CL_IF(CLUSTERED)
   ivec3 clCluster = clComputeCluster(vertexVC);
-  bool clSaturated = false;
-  for (int clM = 0; clM < clMasterTexels && !clSaturated; ++clM)
+  for (int clM = 0; clM < clMasterTexels; ++clM)
   {
     uint clMask = texelFetch(clMaster, clMasterTexel(clCluster, clM), 0).r;
-    while (clMask != 0u && !clSaturated)
+    while (clMask != 0u)
     {
       int clB = 32 * clM + clFindLSB(clMask);
       clMask &= clMask - 1u;
       uint clBits = texelFetch(clList, clListTexel(clCluster, clB), 0).r;
-      while (clBits != 0u && !clSaturated) // 4 lights per iteration (see the Dec)
+      while (clBits != 0u)
       {
-        clVisitNextBit(32 * clB, clBits);
-        clVisitNextBit(32 * clB, clBits);
-        clVisitNextBit(32 * clB, clBits);
-        clVisitNextBit(32 * clB, clBits);
+        int clLight = 32 * clB + clFindLSB(clBits);
+        clBits &= clBits - 1u;
+//CL_IF(PHONG)
+        bool clHit = clShadeLight(clLight, vertexVC.xyz, normalVCVSOutput,
+          normalize(-vertexVC.xyz), specularPower, clDiffuse, clSpecular);
+//CL_ENDIF
+//CL_IF(PBR)
+        bool clHit = clShadeLight(
+          clLight, vertexVC.xyz, N, V, NdV, albedo, roughness, metallic, F0, F90, clLo);
+//CL_ENDIF
+//CL_IF(COUNT)
+        ++clEvaluated;
+        clReached += clHit ? 1 : 0;
+//CL_ENDIF
+//CL_IF(FAR_FIELD)
+        clFirst = clFirst < 0 ? clLight : clFirst;
+//CL_ENDIF
 //CL_IF(SATURATION)
-        clSaturated = clClampsAtOne &&
-          all(greaterThanEqual(clBase + clDiffuse * diffuseColor + clSpecular * specularColor,
-            vec3(1.0)));
+        if (clClampsAtOne && all(greaterThanEqual(
+              clBase + clDiffuse * diffuseColor + clSpecular * specularColor, vec3(1.0))))
+        {
+          clM = clMasterTexels; // leave all three loops
+          clMask = 0u;
+          break;
+        }
 //CL_ENDIF
       }
     }
-  }
-//CL_ENDIF
-//CL_IF(BRUTE_FORCE)
-  for (int clGroup = 0; clGroup < clLightCount; clGroup += 16) // 16 lights per iteration
-  {
-    clVisitIfLight(clGroup);
-    clVisitIfLight(clGroup + 1);
-    clVisitIfLight(clGroup + 2);
-    clVisitIfLight(clGroup + 3);
-    clVisitIfLight(clGroup + 4);
-    clVisitIfLight(clGroup + 5);
-    clVisitIfLight(clGroup + 6);
-    clVisitIfLight(clGroup + 7);
-    clVisitIfLight(clGroup + 8);
-    clVisitIfLight(clGroup + 9);
-    clVisitIfLight(clGroup + 10);
-    clVisitIfLight(clGroup + 11);
-    clVisitIfLight(clGroup + 12);
-    clVisitIfLight(clGroup + 13);
-    clVisitIfLight(clGroup + 14);
-    clVisitIfLight(clGroup + 15);
   }
 //CL_ENDIF
 //CL_IF(FAR_FIELD)
@@ -180,27 +215,35 @@
       clFarSpecular = vec3(0.0);
       // Lights are stored in Morton order: from a near light of the fragment on, the
       // nearest (brightest) far parts come first, and a saturating sum stops sooner.
-      // 16 lights per iteration (see the Dec).
+      // 16 lights per iteration (see clAddFarPart).
       int clStart = max(clFirst, 0);
+      vec3 clP = vertexVC.xyz;
+//CL_IF(PHONG)
+      float clPower = specularPower;
+//CL_ENDIF
+//CL_IF(PBR)
+      float clPower = 1.0;
+//CL_ENDIF
+      int clFarCount = 0;
       bool clStop = false;
       for (int clK = 0; clK < clLightCount && !clStop; clK += 16)
       {
-        clAddFarPart(clK, clStart, clFarDiffuse, clFarSpecular);
-        clAddFarPart(clK + 1, clStart, clFarDiffuse, clFarSpecular);
-        clAddFarPart(clK + 2, clStart, clFarDiffuse, clFarSpecular);
-        clAddFarPart(clK + 3, clStart, clFarDiffuse, clFarSpecular);
-        clAddFarPart(clK + 4, clStart, clFarDiffuse, clFarSpecular);
-        clAddFarPart(clK + 5, clStart, clFarDiffuse, clFarSpecular);
-        clAddFarPart(clK + 6, clStart, clFarDiffuse, clFarSpecular);
-        clAddFarPart(clK + 7, clStart, clFarDiffuse, clFarSpecular);
-        clAddFarPart(clK + 8, clStart, clFarDiffuse, clFarSpecular);
-        clAddFarPart(clK + 9, clStart, clFarDiffuse, clFarSpecular);
-        clAddFarPart(clK + 10, clStart, clFarDiffuse, clFarSpecular);
-        clAddFarPart(clK + 11, clStart, clFarDiffuse, clFarSpecular);
-        clAddFarPart(clK + 12, clStart, clFarDiffuse, clFarSpecular);
-        clAddFarPart(clK + 13, clStart, clFarDiffuse, clFarSpecular);
-        clAddFarPart(clK + 14, clStart, clFarDiffuse, clFarSpecular);
-        clAddFarPart(clK + 15, clStart, clFarDiffuse, clFarSpecular);
+        clAddFarPart(clK, clStart, clP, clN, clV, clPower, clFarDiffuse, clFarSpecular, clFarCount);
+        clAddFarPart(clK + 1, clStart, clP, clN, clV, clPower, clFarDiffuse, clFarSpecular, clFarCount);
+        clAddFarPart(clK + 2, clStart, clP, clN, clV, clPower, clFarDiffuse, clFarSpecular, clFarCount);
+        clAddFarPart(clK + 3, clStart, clP, clN, clV, clPower, clFarDiffuse, clFarSpecular, clFarCount);
+        clAddFarPart(clK + 4, clStart, clP, clN, clV, clPower, clFarDiffuse, clFarSpecular, clFarCount);
+        clAddFarPart(clK + 5, clStart, clP, clN, clV, clPower, clFarDiffuse, clFarSpecular, clFarCount);
+        clAddFarPart(clK + 6, clStart, clP, clN, clV, clPower, clFarDiffuse, clFarSpecular, clFarCount);
+        clAddFarPart(clK + 7, clStart, clP, clN, clV, clPower, clFarDiffuse, clFarSpecular, clFarCount);
+        clAddFarPart(clK + 8, clStart, clP, clN, clV, clPower, clFarDiffuse, clFarSpecular, clFarCount);
+        clAddFarPart(clK + 9, clStart, clP, clN, clV, clPower, clFarDiffuse, clFarSpecular, clFarCount);
+        clAddFarPart(clK + 10, clStart, clP, clN, clV, clPower, clFarDiffuse, clFarSpecular, clFarCount);
+        clAddFarPart(clK + 11, clStart, clP, clN, clV, clPower, clFarDiffuse, clFarSpecular, clFarCount);
+        clAddFarPart(clK + 12, clStart, clP, clN, clV, clPower, clFarDiffuse, clFarSpecular, clFarCount);
+        clAddFarPart(clK + 13, clStart, clP, clN, clV, clPower, clFarDiffuse, clFarSpecular, clFarCount);
+        clAddFarPart(clK + 14, clStart, clP, clN, clV, clPower, clFarDiffuse, clFarSpecular, clFarCount);
+        clAddFarPart(clK + 15, clStart, clP, clN, clV, clPower, clFarDiffuse, clFarSpecular, clFarCount);
 //CL_IF(SATURATION)
         // Every far part adds light too, so the near sum plus the far parts so far is a
         // lower bound: once it saturates every channel, the rest cannot change the pixel.
@@ -209,6 +252,9 @@
             clNearSum + clFarDiffuse * diffuseColor + clFarSpecular * specularColor, vec3(1.0)));
 //CL_ENDIF
       }
+//CL_IF(COUNT)
+      clEvaluated += clFarCount;
+//CL_ENDIF
     }
 //CL_IF(PHONG)
     clDiffuse += clFarDiffuse;

@@ -665,29 +665,39 @@ vtkClusteredLightingAssignerInputs vtkClusteredLightingPass::MakeAssignerInputs(
 void vtkClusteredLightingPass::ReportLoopLimit(const vtkClusteredLightingAssignment& r)
 {
   using namespace vtkClusteredLighting;
+  const bool brute = this->ShadingMode == SHADING_BRUTE_FORCE;
   long long iterations = 0;
-  std::ostringstream what;
-  if (r.Enabled && this->ShadingMode == SHADING_BRUTE_FORCE)
+  if (r.Enabled && brute)
   {
     iterations = ComputeEveryLightIterations(r.NumberOfLights);
-    what << "brute force, 16 lights per iteration";
   }
   else if (r.Enabled && r.Clustered)
   {
     iterations = ComputeWalkIterations(r.MostLightsInACluster, r.NumberOfLights, r.MasterTexels) +
       (r.FarField ? ComputeEveryLightIterations(r.NumberOfLights) : 0);
-    what << "a cluster lists up to " << r.MostLightsInACluster << " lights, one per iteration"
-         << (r.FarField ? ", and the exact far sums take 16 per iteration" : "");
   }
   if (iterations <= ShaderLoopLimit)
   {
     this->Internals->ReportedLoopLimit = false;
     return;
   }
-  const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-  if (!this->Internals->ReportedLoopLimit && renderer &&
-    std::string(renderer).find("llvmpipe") != std::string::npos)
+  if (this->Internals->ReportedLoopLimit)
   {
+    return;
+  }
+  const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  if (renderer && std::string(renderer).find("llvmpipe") != std::string::npos)
+  {
+    std::ostringstream what;
+    if (brute)
+    {
+      what << "brute force, 16 lights per iteration";
+    }
+    else
+    {
+      what << "a cluster lists up to " << r.MostLightsInACluster << " lights, one per iteration"
+           << (r.FarField ? ", and the exact far sums take 16 per iteration" : "");
+    }
     vtkWarningMacro(<< r.NumberOfLights
                     << " lights: llvmpipe ends a fragment shader after 65,535 loop iterations, "
                        "and a fragment here can need up to "

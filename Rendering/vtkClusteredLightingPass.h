@@ -349,13 +349,14 @@ public:
   /**
    * Advanced: how many lights per point, on average over the box of the visible geometry,
    * the near field may evaluate exactly (a light counts at most once per point). When all
-   * lights fit whole, each keeps its cutoff radius and the far field holds only the tails
-   * past it (none at all for up to 16 vtkLights that reach everywhere); otherwise the
-   * lights with the largest radii are cut to one radius R that fills the budget (a few
-   * bright lights among many keep exact highlights), never below FarFieldCellsPerRadius
-   * grid cells, and the far field carries the rest. Lights that never fall off
-   * (attenuation (1, 0, 0)) keep R only while its sphere holds half the box, the smallest
-   * radius otherwise (docs/far-field.md). Range [0, 1e6]. Default is 16.
+   * lights fit whole within 16 per point (or this budget, if larger), each keeps its
+   * cutoff radius and the far field holds only the tails past it (none at all for up to
+   * 16 vtkLights that reach everywhere); otherwise the lights with the largest radii are
+   * cut to one radius R that fills the budget (a few bright lights among many keep exact
+   * highlights), never below FarFieldCellsPerRadius grid cells, and the far field carries
+   * the rest. Lights that never fall off (attenuation (1, 0, 0)) keep a radius that fills
+   * 16 per point while its sphere holds half the box, the smallest radius otherwise
+   * (docs/far-field.md). Range [0, 1e6]. Default is 8.
    */
   vtkSetClampMacro(NearFieldBudget, double, 0.0, 1e6);
   vtkGetMacro(NearFieldBudget, double);
@@ -703,7 +704,7 @@ protected:
   double FarFieldTolerance = 2.0 / 255.0;
   double FarFieldGrouping = 1.0;
   bool FarFieldSharedColor = true;
-  double NearFieldBudget = 16.0;
+  double NearFieldBudget = 8.0;
 
   int NumberOfClusteredLights = 0;
   int NumberOfRejectedLights = 0;

@@ -154,10 +154,15 @@ struct FarFieldOptions
   bool Enabled = true;
   double CellsPerRadius = 2.0;      ///< grid cells per near radius (accuracy of the grid)
   std::int64_t TargetNodes = 32768; ///< nodes over the region (the grid's resolution)
-  double Grouping = 1.0;    ///< light-tree aggregation: extent / distance below it (0: exact)
-  double NearBudget = 16.0; ///< lights per point the near field may evaluate, on average
-  bool SharedColor = true;  ///< one channel when the far lights share a colour (see below)
+  double Grouping = 1.0;   ///< light-tree aggregation: extent / distance below it (0: exact)
+  double NearBudget = 8.0; ///< lights per point the near field may evaluate, on average
+  bool SharedColor = true; ///< one channel when the far lights share a colour (see below)
 };
+
+/// Lights per point that are shaded exactly, with no far field, when they all fit whole
+/// (a handful of vtkLights reaching everywhere, as stock VTK shades them); the near budget
+/// when it is larger. See PlanFarField.
+constexpr double FarFieldExactLightsPerPoint = 16.0;
 
 /// What PlanFarField decided.
 struct FarFieldPlan
@@ -277,14 +282,17 @@ inline FarFieldGrid ComputeFarFieldGrid(const glm::dvec3& lo, const glm::dvec3& 
  * docs/far-field.md, found the error flat once h <= r / 2). R shares out the near field's
  * budget: the largest radius for which the lights' near spheres hold, on average over the
  * region, at most NearBudget lights per point (sum_j 4/3 pi r_j^3 <= NearBudget x region
- * volume, a light counting at most the region's volume). When all lights fit, every one
- * keeps its cutoff radius and the far field holds only the tails past it (none for a
- * light whose sphere holds the whole region: a handful of vtkLights need no far field at
- * all). Otherwise a few bright lights among many keep theirs, highlights included, while
- * thousands get the grid's radius and leave their tails to the far field. Always-on
- * lights have no cutoff radius: they get max(CellsPerRadius * h, R) while that sphere
- * holds at least half of the region, CellsPerRadius * h otherwise (their near spheres
- * then buy little accuracy, see the code), and R is chosen again for the others. Lights
+ * volume, a light counting at most the region's volume). When all lights fit whole within
+ * the exact budget E = max(NearBudget, FarFieldExactLightsPerPoint) lights per point, every
+ * one keeps its cutoff radius and the far field holds only the tails past it (none for a
+ * light whose sphere holds the whole region: up to 16 vtkLights reaching everywhere need
+ * no far field at all). Otherwise a few bright lights among many keep theirs, highlights
+ * included, while thousands get the grid's radius and leave their tails to the far
+ * field. Always-on lights have no cutoff radius: while a sphere that shares out E holds
+ * at least half of the region, every light gets max(CellsPerRadius * h, R_E) (R chosen
+ * for E: a few dozen vtkLights stay exact at most points); otherwise they get
+ * CellsPerRadius * h (their near spheres then buy little accuracy, see the code) and R is
+ * chosen for NearBudget among the others. Lights
  * below the cutoff everywhere (radius 0) go to the far field whole. Their
  * PreparedLight::Radius (the culling radius) becomes the near radius and
  * PreparedLight::FarField is set. Does nothing when disabled, when no light qualifies or
@@ -341,6 +349,7 @@ inline FarFieldPlan PlanFarField(std::vector<PreparedLight>& lights, glm::dvec3 
   const double volume = counted.x * counted.y * counted.z;
   const double unit = volume / (4.0 / 3.0 * glm::pi<double>());
   const double budget = std::max(options.NearBudget, 0.0) * unit;
+  const double exactBudget = std::max(options.NearBudget, FarFieldExactLightsPerPoint) * unit;
   const double diagonal = glm::length(size);
   auto cubes = [&](double R)
   {
@@ -356,22 +365,22 @@ inline FarFieldPlan PlanFarField(std::vector<PreparedLight>& lights, glm::dvec3 
     return sum;
   };
   const double whole = cubes(std::numeric_limits<double>::infinity());
-  auto fillBudget = [&]()
+  auto fillBudget = [&](double most)
   {
     double fill = smallest;
-    if (cubes(smallest) < budget)
+    if (cubes(smallest) < most)
     {
       double a = smallest, b = diagonal;
       for (int i = 0; i < 50; ++i)
       {
         const double m = 0.5 * (a + b);
-        (cubes(m) <= budget ? a : b) = m;
+        (cubes(m) <= most ? a : b) = m;
       }
       fill = a;
     }
     return fill;
   };
-  if (whole <= budget)
+  if (whole <= exactBudget)
   {
     // Every light keeps its cutoff radius; the far field holds only the tails past it, of
     // the lights whose sphere does not hold the whole region.
@@ -400,23 +409,36 @@ inline FarFieldPlan PlanFarField(std::vector<PreparedLight>& lights, glm::dvec3 
     plan.SharedColor = options.SharedColor ? FindFarFieldSharedColor(lights) : glm::dvec3(0.0);
     return plan;
   }
-  double R = fillBudget();
+  // Lights that fall off: their far parts are the tails the far field adds back within
+  // its bound, so the near field needs no more than NearBudget per point (8: the same
+  // images as 16 on the benchmark's scenes, 25% faster on Examples/Python/user_lights.py,
+  // docs/far-field.md).
+  double R = fillBudget(budget);
   // An always-on light (no falloff) is not brighter near its position: its far part is
   // off by the moments' angular truncation wherever the far field holds it, and a near
-  // sphere only makes the points inside it exact. Unless the spheres cover at least half
-  // of the region, that is a small share of the error for most of the budget (300
-  // always-on lights, near budget 16 -> 1: RMSE 1.0 -> 1.05 steps, 411 -> 288 ms), so
-  // they keep the smallest radius and the budget goes to the lights that fall off.
+  // sphere only makes the points inside it exact. While spheres sharing out the exact
+  // budget hold at least half of the region, every light keeps such a sphere (a few
+  // dozen vtkLights stay exact at most points). Otherwise that is a small share of the
+  // error for most of the budget (300 always-on lights, near budget 16 -> 1: RMSE 1.0 ->
+  // 1.05 steps, 411 -> 288 ms), so they keep the smallest radius and the budget goes to
+  // the lights that fall off.
   auto alwaysOn = [](const PreparedLight& l) { return IsFarFieldLight(l) && std::isinf(l.Radius); };
-  const double cap = std::max(smallest, R);
-  if (std::min(cap * cap * cap, unit) < 0.5 * unit &&
-    std::any_of(lights.begin(), lights.end(), alwaysOn))
+  if (std::any_of(lights.begin(), lights.end(), alwaysOn))
   {
-    for (PreparedLight& l : lights)
+    const double exactR = fillBudget(exactBudget);
+    const double cap = std::max(smallest, exactR);
+    if (std::min(cap * cap * cap, unit) < 0.5 * unit)
     {
-      l.Radius = alwaysOn(l) ? smallest : l.Radius;
+      for (PreparedLight& l : lights)
+      {
+        l.Radius = alwaysOn(l) ? smallest : l.Radius;
+      }
+      R = fillBudget(budget);
     }
-    R = fillBudget();
+    else
+    {
+      R = exactR;
+    }
   }
   plan.NearRadiusCap = std::max(smallest, R);
   plan.NearLightsPerPoint = cubes(R) / unit;

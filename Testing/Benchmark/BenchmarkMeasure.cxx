@@ -193,7 +193,7 @@ void Context::ResetPassDefaults()
   p->SetFarFieldTolerance(2.0 / 255.0);
   p->SetFarFieldGrouping(1.0);
   p->SetFarFieldSharedColor(true);
-  p->SetNearFieldBudget(16.0);
+  p->SetNearFieldBudget(8.0);
   p->SetFalloff(vtkClusteredLightingPass::FALLOFF_HARD_CUT);
   p->SetTilesX(32);
   p->SetTilesY(16);

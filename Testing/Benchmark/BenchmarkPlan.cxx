@@ -149,6 +149,14 @@ std::vector<Step> MakePlan(const PlanOptions& options)
         s.Lights = lights[k];
         s.Value = std::to_string(lights[k]);
         plan.push_back(s);
+        for (double budget : { 4.0, 8.0, 16.0 })
+        {
+          Step b = s;
+          b.Sweep = "near budget";
+          b.Value = std::to_string(static_cast<int>(budget));
+          b.Apply = [budget](vtkClusteredLightingPass* p) { p->SetNearFieldBudget(budget); };
+          plan.push_back(b);
+        }
         if (k == 0)
         {
           // What the exact far sums near saturation cost, and what they buy.
@@ -359,6 +367,19 @@ std::vector<Step> MakePlan(const PlanOptions& options)
         plan.push_back(s);
       }
     }
+    // The near field's budget on every scene: lights per point evaluated exactly, against
+    // what the far field adds back (docs/far-field.md).
+    if (!quick)
+    {
+      for (double budget : { 4.0, 8.0, 16.0 })
+      {
+        Step s = base;
+        s.Sweep = "near budget";
+        s.Value = std::to_string(static_cast<int>(budget));
+        s.Apply = [budget](vtkClusteredLightingPass* p) { p->SetNearFieldBudget(budget); };
+        plan.push_back(s);
+      }
+    }
     if (!main)
     {
       continue;
@@ -389,11 +410,7 @@ std::vector<Step> MakePlan(const PlanOptions& options)
         knob("far field", std::to_string(nodes) + " nodes",
           [nodes](vtkClusteredLightingPass* p) { p->SetFarFieldResolution(nodes); });
       }
-      for (double budget : { 4.0, 64.0 })
-      {
-        knob("near budget", std::to_string(static_cast<int>(budget)),
-          [budget](vtkClusteredLightingPass* p) { p->SetNearFieldBudget(budget); });
-      }
+      knob("near budget", "64", [](vtkClusteredLightingPass* p) { p->SetNearFieldBudget(64.0); });
     }
     knob("bounds", "centre-depth quad",
       [](vtkClusteredLightingPass* p)

@@ -283,18 +283,30 @@ TEST(FarFieldPlan, GridHasNodePlanesThroughTheAnchorAndCoversTheBox)
 
 TEST(FarFieldPlan, AHandfulOfLightsNeedsNoFarField)
 {
-  // Five bright vtkLights reaching everywhere: exact shading costs 5 per point, within
-  // the near budget (16), so every light keeps its radius and there is no far field.
-  std::vector<PreparedLight> lights =
-    MakeLights(5, glm::dvec3(1, 0, 0.002), [](int i) { return glm::dvec3(i, 0.5 * i, 1.0); });
-  const std::vector<PreparedLight> before = lights;
-  const FarFieldPlan plan = PlanFarField(lights, glm::dvec3(-2), glm::dvec3(2), FarFieldOptions{});
-  EXPECT_FALSE(plan.Active);
-  EXPECT_EQ(plan.NumberOfFarFieldLights, 0);
-  for (std::size_t i = 0; i < lights.size(); ++i)
+  // Bright vtkLights reaching everywhere: exact shading costs one per light and point.
+  // Five, and twelve (above the near budget, 8, within the exact budget,
+  // FarFieldExactLightsPerPoint = 16), keep their radius with no far field; seventeen get
+  // one.
+  for (int n : { 5, 12, 16, 17 })
   {
-    EXPECT_FALSE(lights[i].FarField);
-    EXPECT_EQ(lights[i].Radius, before[i].Radius);
+    std::vector<PreparedLight> lights = MakeLights(
+      n, glm::dvec3(1, 0, 0.002), [](int i) { return glm::dvec3(0.2 * i, 0.1 * i, 1.0); });
+    const std::vector<PreparedLight> before = lights;
+    const FarFieldPlan plan =
+      PlanFarField(lights, glm::dvec3(-2), glm::dvec3(2), FarFieldOptions{});
+    if (n > FarFieldExactLightsPerPoint)
+    {
+      EXPECT_TRUE(plan.Active) << n;
+      EXPECT_EQ(plan.NumberOfFarFieldLights, static_cast<std::size_t>(n));
+      continue;
+    }
+    EXPECT_FALSE(plan.Active) << n;
+    EXPECT_EQ(plan.NumberOfFarFieldLights, 0) << n;
+    for (std::size_t i = 0; i < lights.size(); ++i)
+    {
+      EXPECT_FALSE(lights[i].FarField);
+      EXPECT_EQ(lights[i].Radius, before[i].Radius);
+    }
   }
 }
 
@@ -324,16 +336,26 @@ TEST(FarFieldPlan, ManyLightsShareTheNearBudget)
   std::uniform_real_distribution<double> U(-1.0, 1.0);
   std::vector<PreparedLight> lights =
     MakeLights(2000, glm::dvec3(1, 0, 1), [&](int) { return glm::dvec3(U(rng), U(rng), U(rng)); });
-  const FarFieldPlan plan = PlanFarField(lights, glm::dvec3(-1), glm::dvec3(1), FarFieldOptions{});
-  ASSERT_TRUE(plan.Active);
-  EXPECT_EQ(plan.NumberOfFarFieldLights, 2000);
-  EXPECT_LE(plan.NearLightsPerPoint, 16.0 * (1.0 + 1e-9));
-  for (const PreparedLight& l : lights)
+  // Lights that fall off fill the near budget (8 by default, any other as asked), not
+  // the exact budget of 16: the far field adds their tails back.
+  for (double budget : { 8.0, 16.0, 4.0 })
   {
-    EXPECT_TRUE(l.FarField);
-    EXPECT_LE(l.Radius, plan.NearRadiusCap);
-    EXPECT_GE(l.Radius, 2.0 * plan.Grid.Spacing * (1.0 - 1e-12));
+    std::vector<PreparedLight> copy = lights;
+    FarFieldOptions options;
+    options.NearBudget = budget;
+    const FarFieldPlan plan = PlanFarField(copy, glm::dvec3(-1), glm::dvec3(1), options);
+    ASSERT_TRUE(plan.Active);
+    EXPECT_EQ(plan.NumberOfFarFieldLights, 2000);
+    EXPECT_LE(plan.NearLightsPerPoint, budget * (1.0 + 1e-9));
+    EXPECT_GE(plan.NearLightsPerPoint, budget * (1.0 - 1e-6));
+    for (const PreparedLight& l : copy)
+    {
+      EXPECT_TRUE(l.FarField);
+      EXPECT_LE(l.Radius, plan.NearRadiusCap);
+      EXPECT_GE(l.Radius, 2.0 * plan.Grid.Spacing * (1.0 - 1e-12));
+    }
   }
+  EXPECT_EQ(FarFieldOptions().NearBudget, 8.0);
 }
 
 TEST(FarFieldPlan, ManyAlwaysOnLightsLeaveTheBudgetToLightsThatFallOff)
@@ -343,8 +365,8 @@ TEST(FarFieldPlan, ManyAlwaysOnLightsLeaveTheBudgetToLightsThatFallOff)
   auto place = [&](int) { return glm::dvec3(U(rng), U(rng), U(rng)); };
   const glm::dvec3 alwaysOn(1, 0, 0), falling(1, 0, 1);
   const FarFieldOptions options;
-  // 20 always-on lights: the budget (16 per point) gives each a sphere over most of the
-  // region, so they keep it and most points shade most of them exactly.
+  // 20 always-on lights: the exact budget (16 per point) gives each a sphere over most of
+  // the region, so they keep it and most points shade most of them exactly.
   std::vector<PreparedLight> few = MakeLights(20, alwaysOn, place);
   const FarFieldPlan fewPlan = PlanFarField(few, glm::dvec3(-1), glm::dvec3(1), options);
   ASSERT_TRUE(fewPlan.Active);
@@ -376,8 +398,8 @@ TEST(FarFieldPlan, ManyAlwaysOnLightsLeaveTheBudgetToLightsThatFallOff)
   const FarFieldPlan mixedPlan = PlanFarField(mixed, glm::dvec3(-1), glm::dvec3(1), options);
   const FarFieldPlan alonePlan = PlanFarField(alone, glm::dvec3(-1), glm::dvec3(1), options);
   ASSERT_TRUE(mixedPlan.Active && alonePlan.Active);
-  EXPECT_LE(mixedPlan.NearLightsPerPoint, 16.0 * (1.0 + 1e-9));
-  EXPECT_GT(mixedPlan.NearLightsPerPoint, 15.0);
+  EXPECT_LE(mixedPlan.NearLightsPerPoint, options.NearBudget * (1.0 + 1e-9));
+  EXPECT_GT(mixedPlan.NearLightsPerPoint, options.NearBudget - 1.0);
   EXPECT_GT(mixedPlan.NearRadiusCap, 0.9 * alonePlan.NearRadiusCap);
   for (std::size_t i = 0; i < mixed.size(); ++i)
   {

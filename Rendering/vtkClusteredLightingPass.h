@@ -349,9 +349,9 @@ public:
   /**
    * Advanced: how many lights per point, on average over the box of the visible geometry,
    * the near field may evaluate exactly (a light counts at most once per point). When all
-   * lights fit whole within 16 per point (or this budget, if larger), each keeps its
-   * cutoff radius and the far field holds only the tails past it (none at all for up to
-   * 16 vtkLights that reach everywhere); otherwise the lights with the largest radii are
+   * lights fit whole, each keeps its cutoff radius and the far field holds only the tails
+   * past it (none at all for up to 16 vtkLights that reach everywhere, whatever this
+   * budget); otherwise the lights with the largest radii are
    * cut to one radius R that fills the budget (a few bright lights among many keep exact
    * highlights), never below FarFieldCellsPerRadius grid cells, and the far field carries
    * the rest. Lights that never fall off (attenuation (1, 0, 0)) keep a radius that fills

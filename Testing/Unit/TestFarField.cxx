@@ -322,12 +322,27 @@ TEST(FarFieldPlan, LightsThatFitKeepTheirRadiusAndGiveTheirTails)
   const FarFieldPlan plan = PlanFarField(lights, glm::dvec3(-1), glm::dvec3(1), FarFieldOptions{});
   ASSERT_TRUE(plan.Active);
   EXPECT_EQ(plan.NumberOfFarFieldLights, 200);
-  EXPECT_LE(plan.NearLightsPerPoint, 16.0);
+  EXPECT_LE(plan.NearLightsPerPoint, FarFieldOptions().NearBudget);
   for (std::size_t i = 0; i < lights.size(); ++i)
   {
     EXPECT_TRUE(lights[i].FarField);
     EXPECT_EQ(lights[i].Radius, before[i].Radius);
   }
+  // With half that budget they no longer fit: the exact budget (16) is only for lights
+  // that all hold the whole region, so the largest radii are cut to fill the budget.
+  std::vector<PreparedLight> cut = before;
+  FarFieldOptions half;
+  half.NearBudget = 0.5 * plan.NearLightsPerPoint;
+  const FarFieldPlan halfPlan = PlanFarField(cut, glm::dvec3(-1), glm::dvec3(1), half);
+  ASSERT_TRUE(halfPlan.Active);
+  EXPECT_LE(halfPlan.NearLightsPerPoint, half.NearBudget * (1.0 + 1e-9));
+  int shortened = 0;
+  for (std::size_t i = 0; i < cut.size(); ++i)
+  {
+    EXPECT_LE(cut[i].Radius, before[i].Radius);
+    shortened += cut[i].Radius < before[i].Radius ? 1 : 0;
+  }
+  EXPECT_GT(shortened, 0);
 }
 
 TEST(FarFieldPlan, ManyLightsShareTheNearBudget)

@@ -351,12 +351,12 @@ public:
    * the near field may evaluate exactly (a light counts at most once per point). When all
    * lights fit whole, each keeps its cutoff radius and the far field holds only the tails
    * past it (none at all for up to 16 vtkLights that reach everywhere, whatever this
-   * budget); otherwise the lights with the largest radii are
-   * cut to one radius R that fills the budget (a few bright lights among many keep exact
-   * highlights), never below FarFieldCellsPerRadius grid cells, and the far field carries
-   * the rest. Lights that never fall off (attenuation (1, 0, 0)) keep a radius that fills
-   * 16 per point while its sphere holds half the box, the smallest radius otherwise
-   * (docs/far-field.md). Range [0, 1e6]. Default is 8.
+   * budget); otherwise the lights with the largest radii are cut to one radius R that
+   * fills the budget (a few bright lights among many keep exact highlights), never below
+   * FarFieldCellsPerRadius grid cells, and the far field carries the rest. Lights that
+   * never fall off (attenuation (1, 0, 0)) keep a radius that fills 16 per point while its
+   * sphere holds half the box, the smallest radius otherwise (docs/far-field.md).
+   * Range [0, 1e6]. Default is 8.
    */
   vtkSetClampMacro(NearFieldBudget, double, 0.0, 1e6);
   vtkGetMacro(NearFieldBudget, double);

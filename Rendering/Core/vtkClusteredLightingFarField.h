@@ -284,16 +284,17 @@ inline FarFieldGrid ComputeFarFieldGrid(const glm::dvec3& lo, const glm::dvec3& 
  * region, at most NearBudget lights per point (sum_j 4/3 pi r_j^3 <= NearBudget x region
  * volume, a light counting at most the region's volume). When all lights fit whole within
  * NearBudget, every one keeps its cutoff radius and the far field holds only the tails
- * past it (none for a light whose sphere holds the whole region). Lights whose spheres all
- * hold the whole region keep their radii, with no far field at all, within the larger
+ * past it (none for a light whose sphere holds the whole region). Lights whose spheres
+ * all hold the whole region keep their radii, with no far field at all, within the larger
  * exact budget E = max(NearBudget, FarFieldExactLightsPerPoint): up to 16 vtkLights
- * reaching everywhere are shaded as stock VTK shades them. Otherwise a few bright lights among many
- * keep theirs, highlights included, while thousands get the grid's radius and leave their tails to
- * the far field. Always-on lights have no cutoff radius: while a sphere that shares out E holds at
- * least half of the region, every light gets max(CellsPerRadius * h, R_E) (R chosen for E: a few
- * dozen vtkLights stay exact at most points); otherwise they get CellsPerRadius * h (their near
- * spheres then buy little accuracy, see the code) and R is chosen for NearBudget among the others.
- * Lights below the cutoff everywhere (radius 0) go to the far field whole. Their
+ * reaching everywhere are shaded as stock VTK shades them. Otherwise a few bright lights
+ * among many keep theirs, highlights included, while thousands get the grid's radius and
+ * leave their tails to the far field. Always-on lights have no cutoff radius: while a
+ * sphere that shares out E holds at least half of the region, every light gets
+ * max(CellsPerRadius * h, R_E) (R chosen for E: a few dozen vtkLights stay exact at most
+ * points); otherwise they get CellsPerRadius * h (their near spheres then buy little
+ * accuracy, see the code) and R is chosen for NearBudget among the others. Lights below
+ * the cutoff everywhere (radius 0) go to the far field whole. Their
  * PreparedLight::Radius (the culling radius) becomes the near radius and
  * PreparedLight::FarField is set. Does nothing when disabled, when no light qualifies or
  * when every qualifying light's sphere holds the whole region within the budget. The grid

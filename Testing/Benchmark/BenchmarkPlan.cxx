@@ -71,6 +71,20 @@ void SwitchSpecular(Context& ctx, bool off)
     }
   }
 }
+
+// Rows of `from` with NearFieldBudget 4, 8 (the default) and 16: lights per point
+// evaluated exactly, against what the far field adds back (docs/far-field.md).
+void AddNearBudgetRows(const Step& from, std::vector<Step>& plan)
+{
+  for (double budget : { 4.0, 8.0, 16.0 })
+  {
+    Step s = from;
+    s.Sweep = "near budget";
+    s.Value = std::to_string(static_cast<int>(budget));
+    s.Apply = [budget](vtkClusteredLightingPass* p) { p->SetNearFieldBudget(budget); };
+    plan.push_back(s);
+  }
+}
 }
 
 //------------------------------------------------------------------------------
@@ -149,14 +163,7 @@ std::vector<Step> MakePlan(const PlanOptions& options)
         s.Lights = lights[k];
         s.Value = std::to_string(lights[k]);
         plan.push_back(s);
-        for (double budget : { 4.0, 8.0, 16.0 })
-        {
-          Step b = s;
-          b.Sweep = "near budget";
-          b.Value = std::to_string(static_cast<int>(budget));
-          b.Apply = [budget](vtkClusteredLightingPass* p) { p->SetNearFieldBudget(budget); };
-          plan.push_back(b);
-        }
+        AddNearBudgetRows(s, plan);
         if (k == 0)
         {
           // What the exact far sums near saturation cost, and what they buy.
@@ -371,14 +378,7 @@ std::vector<Step> MakePlan(const PlanOptions& options)
     // what the far field adds back (docs/far-field.md).
     if (!quick)
     {
-      for (double budget : { 4.0, 8.0, 16.0 })
-      {
-        Step s = base;
-        s.Sweep = "near budget";
-        s.Value = std::to_string(static_cast<int>(budget));
-        s.Apply = [budget](vtkClusteredLightingPass* p) { p->SetNearFieldBudget(budget); };
-        plan.push_back(s);
-      }
+      AddNearBudgetRows(base, plan);
     }
     if (!main)
     {

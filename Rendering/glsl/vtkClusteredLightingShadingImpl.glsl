@@ -2,6 +2,9 @@
   // Clustered lighting, injected after VTK's own lighting (Phong: //VTK::Light::Impl) or
   // before "color += Lo;" (PBR). Walks the master bits of the fragment's cluster, then
   // the list bits of each non-empty batch, and shades only those lights.
+  // The fragment's position and unit vector to the camera (VC), once for every loop.
+  vec3 clP = vertexVC.xyz;
+  vec3 clV = normalize(-clP);
 //CL_IF(PHONG)
   vec3 clDiffuse = vec3(0.0);
   vec3 clSpecular = vec3(0.0);
@@ -58,7 +61,6 @@
   vec3 clDiffuseLow, clDiffuseHigh;
   vec3 clFarDiffuse = clApplyFarKernel(vec3(0.25, 0.5, 0.3125), clWorldFromVC * clN, clS,
     clVx, clVy, clVz, clTxx, clTyy, clTxy, clTxz, clTyz, false, 1.0, clDiffuseLow, clDiffuseHigh);
-  vec3 clV = normalize(-vertexVC.xyz);
   vec3 clFarSpecular = vec3(0.0);
   vec3 clSpecularLow = vec3(0.0), clSpecularHigh = vec3(0.0);
 //CL_IF(PHONG)
@@ -91,28 +93,25 @@
   for (int clGroup = 0; clGroup < clLightCount; clGroup += 16)
   {
 //CL_IF(PHONG)
-    vec3 clP = vertexVC.xyz;
     vec3 clNv = normalVCVSOutput;
-    vec3 clVv = normalize(-vertexVC.xyz);
-    clBruteForceLight(clGroup, clP, clNv, clVv, specularPower, clDiffuse, clSpecular, clCounts);
-    clBruteForceLight(clGroup + 1, clP, clNv, clVv, specularPower, clDiffuse, clSpecular, clCounts);
-    clBruteForceLight(clGroup + 2, clP, clNv, clVv, specularPower, clDiffuse, clSpecular, clCounts);
-    clBruteForceLight(clGroup + 3, clP, clNv, clVv, specularPower, clDiffuse, clSpecular, clCounts);
-    clBruteForceLight(clGroup + 4, clP, clNv, clVv, specularPower, clDiffuse, clSpecular, clCounts);
-    clBruteForceLight(clGroup + 5, clP, clNv, clVv, specularPower, clDiffuse, clSpecular, clCounts);
-    clBruteForceLight(clGroup + 6, clP, clNv, clVv, specularPower, clDiffuse, clSpecular, clCounts);
-    clBruteForceLight(clGroup + 7, clP, clNv, clVv, specularPower, clDiffuse, clSpecular, clCounts);
-    clBruteForceLight(clGroup + 8, clP, clNv, clVv, specularPower, clDiffuse, clSpecular, clCounts);
-    clBruteForceLight(clGroup + 9, clP, clNv, clVv, specularPower, clDiffuse, clSpecular, clCounts);
-    clBruteForceLight(clGroup + 10, clP, clNv, clVv, specularPower, clDiffuse, clSpecular, clCounts);
-    clBruteForceLight(clGroup + 11, clP, clNv, clVv, specularPower, clDiffuse, clSpecular, clCounts);
-    clBruteForceLight(clGroup + 12, clP, clNv, clVv, specularPower, clDiffuse, clSpecular, clCounts);
-    clBruteForceLight(clGroup + 13, clP, clNv, clVv, specularPower, clDiffuse, clSpecular, clCounts);
-    clBruteForceLight(clGroup + 14, clP, clNv, clVv, specularPower, clDiffuse, clSpecular, clCounts);
-    clBruteForceLight(clGroup + 15, clP, clNv, clVv, specularPower, clDiffuse, clSpecular, clCounts);
+    clBruteForceLight(clGroup, clP, clNv, clV, specularPower, clDiffuse, clSpecular, clCounts);
+    clBruteForceLight(clGroup + 1, clP, clNv, clV, specularPower, clDiffuse, clSpecular, clCounts);
+    clBruteForceLight(clGroup + 2, clP, clNv, clV, specularPower, clDiffuse, clSpecular, clCounts);
+    clBruteForceLight(clGroup + 3, clP, clNv, clV, specularPower, clDiffuse, clSpecular, clCounts);
+    clBruteForceLight(clGroup + 4, clP, clNv, clV, specularPower, clDiffuse, clSpecular, clCounts);
+    clBruteForceLight(clGroup + 5, clP, clNv, clV, specularPower, clDiffuse, clSpecular, clCounts);
+    clBruteForceLight(clGroup + 6, clP, clNv, clV, specularPower, clDiffuse, clSpecular, clCounts);
+    clBruteForceLight(clGroup + 7, clP, clNv, clV, specularPower, clDiffuse, clSpecular, clCounts);
+    clBruteForceLight(clGroup + 8, clP, clNv, clV, specularPower, clDiffuse, clSpecular, clCounts);
+    clBruteForceLight(clGroup + 9, clP, clNv, clV, specularPower, clDiffuse, clSpecular, clCounts);
+    clBruteForceLight(clGroup + 10, clP, clNv, clV, specularPower, clDiffuse, clSpecular, clCounts);
+    clBruteForceLight(clGroup + 11, clP, clNv, clV, specularPower, clDiffuse, clSpecular, clCounts);
+    clBruteForceLight(clGroup + 12, clP, clNv, clV, specularPower, clDiffuse, clSpecular, clCounts);
+    clBruteForceLight(clGroup + 13, clP, clNv, clV, specularPower, clDiffuse, clSpecular, clCounts);
+    clBruteForceLight(clGroup + 14, clP, clNv, clV, specularPower, clDiffuse, clSpecular, clCounts);
+    clBruteForceLight(clGroup + 15, clP, clNv, clV, specularPower, clDiffuse, clSpecular, clCounts);
 //CL_ENDIF
 //CL_IF(PBR)
-    vec3 clP = vertexVC.xyz;
     clBruteForceLight(clGroup, clP, N, V, NdV, albedo, roughness, metallic, F0, F90, clLo, clCounts);
     clBruteForceLight(clGroup + 1, clP, N, V, NdV, albedo, roughness, metallic, F0, F90, clLo, clCounts);
     clBruteForceLight(clGroup + 2, clP, N, V, NdV, albedo, roughness, metallic, F0, F90, clLo, clCounts);
@@ -151,12 +150,12 @@
         int clLight = 32 * clB + clFindLSB(clBits);
         clBits &= clBits - 1u;
 //CL_IF(PHONG)
-        bool clHit = clShadeLight(clLight, vertexVC.xyz, normalVCVSOutput,
-          normalize(-vertexVC.xyz), specularPower, clDiffuse, clSpecular);
+        bool clHit =
+          clShadeLight(clLight, clP, normalVCVSOutput, clV, specularPower, clDiffuse, clSpecular);
 //CL_ENDIF
 //CL_IF(PBR)
-        bool clHit = clShadeLight(
-          clLight, vertexVC.xyz, N, V, NdV, albedo, roughness, metallic, F0, F90, clLo);
+        bool clHit =
+          clShadeLight(clLight, clP, N, V, NdV, albedo, roughness, metallic, F0, F90, clLo);
 //CL_ENDIF
 //CL_IF(COUNT)
         ++clEvaluated;
@@ -217,7 +216,6 @@
       // nearest (brightest) far parts come first, and a saturating sum stops sooner.
       // 16 lights per iteration (see clAddFarPart).
       int clStart = max(clFirst, 0);
-      vec3 clP = vertexVC.xyz;
 //CL_IF(PHONG)
       float clPower = specularPower;
 //CL_ENDIF

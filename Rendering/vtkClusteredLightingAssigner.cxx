@@ -195,6 +195,7 @@ void vtkClusteredLightingAssigner::ReleaseGraphicsResources(vtkWindow* win)
   {
     w->PopContext();
   }
+  this->SampleDepths.Release(w); // in its own context
   this->LightDataUploaded = false;
   this->AssignmentValid = false;
 }
@@ -203,7 +204,8 @@ void vtkClusteredLightingAssigner::ReleaseGraphicsResources(vtkWindow* win)
 int vtkClusteredLightingAssigner::GetNumberOfGLObjects() const
 {
   return this->LightData.GetNumberOfGLObjects() + this->LightView.GetNumberOfGLObjects() +
-    this->FarField.GetNumberOfGLObjects() + this->Backend->GetNumberOfGLObjects();
+    this->FarField.GetNumberOfGLObjects() + this->Backend->GetNumberOfGLObjects() +
+    this->SampleDepths.GetNumberOfGLObjects();
 }
 
 void vtkClusteredLightingAssigner::GetGLObjectNames(
@@ -213,6 +215,7 @@ void vtkClusteredLightingAssigner::GetGLObjectNames(
   this->LightView.GetGLObjectNames(names);
   this->FarField.GetGLObjectNames(names);
   this->Backend->GetGLObjectNames(names);
+  this->SampleDepths.GetGLObjectNames(names);
 }
 
 //------------------------------------------------------------------------------

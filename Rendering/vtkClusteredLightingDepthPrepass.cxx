@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkClusteredLightingDepthPrepass.h"
+#include "vtkClusteredLightingSampleDepths.h"
 
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLFramebufferObject.h"
@@ -19,6 +20,9 @@
 
 namespace
 {
+/// The recorded depth output as the shader cache writes it (AddDepthOutput).
+const char* const RecordedOutput = "fragOutput1 = vec4(gl_FragCoord.z, -gl_FragCoord.z, 0.0, 1.0);";
+
 /// Number of non-overlapping occurrences of `what` in `text`.
 std::size_t Count(const std::string& text, const std::string& what)
 {
@@ -47,8 +51,8 @@ void vtkClusteredLightingDepthPrepass::Render(const vtkRenderState* s)
 }
 
 //------------------------------------------------------------------------------
-int vtkClusteredLightingDepthPrepass::RenderDepth(
-  const vtkRenderState* s, vtkOpenGLRenderWindow* rw, bool finish)
+int vtkClusteredLightingDepthPrepass::RenderDepth(const vtkRenderState* s,
+  vtkOpenGLRenderWindow* rw, bool finish, vtkClusteredLightingSampleDepths* sampleDepths)
 {
   if (finish)
   {
@@ -59,6 +63,9 @@ int vtkClusteredLightingDepthPrepass::RenderDepth(
   vtkOpenGLState* state = rw->GetState();
   this->MaxCoincidentOffset = 0.0;
   this->UnknownDepthWrites = false;
+  this->UnrecordedDepths = false;
+  this->Recorded = false;
+  this->SampleProblem.clear();
 
   // The viewport and scissor as vtkCameraPass sets them.
   int size[2] = { 0, 0 };
@@ -97,7 +104,29 @@ int vtkClusteredLightingDepthPrepass::RenderDepth(
       state->vtkglClear(GL_DEPTH_BUFFER_BIT);
     }
     state->vtkglEnable(GL_DEPTH_TEST);
-    state->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    // A multisampled framebuffer: the fragments' depths are recorded (with depth-aware
+    // clusters), in the recording framebuffer with GL_MAX blending.
+    const bool record = sampleDepths &&
+      vtkClusteredLightingSampleDepths::IsDrawFramebufferMultisampled() &&
+      sampleDepths->Begin(rw, origin, size);
+    if (sampleDepths && !record)
+    {
+      this->SampleProblem = sampleDepths->GetProblem();
+    }
+    vtkOpenGLState::ScopedglEnableDisable savedBlend(state, GL_BLEND);
+    int blendEquation[2] = { GL_FUNC_ADD, GL_FUNC_ADD };
+    state->vtkglGetIntegerv(GL_BLEND_EQUATION_RGB, blendEquation);
+    state->vtkglGetIntegerv(GL_BLEND_EQUATION_ALPHA, blendEquation + 1);
+    if (record)
+    {
+      state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+      state->vtkglEnable(GL_BLEND);
+      state->vtkglBlendEquation(GL_MAX);
+    }
+    else
+    {
+      state->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    }
 
     // The props carry this pass in their keys: the mappers build VTK's own program.
     this->PreRender(s);
@@ -110,6 +139,22 @@ int vtkClusteredLightingDepthPrepass::RenderDepth(
       }
     }
     this->PostRender(s);
+    if (record)
+    {
+      int equation[2] = { 0, 0 };
+      state->vtkglGetIntegerv(GL_BLEND_EQUATION_RGB, equation);
+      state->vtkglGetIntegerv(GL_BLEND_EQUATION_ALPHA, equation + 1);
+      // Something that changed the blending meanwhile makes the record unusable.
+      const bool blended = glIsEnabled(GL_BLEND) && equation[0] == GL_MAX && equation[1] == GL_MAX;
+      state->vtkglBlendEquationSeparate(
+        static_cast<unsigned int>(blendEquation[0]), static_cast<unsigned int>(blendEquation[1]));
+      this->Recorded = sampleDepths->End(rw, this->Depth, this->DepthMax) && blended;
+      if (!this->Recorded)
+      {
+        this->SampleProblem = blended ? sampleDepths->GetProblem()
+                                      : "a mapper changed the blending of the depth prepass";
+      }
+    }
   }
   glBindVertexArray(static_cast<GLuint>(vertexArray));
   if (finish)
@@ -126,13 +171,27 @@ bool vtkClusteredLightingDepthPrepass::ReadDepth(vtkOpenGLRenderWindow* rw)
 {
   const auto t0 = std::chrono::steady_clock::now();
   this->Problem.clear();
-  this->Depth.clear();
-  vtkOpenGLState* state = rw->GetState();
-  GLint samples = 0;
-  glGetIntegerv(GL_SAMPLE_BUFFERS, &samples);
-  if (samples > 0)
+  if (this->Recorded)
   {
-    this->Problem = "the framebuffer is multisampled (its depth cannot be read back)";
+    // Recorded by RenderDepth (a multisampled framebuffer).
+    if (this->UnrecordedDepths)
+    {
+      this->Problem = "the framebuffer is multisampled and a mapper's program does not record "
+                      "its fragments' depths";
+      this->Depth.clear();
+      this->DepthMax.clear();
+      return false;
+    }
+    return true;
+  }
+  this->Depth.clear();
+  this->DepthMax.clear();
+  vtkOpenGLState* state = rw->GetState();
+  if (vtkClusteredLightingSampleDepths::IsDrawFramebufferMultisampled())
+  {
+    this->Problem = "the framebuffer is multisampled and " +
+      (this->SampleProblem.empty() ? std::string("its sample depths were not recorded")
+                                   : this->SampleProblem);
     return false;
   }
   if (this->Size[0] < 1 || this->Size[1] < 1)
@@ -195,6 +254,7 @@ vtkClusteredLighting::DepthImage vtkClusteredLightingDepthPrepass::GetImage() co
     image.Depth = this->Depth.data();
     image.Width = this->Size[0];
     image.Height = this->Size[1];
+    image.DepthMax = this->DepthMax.size() == this->Depth.size() ? this->DepthMax.data() : nullptr;
   }
   return image;
 }
@@ -207,6 +267,10 @@ void vtkClusteredLightingDepthPrepass::NoteProgram(vtkShaderProgram* program)
     return;
   }
   const std::string fs = program->GetFragmentShader()->GetSource();
+  if (fs.find(RecordedOutput) == std::string::npos)
+  {
+    this->UnrecordedDepths = true;
+  }
   const std::size_t writes = Count(fs, "gl_FragDepth =");
   if (writes == 0)
   {
@@ -248,10 +312,31 @@ void vtkClusteredLightingDepthPrepass::AddInvariantPosition(std::string& vertexS
 }
 
 //------------------------------------------------------------------------------
-bool vtkClusteredLightingDepthPrepass::PostReplaceShaderValues(
-  std::string& vertexShader, std::string&, std::string&, vtkAbstractMapper*, vtkProp*)
+void vtkClusteredLightingDepthPrepass::AddDepthOutput(std::string& fragmentShader)
+{
+  // VTK's shader cache turns gl_FragData[i] into the output fragOutputi at location i.
+  if (fragmentShader.find("gl_FragData[0]") == std::string::npos ||
+    fragmentShader.find("gl_FragData[1]") != std::string::npos)
+  {
+    return;
+  }
+  const std::size_t main = fragmentShader.find("void main()");
+  const std::size_t open =
+    main == std::string::npos ? std::string::npos : fragmentShader.find('{', main);
+  if (open != std::string::npos)
+  {
+    fragmentShader.insert(open + 1,
+      "\n  // the pixel-centre depth, for vtkClusteredLightingSampleDepths\n"
+      "  gl_FragData[1] = vec4(gl_FragCoord.z, -gl_FragCoord.z, 0.0, 1.0);\n");
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkClusteredLightingDepthPrepass::PostReplaceShaderValues(std::string& vertexShader,
+  std::string&, std::string& fragmentShader, vtkAbstractMapper*, vtkProp*)
 {
   AddInvariantPosition(vertexShader);
+  AddDepthOutput(fragmentShader);
   return true;
 }
 

@@ -14,7 +14,11 @@
  *      texture reads included. A mapper switching between its two programs rebuilds its
  *      shader source, but VTK's shader cache keeps both compiled programs.
  *   2. ReadDepth(): the viewport's window depths, the input of depth-aware clusters
- *      (Rendering/Core/vtkClusteredLightingDepthBounds.h).
+ *      (Rendering/Core/vtkClusteredLightingDepthBounds.h). A multisampled depth buffer
+ *      cannot be read back and would not be enough (a fragment is shaded at the pixel
+ *      centre, whose depth may match none of the samples'): there RenderDepth draws
+ *      through vtkClusteredLightingSampleDepths, which records each pixel's range of
+ *      fragment depths, and ReadDepth takes that.
  *   3. The clustered pass then renders its delegate with the renderer's depth buffer
  *      preserved: the camera pass clears colour only, and every opaque fragment behind the
  *      visible surface fails the depth test (GL_LEQUAL, VTK's default) before it is shaded.
@@ -41,6 +45,7 @@
 #include <string> // for std::string
 #include <vector> // for std::vector
 
+class vtkClusteredLightingSampleDepths;
 class vtkOpenGLRenderWindow;
 class vtkRenderState;
 class vtkShaderProgram;
@@ -57,11 +62,15 @@ public:
 
   /// Renders the opaque props of `s` depth-only. With `finish`, waits for the GPU so that
   /// the render time is the prepass's own (a deferred renderer would otherwise bill it to
-  /// the next GL work). Returns the number of props rendered.
-  int RenderDepth(const vtkRenderState* s, vtkOpenGLRenderWindow* rw, bool finish);
+  /// the next GL work). With `sampleDepths` and a multisampled framebuffer, records the
+  /// depths of the fragments through it (for ReadDepth). Returns the number of props
+  /// rendered.
+  int RenderDepth(const vtkRenderState* s, vtkOpenGLRenderWindow* rw, bool finish,
+    vtkClusteredLightingSampleDepths* sampleDepths = nullptr);
 
-  /// Reads the viewport's depth back. False (with GetProblem()) when it cannot: a
-  /// multisampled framebuffer, or a GL error.
+  /// Reads the viewport's depth back, or takes the multisampled record of RenderDepth.
+  /// False (with GetProblem()) when it cannot: a multisampled framebuffer whose depths
+  /// were not recorded (or a program that did not record them), or a GL error.
   bool ReadDepth(vtkOpenGLRenderWindow* rw);
 
   /// The last readback (valid after ReadDepth returned true).
@@ -77,6 +86,11 @@ public:
 
   /// Adds `invariant gl_Position;` after the vertex shader's //VTK::System::Dec, once.
   static void AddInvariantPosition(std::string& vertexShader);
+
+  /// Adds the pixel-centre depth output `gl_FragData[1] = (z, -z, 0, 1)` at the start of
+  /// main() (vtkClusteredLightingSampleDepths records it), where the shader writes
+  /// gl_FragData[0] and not yet gl_FragData[1].
+  static void AddDepthOutput(std::string& fragmentShader);
 
   double GetMaximumCoincidentOffset() const { return this->MaxCoincidentOffset; }
   bool GetUnknownDepthWrites() const { return this->UnknownDepthWrites; }
@@ -95,7 +109,11 @@ private:
 
   double MaxCoincidentOffset = 0.0;
   bool UnknownDepthWrites = false;
+  bool UnrecordedDepths = false; ///< a program drawn without AddDepthOutput's line
+  bool Recorded = false;         ///< this frame's depths come from the sample record
+  std::string SampleProblem;     ///< why the sample depths were not recorded
   std::vector<float> Depth;
+  std::vector<float> DepthMax;      ///< with a sample record: each pixel's deepest fragment
   std::vector<unsigned int> Packed; ///< the packed depth-stencil read (3 MiB at 1024x768)
   int Size[2] = { 0, 0 };
   int Origin[2] = { 0, 0 };

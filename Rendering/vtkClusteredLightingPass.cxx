@@ -561,11 +561,22 @@ void vtkClusteredLightingPass::RenderDepthPrepass(
   // the same two programs from the first frame on.
   this->HideClusteredLights(ren, *inputs.Lights);
   this->UpdateLights(ren);
-  prepass->RenderDepth(s, rw, this->MeasureTimings);
+  // In a multisampled framebuffer depth-aware clusters need the fragments' own depths,
+  // which the prepass then records (vtkClusteredLightingSampleDepths).
+  const bool depthAware = this->DepthAwareClusters && inputs.Clustered;
+  prepass->RenderDepth(s, rw, this->MeasureTimings,
+    depthAware ? this->Internals->GetAssigner(ren)->GetSampleDepths() : nullptr);
   this->RestoreRendererLights(ren, *inputs.Lights);
   this->DepthPrepassUsed = true;
-  if (this->DepthAwareClusters && inputs.Clustered)
+  if (depthAware)
   {
+    bool translucent = false;
+    for (int i = 0; i < s->GetPropArrayCount(); ++i)
+    {
+      vtkProp* prop = s->GetPropArray()[i];
+      translucent =
+        translucent || (prop->GetVisibility() && prop->HasTranslucentPolygonalGeometry());
+    }
     std::string problem;
     if (prepass->GetUnknownDepthWrites())
     {
@@ -576,15 +587,14 @@ void vtkClusteredLightingPass::RenderDepthPrepass(
     {
       problem = prepass->GetProblem();
     }
+    else if (translucent && prepass->GetImage().DepthMax)
+    {
+      // A translucent fragment is shaded at the pixel centre too, where its depth may lie
+      // behind every opaque sample of the pixel: no recorded depth bounds it.
+      problem = "the framebuffer is multisampled and has translucent geometry";
+    }
     if (problem.empty())
     {
-      bool translucent = false;
-      for (int i = 0; i < s->GetPropArrayCount(); ++i)
-      {
-        vtkProp* prop = s->GetPropArray()[i];
-        translucent =
-          translucent || (prop->GetVisibility() && prop->HasTranslucentPolygonalGeometry());
-      }
       this->Internals->Depths = prepass->GetImage();
       inputs.Depths = &this->Internals->Depths;
       inputs.DepthOptions.WindowMargin =

@@ -99,6 +99,9 @@ struct DepthImage
   const float* Depth = nullptr;
   int Width = 0;
   int Height = 0;
+  /// With a multisampled framebuffer, a pixel's fragments have window depths from
+  /// Depth[p] to DepthMax[p] (vtkClusteredLightingSampleDepths); null: exactly Depth[p].
+  const float* DepthMax = nullptr;
 };
 
 /// Per-cluster view-depth intervals; texel (s * X + tx, ty) of a (X * Z) x Y image.
@@ -152,8 +155,9 @@ inline VisibleRange MeasureVisibleRange(const DepthImage& image, const glm::dmat
     const float w = image.Depth[p];
     if (w < 1.0f)
     {
+      const float deepest = image.DepthMax ? image.DepthMax[p] : w;
       wMin = std::min(wMin, w);
-      wMax = std::max(wMax, w);
+      wMax = std::max(wMax, deepest < 1.0f ? deepest : w);
       ++range.Pixels;
     }
   }
@@ -307,6 +311,8 @@ inline void ComputeClusterDepthBoundsRows(const DepthImage& image, const glm::dm
         continue;
       }
       const float* line = image.Depth + static_cast<std::size_t>(y) * image.Width;
+      const float* lineMax =
+        image.DepthMax ? image.DepthMax + static_cast<std::size_t>(y) * image.Width : line;
       int guess = 0;
       for (int x = 0; x < image.Width; ++x)
       {
@@ -322,7 +328,7 @@ inline void ComputeClusterDepthBoundsRows(const DepthImage& image, const glm::dm
           continue;
         }
         const double lo = toView(w - m) * (1.0 - rel);
-        const double hi = std::min(toView(w + m) * (1.0 + rel), deepest);
+        const double hi = std::min(toView(lineMax[x] + m) * (1.0 + rel), deepest);
         const float interval[2] = { static_cast<float>(lo) * (1.0f - 1e-6f),
           static_cast<float>(hi) * (1.0f + 1e-6f) };
         tileDeepest[c.First] = std::max(tileDeepest[c.First], interval[1]);

@@ -96,6 +96,7 @@ struct PixelCounts
   double Mean = 0.0;
   int Maximum = 0;
   vtkIdType Pixels = 0;
+  bool Read = true; ///< false when the framebuffer could not be read (multisampled)
 };
 
 /// Reads the renderer's viewport back from the framebuffer the delegate drew into: its
@@ -160,6 +161,7 @@ PixelCounts CountEvaluatedLights(const vtkRenderState* s, vtkOpenGLRenderWindow*
   std::vector<unsigned char> rgba;
   if (!ReadViewport(s, rw, depth, &rgba))
   {
+    counts.Read = false;
     return counts;
   }
   double sum = 0.0;
@@ -263,6 +265,7 @@ struct vtkClusteredLightingPass::vtkInternals
   vtkClusteredLighting::DepthImage Depths; ///< the prepass's readback, during Render()
   std::string ReportedDepthProblem;        ///< why depth-aware clusters are off, said once
   bool ReportedLoopLimit = false;          ///< the llvmpipe loop limit was reported
+  bool ReportedUncountedPixels = false;    ///< a debug view's counts could not be read
 
   vtkClusteredLightingAssigner* GetAssigner(vtkRenderer* ren)
   {
@@ -944,6 +947,15 @@ void vtkClusteredLightingPass::RenderDelegateOnce(const vtkRenderState* s)
 void vtkClusteredLightingPass::SetPixelCounts(const vtkRenderState* s, vtkOpenGLRenderWindow* rw)
 {
   const PixelCounts counts = CountEvaluatedLights(s, rw);
+  if (!counts.Read && !this->Internals->ReportedUncountedPixels)
+  {
+    // A multisampled framebuffer (VTK's default window) cannot be read back here.
+    vtkWarningMacro(<< "The lights evaluated per pixel could not be read from the framebuffer "
+                    << "(a multisampled one cannot be read back): GetMeanLightsEvaluatedPerPixel "
+                    << "reports 0. The debug view's image shows them (R + 256 G), or render "
+                    << "the counting frame with SetMultiSamples(0).");
+    this->Internals->ReportedUncountedPixels = true;
+  }
   this->MeanLightsEvaluatedPerPixel = counts.Mean;
   this->MaximumLightsEvaluatedPerPixel = counts.Maximum;
   this->NumberOfCountedPixels = counts.Pixels;

@@ -552,7 +552,9 @@ public:
   /// clustering culls little (a warning names the cause and the fix once).
   vtkGetMacro(MeanLightsPerCluster, double);
   /// Lights evaluated per pixel of lit geometry, on average, in the last frame that
-  /// counted them (DEBUG_EVALUATED_COUNT or DEBUG_HEAT_MAP); 0 before any.
+  /// counted them (DEBUG_EVALUATED_COUNT or DEBUG_HEAT_MAP); 0 before any, and 0 in a
+  /// multisampled framebuffer, which cannot be read back (a warning says so once; the
+  /// debug view's image still shows the counts).
   vtkGetMacro(MeanLightsEvaluatedPerPixel, double);
   /// Most lights evaluated at one pixel in the last frame that counted them.
   vtkGetMacro(MaximumLightsEvaluatedPerPixel, int);

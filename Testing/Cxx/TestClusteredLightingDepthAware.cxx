@@ -17,7 +17,10 @@
 //  - a mapper that writes its own depth (points as spheres) turns depth-aware clusters
 //    off with one warning, and the image stays correct;
 //  - with 40 positional vtkLights in the renderer (clustered), the prepass and the shading
-//    render use the same programs: no shader is rebuilt from frame to frame.
+//    render use the same programs: no shader is rebuilt from frame to frame;
+//  - in a multisampled window (VTK's default asks for 8 samples) the same checks pass with
+//    the recorded per-pixel ranges, and translucent geometry there turns depth-aware
+//    clusters off with one warning.
 #include "ClusteredLightingTestUtilities.h"
 #include "vtkClusteredLightingInspector.h"
 
@@ -35,6 +38,7 @@
 #include "vtkRenderer.h"
 #include "vtkSphereSource.h"
 
+#include <cmath>
 #include <cstdio>
 #include <random>
 #include <string>
@@ -103,17 +107,43 @@ int CountPixelsOutside(vtkClusteredLightingPass* pass, vtkRenderWindow* rw, vtkR
   return outside;
 }
 
+/// The evaluated-count debug view read from the window's image (R + 256 G), on average
+/// over the pixels that do not show the background: the pass cannot read a multisampled
+/// framebuffer's counts itself. (Edge pixels average their samples.)
+double MeanOfCounts(vtkRenderWindow* rw, vtkRenderer* ren)
+{
+  const std::vector<float> rgb = ClusteredLightingTest::CapturePixels(rw);
+  double background[3];
+  ren->GetBackground(background);
+  auto byte = [](double v) { return static_cast<int>(std::lround(v * 255.0)); };
+  double sum = 0.0;
+  std::size_t n = 0;
+  for (std::size_t p = 0; p + 2 < rgb.size(); p += 3)
+  {
+    if (byte(rgb[p]) == byte(background[0]) && byte(rgb[p + 1]) == byte(background[1]) &&
+      byte(rgb[p + 2]) == byte(background[2]))
+    {
+      continue;
+    }
+    sum += byte(rgb[p]) + 256.0 * byte(rgb[p + 1]);
+    ++n;
+  }
+  return n ? sum / static_cast<double>(n) : 0.0;
+}
+
 /// Renders with and without depth-aware clusters and the prepass; checks the images are
 /// identical, the assignment has no false negative, every pixel lies in its cluster, and
 /// returns (evaluated per pixel with, without).
 void CheckCase(const std::string& what, vtkRenderWindow* rw, vtkRenderer* ren,
-  vtkClusteredLightingPass* pass, bool expectDepthAware = true, bool translucent = false)
+  vtkClusteredLightingPass* pass, bool expectDepthAware = true, bool translucent = false,
+  bool multisampled = false)
 {
   pass->SetDepthPrepass(false);
   pass->SetDepthAwareClusters(false);
   pass->SetDebugView(vtkClusteredLightingPass::DEBUG_EVALUATED_COUNT);
   rw->Render();
-  const double evaluatedOff = pass->GetMeanLightsEvaluatedPerPixel();
+  const double evaluatedOff =
+    multisampled ? MeanOfCounts(rw, ren) : pass->GetMeanLightsEvaluatedPerPixel();
   pass->SetDebugView(vtkClusteredLightingPass::DEBUG_NONE);
   rw->Render();
   const std::vector<float> off = ClusteredLightingTest::CapturePixels(rw);
@@ -135,13 +165,15 @@ void CheckCase(const std::string& what, vtkRenderWindow* rw, vtkRenderer* ren,
     what + ": zero false negatives against the reference");
   if (expectDepthAware)
   {
-    const int outside = CountPixelsOutside(pass, rw, ren);
+    // (A multisampled depth buffer reads back resolved: its pixels are not the fragments'.)
+    const int outside = multisampled ? 0 : CountPixelsOutside(pass, rw, ren);
     Check(outside == 0,
       what + ": every visible pixel inside its cluster's depths (" + std::to_string(outside) +
         " outside)");
     pass->SetDebugView(vtkClusteredLightingPass::DEBUG_EVALUATED_COUNT);
     rw->Render();
-    const double evaluatedOn = pass->GetMeanLightsEvaluatedPerPixel();
+    const double evaluatedOn =
+      multisampled ? MeanOfCounts(rw, ren) : pass->GetMeanLightsEvaluatedPerPixel();
     pass->SetDebugView(vtkClusteredLightingPass::DEBUG_NONE);
     std::printf("%s: evaluated per pixel %.2f depth-aware, %.2f without; non-empty clusters "
                 "%.1f%%, visible depths %.3g to %.3g, slices %.3g to %.3g\n",
@@ -333,5 +365,51 @@ int TestClusteredLightingDepthAware(int, char*[])
     "no shader rebuilt in 3 moving frames (" +
       std::to_string(pass->GetNumberOfShaderBuilds() - builds) + ")");
   Check(messages->Errors.empty(), "no error");
+
+  // 11. A multisampled window, as VTK's default asks for: the prepass records each pixel's
+  // range of fragment depths (vtkClusteredLightingSampleDepths), including the
+  // extrapolated pixel-centre depths of primitives that cover only some samples.
+  {
+    vtkNew<vtkRenderWindow> msWindow;
+    vtkNew<vtkRenderer> msRen;
+    ClusteredLightingTest::SetUpTestScene(msWindow, msRen, 300, 200);
+    msWindow->SetMultiSamples(8);
+    msRen->GetActiveCamera()->SetPosition(0.8, 0.6, 6.5); // grazing floor, sphere outline
+    msRen->GetActiveCamera()->SetFocalPoint(0.0, -0.3, 0.0);
+    msRen->ResetCameraClippingRange();
+    vtkNew<vtkClusteredLightingPass> msPass;
+    msPass->SetFalloff(vtkClusteredLightingPass::FALLOFF_WINDOWED);
+    msPass->AutomaticDepthPrepassOff();
+    msPass->AddLightSet(lights);
+    msRen->SetPass(msPass);
+    vtkNew<ClusteredLightingTest::MessageCollector> msMessages;
+    msMessages->Watch(msPass);
+    CheckCase("8 samples", msWindow, msRen, msPass, true, false, true);
+    vtkClusteredLightingInspector inspect(msPass);
+    Check(inspect.GetNumberOfSampleDepthObjects(msRen) > 0,
+      "8 samples: the prepass recorded through its multisampled targets");
+    Check(msMessages->Warnings.size() == 1 &&
+        msMessages->Warnings[0].find("evaluated per pixel could not be read") != std::string::npos,
+      "8 samples: depth-aware clusters on without a warning; one says that the pass cannot "
+      "count the lights evaluated per pixel there");
+
+    // Translucent geometry is shaded at pixel centres that no opaque sample bounds:
+    // depth-aware clusters off, said once, and the image stays the same.
+    vtkNew<vtkActor> msGlass;
+    msGlass->SetMapper(glassMapper);
+    msGlass->GetProperty()->SetOpacity(0.4);
+    msRen->AddActor(msGlass);
+    CheckCase("8 samples, translucent sphere", msWindow, msRen, msPass, false, true, true);
+    Check(msMessages->Warnings.size() == 2 &&
+        msMessages->Warnings[1].find("multisampled and has translucent geometry") !=
+          std::string::npos,
+      "8 samples: one warning names the translucent geometry");
+    msRen->RemoveActor(msGlass);
+
+    msPass->ReleaseGraphicsResources(msWindow);
+    Check(msPass->GetNumberOfGLObjects() == 0 && inspect.GetNumberOfSampleDepthObjects(msRen) == 0,
+      "8 samples: every GL object released");
+    Check(msMessages->Errors.empty(), "8 samples: no error");
+  }
   return Failed == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -50,6 +50,14 @@ public:
     return a && a->ReadBackAssignment(list, master);
   }
 
+  /// GL objects of the depth prepass's multisampled recording for `renderer` (0 when it
+  /// never recorded: a single-sampled framebuffer, or depth-aware clusters off).
+  int GetNumberOfSampleDepthObjects(vtkRenderer* renderer) const
+  {
+    vtkClusteredLightingAssigner* a = this->Pass->GetAssigner(renderer);
+    return a ? a->GetSampleDepths()->GetNumberOfGLObjects() : 0;
+  }
+
   /// (kind, GL name) of every GL object the pass holds, for all renderers.
   void GetGLObjectNames(std::vector<std::pair<unsigned int, unsigned int>>& names) const
   {

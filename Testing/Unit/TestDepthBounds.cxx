@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <random>
@@ -192,6 +193,86 @@ TEST(DepthBounds, CoincidentOffsetsAreCoveredByTheMargin)
       ComputeClusterDepthBounds(s.Image(), P, g, DepthBoundsOptions());
     EXPECT_GT(CountMisses(s, tight, g), 0) << "cOffset " << offset;
   }
+}
+
+// A multisampled framebuffer (vtkClusteredLightingSampleDepths): a pixel's fragments have
+// any window depth from Depth to DepthMax (at an edge, the pixel-centre depth of a
+// primitive extrapolated along its plane). Here each pixel's range is that of its 3x3
+// neighbourhood: every depth in it lies in the pixel's cluster, and without DepthMax the
+// deepest ones do not (the range matters).
+TEST(DepthBounds, MultisampledPixelRangesAreInsideTheirClusters)
+{
+  const glm::dmat4 P = ClusteredLightingTest::Perspective(40.0, 4.0 / 3.0, 0.5, 40.0);
+  ClusterGridParams g =
+    ClusteredLightingTest::MakeGrid(16, 8, 32, 160, 120, 0.5, 40.0, SlicingScheme::Exponential);
+  const Synthetic s = Render(P, 160, 120, 1.0);
+  std::vector<float> lo(s.Depth.size(), 1.0f), hi(s.Depth.size(), 1.0f);
+  for (int y = 0; y < s.Height; ++y)
+  {
+    for (int x = 0; x < s.Width; ++x)
+    {
+      float a = 1.0f, b = 0.0f;
+      for (int dy = -1; dy <= 1; ++dy)
+      {
+        for (int dx = -1; dx <= 1; ++dx)
+        {
+          const int u = std::clamp(x + dx, 0, s.Width - 1);
+          const int v = std::clamp(y + dy, 0, s.Height - 1);
+          const float w = s.Depth[static_cast<std::size_t>(v) * s.Width + u];
+          if (w < 1.0f)
+          {
+            a = std::min(a, w);
+            b = std::max(b, w);
+          }
+        }
+      }
+      const std::size_t p = static_cast<std::size_t>(y) * s.Width + x;
+      lo[p] = a <= b ? a : 1.0f;
+      hi[p] = a <= b ? b : 1.0f;
+    }
+  }
+  DepthImage image{ lo.data(), s.Width, s.Height, hi.data() };
+  const VisibleRange range = MeasureVisibleRange(image, P);
+  ASSERT_TRUE(range.Visible);
+  ChooseSlicingRange(true, range.Nearest, range.Deepest, g);
+  const ClusterDepthBounds b = ComputeClusterDepthBounds(image, P, g, DepthBoundsOptions());
+  image.DepthMax = nullptr;
+  const ClusterDepthBounds nearestOnly = ComputeClusterDepthBounds(image, P, g, {});
+  int misses = 0, missesWithout = 0, edges = 0;
+  for (int y = 0; y < s.Height; ++y)
+  {
+    for (int x = 0; x < s.Width; ++x)
+    {
+      const std::size_t p = static_cast<std::size_t>(y) * s.Width + x;
+      if (!(lo[p] < 1.0f))
+      {
+        continue;
+      }
+      edges += hi[p] - lo[p] > 1e-3f ? 1 : 0;
+      const int tx = ComputeTileIndex(x + 0.5, s.Width, g.TilesX);
+      const int ty = ComputeTileIndex(y + 0.5, s.Height, g.TilesY);
+      for (double t : { 0.0, 0.5, 1.0 })
+      {
+        const double w = lo[p] + t * (double(hi[p]) - lo[p]);
+        const double d = ViewDepthFromWindowDepth(w, P);
+        const int slice = ComputeSliceIndex(d, g);
+        double a = 0.0, c = 0.0;
+        misses += (!b.GetInterval(tx, ty, slice, g.TilesX, a, c) || d < a || d > c) ? 1 : 0;
+        missesWithout +=
+          (!nearestOnly.GetInterval(tx, ty, slice, g.TilesX, a, c) || d < a || d > c) ? 1 : 0;
+      }
+    }
+  }
+  EXPECT_GT(edges, 100); // the sphere's outline and the floor's horizon
+  EXPECT_EQ(misses, 0);
+  EXPECT_GT(missesWithout, 0);
+  // The visible range reaches the deepest fragment, not only the deepest nearest one.
+  float deepest = 0.0f;
+  for (float w : hi)
+  {
+    deepest = w < 1.0f ? std::max(deepest, w) : deepest;
+  }
+  EXPECT_DOUBLE_EQ(range.Deepest, ViewDepthFromWindowDepth(deepest, P));
 }
 
 TEST(DepthBounds, BackgroundKeepsTheFarPlaneInTheLastSlice)

@@ -355,5 +355,8 @@ void vtkClusteredLightingDepthPrepass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Size: " << this->Size[0] << " x " << this->Size[1] << "\n";
   os << indent << "MaximumCoincidentOffset: " << this->MaxCoincidentOffset << "\n";
   os << indent << "UnknownDepthWrites: " << (this->UnknownDepthWrites ? "yes" : "no") << "\n";
+  os << indent << "SampleDepthsRecorded: " << (this->Recorded ? "yes" : "no")
+     << (this->SampleProblem.empty() ? "" : " (") << this->SampleProblem
+     << (this->SampleProblem.empty() ? "" : ")") << "\n";
   os << indent << "RenderTime: " << this->RenderTime << " ms\n";
 }

@@ -22,6 +22,10 @@
  *  - The shader finds a fragment's tile from its own projected position and its slice
  *    in float: a pixel within TileSlack of a tile edge counts in both tiles, and an
  *    interval is added to every slice it touches after the relative widening.
+ *  - A multisampled framebuffer shades a fragment at the pixel centre, whose depth may
+ *    match none of the samples' (an edge extrapolates the primitive's plane): the prepass
+ *    records each pixel's range of fragment depths (vtkClusteredLightingSampleDepths), and
+ *    the pixel counts as [Depth - m, DepthMax + m].
  *  - A pixel left at the cleared depth 1 may still hold a fragment exactly on the far
  *    plane: its tile's last slice includes [depth(1 - m), GetMaxFragmentDepth()].
  *  - Translucent geometry is not in the opaque depth buffer. With Translucent set, a

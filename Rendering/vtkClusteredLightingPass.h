@@ -413,7 +413,8 @@ public:
    * fragments have at the pixel centres, where they are shaded
    * (vtkClusteredLightingSampleDepths); a frame whose depths cannot be used (impostor
    * mappers that write their own depth, an oblique projection, translucent geometry in
-   * a multisampled framebuffer) falls back to whole clusters, with a warning once. Costs the prepass, a depth readback and a CPU pass over its pixels
+   * a multisampled framebuffer) falls back to whole clusters, with a warning once.
+   * Costs the prepass, a depth readback and a CPU pass over its pixels
    * (GetLastDepthPrepassTime, GetLastAssignmentTime); the list and master passes then run
    * whenever the visible depths change. Default is on.
    */

@@ -106,10 +106,10 @@ int vtkClusteredLightingDepthPrepass::RenderDepth(const vtkRenderState* s,
     state->vtkglEnable(GL_DEPTH_TEST);
     // A multisampled framebuffer: the fragments' depths are recorded (with depth-aware
     // clusters), in the recording framebuffer with GL_MAX blending.
-    const bool record = sampleDepths &&
-      vtkClusteredLightingSampleDepths::IsDrawFramebufferMultisampled() &&
-      sampleDepths->Begin(rw, origin, size);
-    if (sampleDepths && !record)
+    const bool multisampled =
+      sampleDepths && vtkClusteredLightingSampleDepths::IsDrawFramebufferMultisampled();
+    const bool record = multisampled && sampleDepths->Begin(rw, origin, size);
+    if (multisampled && !record)
     {
       this->SampleProblem = sampleDepths->GetProblem();
     }
@@ -320,9 +320,9 @@ void vtkClusteredLightingDepthPrepass::AddDepthOutput(std::string& fragmentShade
   {
     return;
   }
-  const std::size_t main = fragmentShader.find("void main()");
+  const std::size_t mainAt = fragmentShader.find("void main()");
   const std::size_t open =
-    main == std::string::npos ? std::string::npos : fragmentShader.find('{', main);
+    mainAt == std::string::npos ? std::string::npos : fragmentShader.find('{', mainAt);
   if (open != std::string::npos)
   {
     fragmentShader.insert(open + 1,

@@ -297,7 +297,8 @@ bool vtkClusteredLightingSampleDepths::Begin(
   else if (targetSamples != samples || QuerySamplePositions(samples) != positions)
   {
     ok = false;
-    this->Problem = "its samples lie elsewhere than those of a multisampled texture";
+    this->Problem = "its samples (their number or positions) differ from a multisampled "
+                    "texture's";
   }
   if (ok)
   {

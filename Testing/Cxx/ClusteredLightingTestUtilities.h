@@ -629,16 +629,23 @@ inline std::size_t CountNonFinitePixels(vtkClusteredLightingPass* pass, vtkRende
  * The checks every clustered frame must pass (after a render): zero false negatives and
  * master mismatches of the GPU assignment against the double-precision reference; every
  * pixel within the derived bound of brute force (CheckAgainstBruteForce, same arguments);
- * no NaN or Inf pixel. Returns the number of failed checks.
+ * no NaN or Inf pixel. Returns the number of failed checks; `comparison`, when given,
+ * receives the brute-force comparison.
  */
 inline int CheckClusteredFrame(vtkClusteredLightingPass* pass, vtkRenderWindow* rw,
-  vtkRenderer* ren, double materialFactor, const char* what, int raySamples = 0)
+  vtkRenderer* ren, double materialFactor, const char* what, int raySamples = 0,
+  BruteForceCheck* comparison = nullptr)
 {
   int failed = 0;
   const auto assignment = CheckAssignment(pass, ren, what);
   failed += (assignment.FalseNegatives != 0 || assignment.MasterMismatches != 0) ? 1 : 0;
-  failed +=
-    CheckAgainstBruteForce(pass, rw, ren, materialFactor, what, raySamples).Violations != 0 ? 1 : 0;
+  const BruteForceCheck check =
+    CheckAgainstBruteForce(pass, rw, ren, materialFactor, what, raySamples);
+  failed += check.Violations != 0 ? 1 : 0;
+  if (comparison)
+  {
+    *comparison = check;
+  }
   const std::size_t nonFinite = CountNonFinitePixels(pass, rw);
   if (nonFinite != 0)
   {

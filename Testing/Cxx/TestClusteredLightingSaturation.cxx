@@ -9,8 +9,11 @@
 //    saturate, at 1/200 almost none;
 //  - at every scale, every pixel is within its derived bound of brute force, with zero
 //    false negatives and no NaN pixel (CheckClusteredFrame). Measured: at 1/8 the exact
-//    sums run on many fragments (109 lights evaluated per pixel against 12 at 1/200), and
-//    the error reaches 5 steps there, inside a stated bound of up to 63.
+//    sums run on many fragments (110 lights evaluated per pixel against 8 at 1/200), and
+//    the error reaches 5 steps there, inside a stated bound of up to 58;
+//  - at every scale, the image is within what the README states for very bright far
+//    fields (at most 5 steps, RMSE under one step): the derived bound alone, up to 458
+//    steps at intensity 1, could not catch a regression.
 #include "ClusteredLightingTestUtilities.h"
 
 #include "vtkActorCollection.h"
@@ -94,8 +97,16 @@ int TestClusteredLightingSaturation(int, char*[])
     {
       Check(saturated < 0.01, "intensity 1/200 saturates almost nothing");
     }
-    Check(ClusteredLightingTest::CheckClusteredFrame(pass, rw, ren, 1.4, what.c_str()) == 0,
+    ClusteredLightingTest::BruteForceCheck comparison;
+    Check(ClusteredLightingTest::CheckClusteredFrame(
+            pass, rw, ren, 1.4, what.c_str(), 0, &comparison) == 0,
       (what + ": within the derived bound of brute force, zero false negatives, finite").c_str());
+    // The derived bound is loose here (up to 458 steps at intensity 1: the far field's
+    // moments bound bright sums poorly), too loose to catch a regression. The README's
+    // statement for very bright far fields is the stricter check: at most 5 steps, RMSE
+    // under one step (measured: 0, 5, 5 and 1 steps; RMSE at most 0.62 steps, at 1/8).
+    Check(255.0 * comparison.Image.MaxAbsError <= 5.0 + 1e-3 && 255.0 * comparison.Image.RMSE < 1.0,
+      (what + ": at most 5 steps from brute force, RMSE under one step").c_str());
     std::printf(
       "%s: lights evaluated per pixel %.1f of %d\n", what.c_str(), MeanEvaluated(pass, rw), n);
   }

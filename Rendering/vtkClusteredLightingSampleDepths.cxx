@@ -44,8 +44,8 @@ void ReleaseFramebuffer(vtkOpenGLFramebufferObject*& fbo, vtkWindow* w)
 }
 
 /// The internal format of the current draw framebuffer's depth buffer, or 0 when it is
-/// not one this class copies (24-bit with or without 8 stencil bits, 32-bit float with or
-/// without, 16-bit).
+/// not one this class copies (24-bit or 32-bit float, each with or without 8 stencil
+/// bits; 32-bit fixed point or 16-bit without).
 GLenum QueryDepthFormat(unsigned int binding)
 {
   const GLenum depth = binding == 0 ? GL_DEPTH : GL_DEPTH_ATTACHMENT;

@@ -39,9 +39,10 @@
  * them in a multisampled framebuffer.
  *
  * Begin() refuses (GetProblem()) when the copy cannot be exact: a depth format other
- * than 24-bit with or without 8 stencil bits, 32-bit float or 16-bit, another sample
- * count, or other sample positions than the window's. The prepass then draws into the
- * window as before and the pass uses whole clusters.
+ * than 24-bit or 32-bit float (each with or without 8 stencil bits), 32-bit fixed point
+ * (VTK 9.1's own render framebuffer) or 16-bit, or a recording target whose sample
+ * count or positions differ from the window's. The prepass then draws into the window as
+ * before and the pass uses whole clusters.
  *
  * @sa vtkClusteredLightingDepthPrepass, vtkClusteredLightingDepthBounds.h
  */

@@ -106,19 +106,18 @@ int vtkClusteredLightingDepthPrepass::RenderDepth(const vtkRenderState* s,
     state->vtkglEnable(GL_DEPTH_TEST);
     // A multisampled framebuffer: the fragments' depths are recorded (with depth-aware
     // clusters), in the recording framebuffer with GL_MAX blending.
-    const bool multisampled =
-      sampleDepths && vtkClusteredLightingSampleDepths::IsDrawFramebufferMultisampled();
-    const bool record = multisampled && sampleDepths->Begin(rw, origin, size);
-    if (multisampled && !record)
+    this->Multisampled = vtkClusteredLightingSampleDepths::IsDrawFramebufferMultisampled();
+    const bool record = sampleDepths && this->Multisampled && sampleDepths->Begin(rw, origin, size);
+    if (sampleDepths && this->Multisampled && !record)
     {
       this->SampleProblem = sampleDepths->GetProblem();
     }
     vtkOpenGLState::ScopedglEnableDisable savedBlend(state, GL_BLEND);
     int blendEquation[2] = { GL_FUNC_ADD, GL_FUNC_ADD };
-    state->vtkglGetIntegerv(GL_BLEND_EQUATION_RGB, blendEquation);
-    state->vtkglGetIntegerv(GL_BLEND_EQUATION_ALPHA, blendEquation + 1);
     if (record)
     {
+      state->vtkglGetIntegerv(GL_BLEND_EQUATION_RGB, blendEquation);
+      state->vtkglGetIntegerv(GL_BLEND_EQUATION_ALPHA, blendEquation + 1);
       state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
       state->vtkglEnable(GL_BLEND);
       state->vtkglBlendEquation(GL_MAX);
@@ -187,7 +186,7 @@ bool vtkClusteredLightingDepthPrepass::ReadDepth(vtkOpenGLRenderWindow* rw)
   this->Depth.clear();
   this->DepthMax.clear();
   vtkOpenGLState* state = rw->GetState();
-  if (vtkClusteredLightingSampleDepths::IsDrawFramebufferMultisampled())
+  if (this->Multisampled)
   {
     this->Problem = "the framebuffer is multisampled and " +
       (this->SampleProblem.empty() ? std::string("its sample depths were not recorded")

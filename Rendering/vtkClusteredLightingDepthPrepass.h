@@ -68,7 +68,8 @@ public:
   int RenderDepth(const vtkRenderState* s, vtkOpenGLRenderWindow* rw, bool finish,
     vtkClusteredLightingSampleDepths* sampleDepths = nullptr);
 
-  /// Reads the viewport's depth back, or takes the multisampled record of RenderDepth.
+  /// Reads the viewport's depth back (from the framebuffer RenderDepth drew into), or
+  /// takes the multisampled record of RenderDepth.
   /// False (with GetProblem()) when it cannot: a multisampled framebuffer whose depths
   /// were not recorded (or a program that did not record them), or a GL error.
   bool ReadDepth(vtkOpenGLRenderWindow* rw);
@@ -110,6 +111,7 @@ private:
   double MaxCoincidentOffset = 0.0;
   bool UnknownDepthWrites = false;
   bool UnrecordedDepths = false; ///< a program drawn without AddDepthOutput's line
+  bool Multisampled = false;     ///< the framebuffer RenderDepth drew into has samples
   bool Recorded = false;         ///< this frame's depths come from the sample record
   std::string SampleProblem;     ///< why the sample depths were not recorded
   std::vector<float> Depth;

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkClusteredLightingFarFieldTextures.h"
+#include "vtkClusteredLightingGLHelpers.h" // for vtkClusteredLightingReleaseObject
 
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkSMPTools.h"
@@ -73,11 +74,9 @@ bool vtkClusteredLightingFarFieldTextures::Build(
   for (int q = 0; q < FarFieldTextures && ok; ++q)
   {
     vtkTextureObject*& tex = this->Textures[static_cast<std::size_t>(q)];
-    if (tex && (resize || q >= textures))
+    if (resize || q >= textures)
     {
-      tex->ReleaseGraphicsResources(rw);
-      tex->Delete();
-      tex = nullptr;
+      vtkClusteredLightingReleaseObject(tex, rw);
     }
     if (q >= textures)
     {
@@ -174,15 +173,7 @@ void vtkClusteredLightingFarFieldTextures::Release(vtkWindow* w)
 {
   for (vtkTextureObject*& tex : this->Textures)
   {
-    if (tex)
-    {
-      if (w)
-      {
-        tex->ReleaseGraphicsResources(w);
-      }
-      tex->Delete();
-      tex = nullptr;
-    }
+    vtkClusteredLightingReleaseObject(tex, w);
   }
   this->Dims = { { 0, 0, 0 } };
   this->SharedColor = glm::dvec3(0.0);

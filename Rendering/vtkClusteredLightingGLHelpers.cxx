@@ -3,6 +3,7 @@
 
 #include "vtkOpenGLBufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLVertexArrayObject.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
 #include "vtk_glew.h" // for GL calls
@@ -66,6 +67,73 @@ bool vtkClusteredLightingSetUniform4i(vtkShaderProgram* program, const char* nam
 }
 
 //------------------------------------------------------------------------------
+vtkClusteredLightingPlainDrawState::vtkClusteredLightingPlainDrawState(vtkOpenGLState* state)
+  : Viewport(state)
+  , ColorMask(state)
+  , Blend(state, GL_BLEND)
+  , Depth(state, GL_DEPTH_TEST)
+  , Scissor(state, GL_SCISSOR_TEST)
+  , Cull(state, GL_CULL_FACE)
+{
+  state->vtkglDisable(GL_BLEND);
+  state->vtkglDisable(GL_DEPTH_TEST);
+  state->vtkglDisable(GL_SCISSOR_TEST);
+  state->vtkglDisable(GL_CULL_FACE);
+  state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+}
+
+//------------------------------------------------------------------------------
+vtkClusteredLightingVertexArray::~vtkClusteredLightingVertexArray()
+{
+  this->Release(nullptr);
+}
+
+void vtkClusteredLightingVertexArray::Bind()
+{
+  if (!this->VAO)
+  {
+    this->VAO = vtkOpenGLVertexArrayObject::New();
+  }
+  this->VAO->Bind();
+  this->Created = true;
+  GLint name = 0;
+  glGetIntegerv(GL_VERTEX_ARRAY_BINDING, &name);
+  this->Name = static_cast<unsigned int>(name);
+}
+
+void vtkClusteredLightingVertexArray::Unbind()
+{
+  if (this->VAO)
+  {
+    this->VAO->Release();
+  }
+}
+
+void vtkClusteredLightingVertexArray::Release(vtkWindow* w)
+{
+  if (this->VAO)
+  {
+    if (w)
+    {
+      this->VAO->ReleaseGraphicsResources();
+    }
+    this->VAO->Delete();
+    this->VAO = nullptr;
+  }
+  this->Created = false;
+  this->Name = 0;
+}
+
+void vtkClusteredLightingVertexArray::GetGLObjectNames(
+  std::vector<std::pair<unsigned int, unsigned int>>& names) const
+{
+  if (this->Created)
+  {
+    names.emplace_back(GL_VERTEX_ARRAY, this->Name);
+  }
+}
+
+//------------------------------------------------------------------------------
 vtkClusteredLightingTextureBuffer::~vtkClusteredLightingTextureBuffer()
 {
   this->Release(nullptr);
@@ -109,15 +177,7 @@ bool vtkClusteredLightingTextureBuffer::Upload(
 //------------------------------------------------------------------------------
 void vtkClusteredLightingTextureBuffer::Release(vtkWindow* w)
 {
-  if (this->Texture)
-  {
-    if (w)
-    {
-      this->Texture->ReleaseGraphicsResources(w);
-    }
-    this->Texture->Delete();
-    this->Texture = nullptr;
-  }
+  vtkClusteredLightingReleaseObject(this->Texture, w);
   if (this->Buffer)
   {
     if (w)

@@ -9,6 +9,12 @@
  *  - vtkClusteredLightingDebugGroup: a scoped GL debug group (glPushDebugGroup), so that
  *    the list and master passes show up by name in GL debuggers and traces; a no-op where
  *    neither GL 4.3 nor KHR_debug is available;
+ *  - vtkClusteredLightingVertexArray: the attribute-free vertex array that full-screen
+ *    and instanced draws bind (core profiles need one), with its GL name for the tests;
+ *  - vtkClusteredLightingReleaseObject: releases and deletes a texture or framebuffer;
+ *  - vtkClusteredLightingPlainDrawState: the state of a draw that writes every texel it
+ *    covers (no blending, depth, scissor or culling, every colour channel), restored
+ *    when it goes out of scope;
  *  - vtkClusteredLightingSetUniform4i: vtkShaderProgram has no ivec4 setter in VTK 9.1;
  *  - vtkClusteredLightingDrawTargetClampsAtOne: whether the colour being drawn clamps.
  *
@@ -17,12 +23,15 @@
 #ifndef vtkClusteredLightingGLHelpers_h
 #define vtkClusteredLightingGLHelpers_h
 
+#include "vtkOpenGLState.h" // for the scoped state of vtkClusteredLightingPlainDrawState
+
 #include <cstddef> // for std::size_t
 #include <utility> // for std::pair
 #include <vector>  // for std::vector
 
 class vtkOpenGLBufferObject;
 class vtkOpenGLRenderWindow;
+class vtkOpenGLVertexArrayObject;
 class vtkShaderProgram;
 class vtkTextureObject;
 class vtkWindow;
@@ -36,6 +45,67 @@ bool vtkClusteredLightingDrawTargetClampsAtOne();
 /// ivec4 uniform setter (the program must be bound). Returns false if the program does
 /// not use the uniform.
 bool vtkClusteredLightingSetUniform4i(vtkShaderProgram* program, const char* name, const int v[4]);
+
+/// Releases `object` (a vtkTextureObject or vtkOpenGLFramebufferObject) in the current
+/// context when `w` is given, deletes it and sets it to null.
+template <class T>
+void vtkClusteredLightingReleaseObject(T*& object, vtkWindow* w)
+{
+  if (object)
+  {
+    if (w)
+    {
+      object->ReleaseGraphicsResources(w);
+    }
+    object->Delete();
+    object = nullptr;
+  }
+}
+
+/// Sets the state of a draw that writes every texel it covers, and restores the
+/// previous state (viewport included, which the caller sets) when destroyed.
+class vtkClusteredLightingPlainDrawState
+{
+public:
+  explicit vtkClusteredLightingPlainDrawState(vtkOpenGLState* state);
+
+private:
+  vtkClusteredLightingPlainDrawState(const vtkClusteredLightingPlainDrawState&) = delete;
+  void operator=(const vtkClusteredLightingPlainDrawState&) = delete;
+
+  vtkOpenGLState::ScopedglViewport Viewport;
+  vtkOpenGLState::ScopedglColorMask ColorMask;
+  vtkOpenGLState::ScopedglEnableDisable Blend;
+  vtkOpenGLState::ScopedglEnableDisable Depth;
+  vtkOpenGLState::ScopedglEnableDisable Scissor;
+  vtkOpenGLState::ScopedglEnableDisable Cull;
+};
+
+/// An attribute-free vertex array (created on the first Bind).
+class vtkClusteredLightingVertexArray
+{
+public:
+  vtkClusteredLightingVertexArray() = default;
+  ~vtkClusteredLightingVertexArray();
+
+  /// Binds it, creating it first if needed.
+  void Bind();
+  /// Binds no vertex array.
+  void Unbind();
+  /// Deletes the GL object (in the current context when w is given).
+  void Release(vtkWindow* w);
+  int GetNumberOfGLObjects() const { return this->Created ? 1 : 0; }
+  /// Appends (GL_VERTEX_ARRAY, name) when it exists.
+  void GetGLObjectNames(std::vector<std::pair<unsigned int, unsigned int>>& names) const;
+
+private:
+  vtkClusteredLightingVertexArray(const vtkClusteredLightingVertexArray&) = delete;
+  void operator=(const vtkClusteredLightingVertexArray&) = delete;
+
+  vtkOpenGLVertexArrayObject* VAO = nullptr;
+  bool Created = false;
+  unsigned int Name = 0; ///< for GetGLObjectNames
+};
 
 /// A float RGBA texture buffer (samplerBuffer in GLSL).
 class vtkClusteredLightingTextureBuffer

@@ -5,7 +5,6 @@
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
-#include "vtkOpenGLVertexArrayObject.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
 #include "vtk_glew.h" // for GL calls
@@ -52,29 +51,13 @@ bool Reallocate(vtkOpenGLRenderWindow* rw, vtkTextureObject*& tex, int size[2], 
   {
     return true;
   }
-  if (tex)
-  {
-    tex->ReleaseGraphicsResources(rw);
-    tex->Delete();
-  }
+  vtkClusteredLightingReleaseObject(tex, rw);
   tex = NewTexelTexture(rw, w, h, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, 1, VTK_UNSIGNED_INT);
   size[0] = tex ? w : 0;
   size[1] = tex ? h : 0;
   return tex != nullptr;
 }
 
-void Release(vtkTextureObject*& tex, vtkWindow* w)
-{
-  if (tex)
-  {
-    if (w)
-    {
-      tex->ReleaseGraphicsResources(w);
-    }
-    tex->Delete();
-    tex = nullptr;
-  }
-}
 }
 
 //------------------------------------------------------------------------------
@@ -87,29 +70,11 @@ vtkClusteredLightingRasterBackend::~vtkClusteredLightingRasterBackend()
 void vtkClusteredLightingRasterBackend::ReleaseGraphicsResources(vtkWindow* w)
 {
   this->Quads.Release(w);
-  Release(this->List, w);
-  Release(this->Master, w);
-  Release(this->ClusterDepths, w);
-  if (this->FBO)
-  {
-    if (w)
-    {
-      this->FBO->ReleaseGraphicsResources(w);
-    }
-    this->FBO->Delete();
-    this->FBO = nullptr;
-  }
-  if (this->VAO)
-  {
-    if (w)
-    {
-      this->VAO->ReleaseGraphicsResources();
-    }
-    this->VAO->Delete();
-    this->VAO = nullptr;
-  }
-  this->VAOCreated = false;
-  this->VAOName = 0;
+  vtkClusteredLightingReleaseObject(this->List, w);
+  vtkClusteredLightingReleaseObject(this->Master, w);
+  vtkClusteredLightingReleaseObject(this->ClusterDepths, w);
+  vtkClusteredLightingReleaseObject(this->FBO, w);
+  this->VAO.Release(w);
   this->ListSize[0] = this->ListSize[1] = 0;
   this->MasterSize[0] = this->MasterSize[1] = 0;
 }
@@ -120,7 +85,7 @@ int vtkClusteredLightingRasterBackend::GetNumberOfGLObjects() const
   return this->Quads.GetNumberOfGLObjects() + ((this->List && this->List->GetHandle()) ? 1 : 0) +
     ((this->Master && this->Master->GetHandle()) ? 1 : 0) +
     ((this->ClusterDepths && this->ClusterDepths->GetHandle()) ? 1 : 0) +
-    ((this->FBO && this->FBO->GetFBOIndex()) ? 1 : 0) + ((this->VAO && this->VAOCreated) ? 1 : 0);
+    ((this->FBO && this->FBO->GetFBOIndex()) ? 1 : 0) + this->VAO.GetNumberOfGLObjects();
 }
 
 void vtkClusteredLightingRasterBackend::GetGLObjectNames(
@@ -138,10 +103,7 @@ void vtkClusteredLightingRasterBackend::GetGLObjectNames(
   {
     names.emplace_back(GL_FRAMEBUFFER, this->FBO->GetFBOIndex());
   }
-  if (this->VAO && this->VAOCreated)
-  {
-    names.emplace_back(GL_VERTEX_ARRAY, this->VAOName);
-  }
+  this->VAO.GetGLObjectNames(names);
 }
 
 //------------------------------------------------------------------------------
@@ -155,15 +117,6 @@ bool vtkClusteredLightingRasterBackend::AllocateTextures(
 }
 
 //------------------------------------------------------------------------------
-void vtkClusteredLightingRasterBackend::BindVAO()
-{
-  this->VAO->Bind();
-  this->VAOCreated = true;
-  GLint name = 0;
-  glGetIntegerv(GL_VERTEX_ARRAY_BINDING, &name);
-  this->VAOName = static_cast<unsigned int>(name);
-}
-
 //------------------------------------------------------------------------------
 bool vtkClusteredLightingRasterBackend::BindTarget(vtkTextureObject* tex)
 {
@@ -186,10 +139,6 @@ bool vtkClusteredLightingRasterBackend::Assign(vtkOpenGLRenderWindow* rw,
   {
     this->FBO = vtkOpenGLFramebufferObject::New();
   }
-  if (!this->VAO)
-  {
-    this->VAO = vtkOpenGLVertexArrayObject::New();
-  }
   this->FBO->SetContext(rw);
 
   // vtkOpenGLState does not track the vertex array binding (VAO::Release binds 0).
@@ -198,17 +147,7 @@ bool vtkClusteredLightingRasterBackend::Assign(vtkOpenGLRenderWindow* rw,
   bool ok = true;
   state->PushFramebufferBindings();
   {
-    vtkOpenGLState::ScopedglViewport savedViewport(state);
-    vtkOpenGLState::ScopedglColorMask savedColorMask(state);
-    vtkOpenGLState::ScopedglEnableDisable savedBlend(state, GL_BLEND);
-    vtkOpenGLState::ScopedglEnableDisable savedDepth(state, GL_DEPTH_TEST);
-    vtkOpenGLState::ScopedglEnableDisable savedScissor(state, GL_SCISSOR_TEST);
-    vtkOpenGLState::ScopedglEnableDisable savedCull(state, GL_CULL_FACE);
-    state->vtkglDisable(GL_BLEND);
-    state->vtkglDisable(GL_DEPTH_TEST);
-    state->vtkglDisable(GL_SCISSOR_TEST);
-    state->vtkglDisable(GL_CULL_FACE);
-    state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    vtkClusteredLightingPlainDrawState plain(state);
     this->FBO->Bind();
     ok = this->RunListPass(rw, layout, view.NumberOfQuads, parameters, lightView) &&
       this->RunMasterPass(rw, layout, parameters.DepthBounds != nullptr);
@@ -230,7 +169,7 @@ bool vtkClusteredLightingRasterBackend::UploadClusterDepths(
     (static_cast<int>(tex->GetWidth()) != bounds.Width ||
       static_cast<int>(tex->GetHeight()) != bounds.Height))
   {
-    Release(tex, rw);
+    vtkClusteredLightingReleaseObject(tex, rw);
   }
   if (!tex)
   {
@@ -324,7 +263,7 @@ bool vtkClusteredLightingRasterBackend::RunListPass(vtkOpenGLRenderWindow* rw,
   program->SetUniform2f("clProjectionW", parameters.ProjectionW);
   program->SetUniform4f("clSlicing", parameters.Slicing);
   program->SetUniform2f("clDepthRange", parameters.DepthRange);
-  this->BindVAO();
+  this->VAO.Bind();
   // vtkOpenGLState does not track the logic op: restore exactly what was set.
   const GLboolean logicOp = glIsEnabled(GL_COLOR_LOGIC_OP);
   GLint logicOpMode = GL_COPY;
@@ -337,7 +276,7 @@ bool vtkClusteredLightingRasterBackend::RunListPass(vtkOpenGLRenderWindow* rw,
   {
     glDisable(GL_COLOR_LOGIC_OP);
   }
-  this->VAO->Release();
+  this->VAO.Unbind();
   lightView->Deactivate();
   quads->Deactivate();
   this->DeactivateDepths(depthAware);
@@ -369,9 +308,9 @@ bool vtkClusteredLightingRasterBackend::RunMasterPass(
   vtkClusteredLightingSetUniform4i(program, "clGrid", grid);
   program->SetUniformi("clBatches", layout.Batches);
   program->SetUniformi("clMasterTexels", std::max(layout.MasterTexelsPerCluster, 1));
-  this->BindVAO();
+  this->VAO.Bind();
   glDrawArrays(GL_TRIANGLES, 0, 3);
-  this->VAO->Release();
+  this->VAO.Unbind();
   this->List->Deactivate();
   this->DeactivateDepths(depthAware);
   return true;
@@ -380,7 +319,7 @@ bool vtkClusteredLightingRasterBackend::RunMasterPass(
 //------------------------------------------------------------------------------
 void vtkClusteredLightingRasterBackend::ReleaseDepthResources(vtkOpenGLRenderWindow* rw)
 {
-  Release(this->ClusterDepths, rw);
+  vtkClusteredLightingReleaseObject(this->ClusterDepths, rw);
 }
 
 //------------------------------------------------------------------------------

@@ -28,10 +28,9 @@
 #define vtkClusteredLightingRasterBackend_h
 
 #include "vtkClusteredLightingAssignmentBackend.h"
-#include "vtkClusteredLightingGLHelpers.h" // for vtkClusteredLightingTextureBuffer
+#include "vtkClusteredLightingGLHelpers.h" // for vtkClusteredLightingTextureBuffer, ...VertexArray
 
 class vtkOpenGLFramebufferObject;
-class vtkOpenGLVertexArrayObject;
 class vtkShaderProgram;
 
 class vtkClusteredLightingRasterBackend : public vtkClusteredLightingAssignmentBackend
@@ -82,16 +81,13 @@ private:
   void DeactivateDepths(bool depthAware);
   bool UploadClusterDepths(
     vtkOpenGLRenderWindow* rw, const vtkClusteredLighting::ClusterDepthBounds& bounds);
-  void BindVAO();
 
   vtkClusteredLightingTextureBuffer Quads;
   vtkTextureObject* List = nullptr;
   vtkTextureObject* Master = nullptr;
   vtkTextureObject* ClusterDepths = nullptr; ///< RG32F, depth-aware clusters only
   vtkOpenGLFramebufferObject* FBO = nullptr;
-  vtkOpenGLVertexArrayObject* VAO = nullptr;
-  bool VAOCreated = false;
-  unsigned int VAOName = 0; ///< for GetGLObjectNames
+  vtkClusteredLightingVertexArray VAO;
   int ListSize[2] = { 0, 0 };
   int MasterSize[2] = { 0, 0 };
 };

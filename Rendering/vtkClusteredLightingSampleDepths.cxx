@@ -5,7 +5,6 @@
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
-#include "vtkOpenGLVertexArrayObject.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
 #include "vtk_glew.h" // for GL calls
@@ -17,32 +16,6 @@
 
 namespace
 {
-void ReleaseTexture(vtkTextureObject*& tex, vtkWindow* w)
-{
-  if (tex)
-  {
-    if (w)
-    {
-      tex->ReleaseGraphicsResources(w);
-    }
-    tex->Delete();
-    tex = nullptr;
-  }
-}
-
-void ReleaseFramebuffer(vtkOpenGLFramebufferObject*& fbo, vtkWindow* w)
-{
-  if (fbo)
-  {
-    if (w)
-    {
-      fbo->ReleaseGraphicsResources(w);
-    }
-    fbo->Delete();
-    fbo = nullptr;
-  }
-}
-
 /// The internal format of the current draw framebuffer's depth buffer, or 0 when it is
 /// not one this class copies (24-bit or 32-bit float, each with or without 8 stencil
 /// bits; 32-bit fixed point or 16-bit without).
@@ -128,26 +101,16 @@ void vtkClusteredLightingSampleDepths::Release(vtkWindow* win)
   {
     w->PushContext();
   }
-  ReleaseFramebuffer(this->Target, w);
-  ReleaseFramebuffer(this->ResolveTarget, w);
-  ReleaseTexture(this->Depth, w);
-  ReleaseTexture(this->Samples, w);
-  ReleaseTexture(this->Range, w);
-  if (this->VAO)
-  {
-    if (w)
-    {
-      this->VAO->ReleaseGraphicsResources();
-    }
-    this->VAO->Delete();
-    this->VAO = nullptr;
-  }
+  vtkClusteredLightingReleaseObject(this->Target, w);
+  vtkClusteredLightingReleaseObject(this->ResolveTarget, w);
+  vtkClusteredLightingReleaseObject(this->Depth, w);
+  vtkClusteredLightingReleaseObject(this->Samples, w);
+  vtkClusteredLightingReleaseObject(this->Range, w);
+  this->VAO.Release(w);
   if (push)
   {
     w->PopContext();
   }
-  this->VAOCreated = false;
-  this->VAOName = 0;
   this->TargetSize[0] = this->TargetSize[1] = 0;
   this->SampleCount = 0;
   this->DepthFormat = 0;
@@ -166,7 +129,7 @@ int vtkClusteredLightingSampleDepths::GetNumberOfGLObjects() const
   {
     n += (fbo && fbo->GetFBOIndex()) ? 1 : 0;
   }
-  return n + ((this->VAO && this->VAOCreated) ? 1 : 0);
+  return n + this->VAO.GetNumberOfGLObjects();
 }
 
 void vtkClusteredLightingSampleDepths::GetGLObjectNames(
@@ -186,10 +149,7 @@ void vtkClusteredLightingSampleDepths::GetGLObjectNames(
       names.emplace_back(GL_FRAMEBUFFER, fbo->GetFBOIndex());
     }
   }
-  if (this->VAO && this->VAOCreated)
-  {
-    names.emplace_back(GL_VERTEX_ARRAY, this->VAOName);
-  }
+  this->VAO.GetGLObjectNames(names);
 }
 
 //------------------------------------------------------------------------------
@@ -208,9 +168,9 @@ bool vtkClusteredLightingSampleDepths::Allocate(
   {
     return true;
   }
-  ReleaseFramebuffer(this->Target, rw);
-  ReleaseTexture(this->Depth, rw);
-  ReleaseTexture(this->Samples, rw);
+  vtkClusteredLightingReleaseObject(this->Target, rw);
+  vtkClusteredLightingReleaseObject(this->Depth, rw);
+  vtkClusteredLightingReleaseObject(this->Samples, rw);
   this->TargetSize[0] = this->TargetSize[1] = 0;
 
   auto newTexture = [rw, samples]()
@@ -235,8 +195,8 @@ bool vtkClusteredLightingSampleDepths::Allocate(
     this->Depth->GetTarget() != GL_TEXTURE_2D_MULTISAMPLE ||
     this->Samples->GetTarget() != GL_TEXTURE_2D_MULTISAMPLE)
   {
-    ReleaseTexture(this->Depth, rw);
-    ReleaseTexture(this->Samples, rw);
+    vtkClusteredLightingReleaseObject(this->Depth, rw);
+    vtkClusteredLightingReleaseObject(this->Samples, rw);
     return false;
   }
   this->Target = vtkOpenGLFramebufferObject::New();
@@ -360,8 +320,8 @@ bool vtkClusteredLightingSampleDepths::Resolve(
     (static_cast<int>(this->Range->GetWidth()) != w ||
       static_cast<int>(this->Range->GetHeight()) != h))
   {
-    ReleaseFramebuffer(this->ResolveTarget, rw);
-    ReleaseTexture(this->Range, rw);
+    vtkClusteredLightingReleaseObject(this->ResolveTarget, rw);
+    vtkClusteredLightingReleaseObject(this->Range, rw);
   }
   if (!this->Range)
   {
@@ -375,7 +335,7 @@ bool vtkClusteredLightingSampleDepths::Resolve(
     if (!this->Range->Allocate2D(
           static_cast<unsigned int>(w), static_cast<unsigned int>(h), 2, VTK_FLOAT))
     {
-      ReleaseTexture(this->Range, rw);
+      vtkClusteredLightingReleaseObject(this->Range, rw);
       this->Problem = "the texture for its pixels' depth ranges could not be allocated";
       return false;
     }
@@ -384,10 +344,6 @@ bool vtkClusteredLightingSampleDepths::Resolve(
   {
     this->ResolveTarget = vtkOpenGLFramebufferObject::New();
     this->ResolveTarget->SetContext(rw);
-  }
-  if (!this->VAO)
-  {
-    this->VAO = vtkOpenGLVertexArrayObject::New();
   }
   vtkShaderProgram* program = rw->GetShaderCache()->ReadyShaderProgram(
     vtkClusteredLightingFullScreenVS, vtkClusteredLightingSampleDepthsFS, "");
@@ -398,15 +354,7 @@ bool vtkClusteredLightingSampleDepths::Resolve(
   }
   bool ok = false;
   {
-    vtkOpenGLState::ScopedglViewport savedViewport(state);
-    vtkOpenGLState::ScopedglColorMask savedColorMask(state);
-    vtkOpenGLState::ScopedglEnableDisable savedBlend(state, GL_BLEND);
-    vtkOpenGLState::ScopedglEnableDisable savedDepth(state, GL_DEPTH_TEST);
-    vtkOpenGLState::ScopedglEnableDisable savedScissor(state, GL_SCISSOR_TEST);
-    state->vtkglDisable(GL_BLEND);
-    state->vtkglDisable(GL_DEPTH_TEST);
-    state->vtkglDisable(GL_SCISSOR_TEST);
-    state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    vtkClusteredLightingPlainDrawState plain(state);
     this->ResolveTarget->Bind(GL_DRAW_FRAMEBUFFER);
     this->ResolveTarget->AddColorAttachment(0, this->Range);
     this->ResolveTarget->ActivateDrawBuffers(1);
@@ -417,13 +365,9 @@ bool vtkClusteredLightingSampleDepths::Resolve(
       program->SetUniformi("clSamples", this->Samples->GetTextureUnit());
       program->SetUniformi("clSampleCount", this->SampleCount);
       program->SetUniform2i("clOrigin", this->Origin);
-      this->VAO->Bind();
-      this->VAOCreated = true;
-      GLint name = 0;
-      glGetIntegerv(GL_VERTEX_ARRAY_BINDING, &name);
-      this->VAOName = static_cast<unsigned int>(name);
+      this->VAO.Bind();
       glDrawArrays(GL_TRIANGLES, 0, 3);
-      this->VAO->Release();
+      this->VAO.Unbind();
       this->Samples->Deactivate();
 
       const std::size_t n = static_cast<std::size_t>(w) * h;

@@ -49,7 +49,8 @@
 #ifndef vtkClusteredLightingSampleDepths_h
 #define vtkClusteredLightingSampleDepths_h
 
-#include "vtkWeakPointer.h" // for vtkWeakPointer
+#include "vtkClusteredLightingGLHelpers.h" // for vtkClusteredLightingVertexArray
+#include "vtkWeakPointer.h"                // for vtkWeakPointer
 
 #include <string>  // for std::string
 #include <utility> // for std::pair
@@ -57,7 +58,6 @@
 
 class vtkOpenGLFramebufferObject;
 class vtkOpenGLRenderWindow;
-class vtkOpenGLVertexArrayObject;
 class vtkTextureObject;
 class vtkWindow;
 
@@ -103,9 +103,7 @@ private:
   vtkTextureObject* Samples = nullptr;
   vtkOpenGLFramebufferObject* ResolveTarget = nullptr; ///< per pixel (lo, hi)
   vtkTextureObject* Range = nullptr;
-  vtkOpenGLVertexArrayObject* VAO = nullptr;
-  bool VAOCreated = false;
-  unsigned int VAOName = 0;
+  vtkClusteredLightingVertexArray VAO;
   int TargetSize[2] = { 0, 0 };
   int SampleCount = 0;
   int DepthFormat = 0;

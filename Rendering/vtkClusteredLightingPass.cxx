@@ -266,6 +266,7 @@ struct vtkClusteredLightingPass::vtkInternals
   std::string ReportedDepthProblem;        ///< why depth-aware clusters are off, said once
   bool ReportedLoopLimit = false;          ///< the llvmpipe loop limit was reported
   bool ReportedUncountedPixels = false;    ///< a debug view's counts could not be read
+  bool ReportedPbrFarField = false;        ///< PBR actors sum their far light exactly
 
   vtkClusteredLightingAssigner* GetAssigner(vtkRenderer* ren)
   {
@@ -1026,6 +1027,20 @@ void vtkClusteredLightingPass::InjectShadingCode(std::string& fragmentShader, vt
       property->GetSpecular() > 0.0 && std::max(sc[0], std::max(sc[1], sc[2])) > 0.0;
   }
 
+  // Order-2 moments bound a GGX lobe loosely, so PBR fragments lit by a far field mostly
+  // sum it exactly (docs/far-field.md, "PBR actors"): said once, with what to do instead.
+  if (variant.PBR && variant.FarField && this->FarFieldTolerance < 1.0 &&
+    !this->Internals->ReportedPbrFarField)
+  {
+    vtkWarningMacro("A PBR actor is lit by the far field: where the far light's order-2 "
+                    "moments cannot bound VTK's PBR terms within FarFieldTolerance (for "
+                    "lights as users write them, most fragments), its far parts are summed "
+                    "exactly, at about brute force's cost. For speed, give the lights an "
+                    "explicit radius and SetFalloffToWindowed() (no far field), or "
+                    "SetFarFieldTolerance(1) (the moments' estimate alone: not within a "
+                    "stated bound, off by up to tens of steps at grazing views).");
+    this->Internals->ReportedPbrFarField = true;
+  }
   // Lit surfaces have VTK's VC position and normal; PBR surfaces accumulate into Lo.
   const bool lit = fragmentShader.find("normalVCVSOutput") != std::string::npos &&
     fragmentShader.find("vertexVCVSOutput") != std::string::npos;

@@ -309,9 +309,12 @@ public:
    * saturates (its lowest value is below 1, its highest above), the far parts are summed
    * exactly, light by light. Bright far fields (lights that light the whole scene) need
    * it on a few fragments; faint ones never. PBR actors (tone-mapped) use the width
-   * alone. The exact sum stops once the fragment saturates where the colour is certain
-   * to clamp at 1 (see the class description). 1 turns it off. Range [0, 1]. Default is
-   * 2/255.
+   * alone, of an interval that holds VTK's whole PBR terms (each light's Fresnel and GGX
+   * specular): order-2 moments bound a GGX lobe loosely, so most PBR fragments lit by a
+   * bright far field sum exactly, at about brute force's cost (docs/far-field.md, "PBR
+   * actors"). The exact sum stops once the fragment saturates where the colour is certain
+   * to clamp at 1 (see the class description). 1 turns it off (PBR actors then take the
+   * moments' estimate, far from exact at grazing views). Range [0, 1]. Default is 2/255.
    */
   vtkSetClampMacro(FarFieldTolerance, double, 0.0, 1.0);
   vtkGetMacro(FarFieldTolerance, double);

@@ -11,7 +11,8 @@ up to about 0.7 away, and their sum lights the scene without saturating it. Rend
 pass's defaults (far field on), with the far field off, and with brute force (every
 light, exact); prints each frame time and the clustered images' error against brute
 force in 8-bit steps and writes the three images. Exits with status 1 if the far field
-does not bring the image closer to brute force.
+does not bring the image closer to brute force. --pbr METALLIC (and --roughness) makes
+both actors PBR.
 
     PYTHONPATH=build/lib/python3/dist-packages \\
       scripts/with-display.sh /usr/bin/python3 Examples/Python/user_lights.py
@@ -34,7 +35,7 @@ from vtkmodules.vtkRenderingCore import (
 import numpy
 
 
-def add_actor(renderer, source, color, specular=0.0):
+def add_actor(renderer, source, color, specular=0.0, pbr=None):
     mapper = vtkPolyDataMapper()
     mapper.SetInputConnection(source.GetOutputPort())
     actor = vtkActor()
@@ -42,6 +43,10 @@ def add_actor(renderer, source, color, specular=0.0):
     actor.GetProperty().SetColor(*color)
     actor.GetProperty().SetSpecular(specular)
     actor.GetProperty().SetSpecularPower(20)
+    if pbr is not None:  # (metallic, roughness)
+        actor.GetProperty().SetInterpolationToPBR()
+        actor.GetProperty().SetMetallic(pbr[0])
+        actor.GetProperty().SetRoughness(pbr[1])
     renderer.AddActor(actor)
 
 
@@ -79,7 +84,11 @@ def main():
     parser.add_argument("--prefix", default="user-lights", help="prefix of the PNGs written")
     parser.add_argument("--frames", type=int, default=3)
     parser.add_argument("--intensity", type=float, default=0.02)
+    parser.add_argument("--pbr", type=float, metavar="METALLIC",
+                        help="PBR actors with this metallic factor (default: Phong)")
+    parser.add_argument("--roughness", type=float, default=0.5, help="with --pbr")
     args = parser.parse_args()
+    pbr = None if args.pbr is None else (args.pbr, args.roughness)
 
     renderer = vtkRenderer()
     renderer.AutomaticLightCreationOff()
@@ -88,12 +97,12 @@ def main():
     floor.SetPoint1(4, -1, -4)
     floor.SetPoint2(-4, -1, 4)
     floor.SetResolution(64, 64)
-    add_actor(renderer, floor, (0.8, 0.8, 0.8))
+    add_actor(renderer, floor, (0.8, 0.8, 0.8), pbr=pbr)
     sphere = vtkSphereSource()
     sphere.SetRadius(0.6)
     sphere.SetThetaResolution(64)
     sphere.SetPhiResolution(48)
-    add_actor(renderer, sphere, (0.9, 0.85, 0.8), specular=0.5)
+    add_actor(renderer, sphere, (0.9, 0.85, 0.8), specular=0.5, pbr=pbr)
 
     points = vtkPointSource()
     points.SetNumberOfPoints(args.lights)

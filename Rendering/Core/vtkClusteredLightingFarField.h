@@ -693,6 +693,91 @@ inline glm::dvec3 EvaluateFarSpecular(
 }
 
 /**
+ * PBR (VTK's isotropic terms, vtkPBRFunctions.glsl). A PBR fragment's far light is the sum
+ * over far lights of g (diffuse + specular) N.L, whose diffuse holds each light's own
+ * Fresnel F(H.L) and whose specular is a GGX lobe about the half vector. Neither is a
+ * function of one direction's cosine, so the shading code brackets the sum from the
+ * moments instead (ComputePbrFarInterval, mirrored in vtkClusteredLightingShadingImpl.glsl):
+ *   - Fresnel: F(H.L) = F0 + (F90 - F0) (1 - H.L)^5 lies between F0 and F90, so the
+ *     diffuse lies between (1 - m)(1 - max(F0, F90)) albedo / pi and
+ *     (1 - m)(1 - min(F0, F90)) albedo / pi times N.L, whose sum the clamped cosine's
+ *     interval brackets (ApplyMomentKernel), plus 1e-5 S for VTK's N.L >= 1e-5;
+ *   - specular times N.L is at least 0 and at most ComputePbrSpecularBound times g.
+ * Where that interval is wider than FarFieldTolerance, the fragment sums its far parts
+ * exactly with VTK's own terms (EvaluatePbrTerms), otherwise an estimate inside it stands.
+ */
+struct PbrMaterial
+{
+  glm::dvec3 Albedo{ 1.0 };
+  double Roughness = 0.5;
+  double Metallic = 0.0;
+  glm::dvec3 F0{ 0.04 };
+  glm::dvec3 F90{ 1.0 };
+};
+
+/// Mirrors clPbrTerms: VTK's PBR (diffuse + specular) * N.L for the unit direction L from
+/// the fragment to the light, unit normal N and view V (NdV = clamp(N.V, 1e-5, 1)).
+inline glm::dvec3 EvaluatePbrTerms(
+  const glm::dvec3& L, const glm::dvec3& N, const glm::dvec3& V, double NdV, const PbrMaterial& m)
+{
+  const glm::dvec3 H = glm::normalize(V + L);
+  const double NdL = std::min(std::max(glm::dot(N, L), 1e-5), 1.0);
+  const double NdH = std::min(std::max(glm::dot(N, H), 1e-5), 1.0);
+  const double HdL = std::min(std::max(glm::dot(H, L), 1e-5), 1.0);
+  const double pi = glm::pi<double>();
+  const double a = m.Roughness * m.Roughness; // D_GGX
+  const double a4 = a * a;
+  const double d = (NdH * a4 - NdH) * NdH + 1.0;
+  const double D = a4 / (pi * d * d);
+  const double a2 = m.Roughness * m.Roughness; // V_SmithCorrelated
+  const double ggxV = NdL * std::sqrt(a2 + NdV * (NdV - a2 * NdV));
+  const double ggxL = NdV * std::sqrt(a2 + NdL * (NdL - a2 * NdL));
+  const double Vis = 0.5 / (ggxV + ggxL);
+  const glm::dvec3 F = m.F0 + (m.F90 - m.F0) * std::pow(1.0 - HdL, 5.0);
+  const glm::dvec3 spec = (D * Vis) * F;
+  const glm::dvec3 diff = (1.0 - m.Metallic) * (glm::dvec3(1.0) - F) * m.Albedo / pi;
+  return (diff + spec) * NdL;
+}
+
+/**
+ * Mirrors clPbrSpecularBound: an upper end of VTK's isotropic specular times N.L over every
+ * light direction, per channel. D_GGX = a^4 / (pi d^2) with d = 1 - N.H^2 (1 - a^4) >= a^4,
+ * so D <= 1 / (pi a^4) (a the roughness); V_SmithCorrelated times N.L is at most
+ * 0.5 / sqrt(a^2 + NdV^2 (1 - a^2)) (the denominator's second term dropped); F <= max(F0,
+ * F90). Loose for smooth materials (their lobe is narrower than any order-2 moment can
+ * tell), which then sum their far parts exactly.
+ */
+inline glm::dvec3 ComputePbrSpecularBound(
+  double NdV, double roughness, const glm::dvec3& F0, const glm::dvec3& F90)
+{
+  const double pi = glm::pi<double>();
+  const double a2 = roughness * roughness;
+  const double dMax = 1.0 / (pi * std::max(a2 * a2, 1e-12));
+  const double vMax = 0.5 / std::sqrt(std::max(a2 + NdV * NdV * (1.0 - a2), 1e-12));
+  return dMax * vMax * glm::max(F0, F90);
+}
+
+/**
+ * Mirrors the PBR far interval of the shading code for one channel c of the moments m
+ * (FarFieldMomentsPerChannel doubles): the sum over far lights of g EvaluatePbrTerms lies in
+ * [lower, upper] (see PbrMaterial).
+ */
+inline void ComputePbrFarInterval(const double* m, int c, const glm::dvec3& N, double NdV,
+  const PbrMaterial& mat, double& lower, double& upper)
+{
+  const double pi = glm::pi<double>();
+  double dLow = 0.0, dHigh = 0.0;
+  ApplyMomentKernel(m, ComputeLobeKernel(1.0), N, false, 1.0, &dLow, &dHigh);
+  const double lambert = (1.0 - mat.Metallic) * mat.Albedo[c] / pi;
+  const double fMin = std::min(mat.F0[c], mat.F90[c]);
+  const double fMax = std::max(mat.F0[c], mat.F90[c]);
+  const double S = m[0];
+  lower = lambert * std::max(1.0 - fMax, 0.0) * dLow;
+  upper = lambert * std::max(1.0 - fMin, 0.0) * (dHigh + 1e-5 * S) +
+    ComputePbrSpecularBound(NdV, mat.Roughness, mat.F0, mat.F90)[c] * S;
+}
+
+/**
  * The node moments as the shading code reads them: 7 RGBA32F 3D textures of the grid's
  * dimensions, texel (i, j, k) of texture q holding moments 4q..4q+3 in moment-major order
  * (moment m of channel c at 3 m + c: S, Vx, Vy, Vz, Txx, Tyy, Txy, Txz, Tyz, each as RGB;

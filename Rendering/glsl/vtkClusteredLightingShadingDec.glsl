@@ -257,6 +257,21 @@ bool clShadeLight(int i, vec3 P, vec3 N, vec3 V, float power, inout vec3 diffuse
 }
 //CL_ENDIF
 //CL_IF(PBR)
+// VTK's positional-light PBR terms (isotropic, vtkPBRFunctions.glsl) for the unit
+// direction L from the fragment to the light: (diffuse + specular) * N.L.
+vec3 clPbrTerms(vec3 L, vec3 N, vec3 V, float NdV, vec3 albedo, float roughness,
+  float metallic, vec3 F0, vec3 F90)
+{
+  vec3 H = normalize(V + L);
+  float NdL = clamp(dot(N, L), 1e-5, 1.0);
+  float NdH = clamp(dot(N, H), 1e-5, 1.0);
+  float HdL = clamp(dot(H, L), 1e-5, 1.0);
+  vec3 F;
+  vec3 spec = SpecularIsotropic(NdH, NdV, NdL, HdL, roughness, F0, F90, F);
+  vec3 diff = (1.0 - metallic) * (1.0 - F) * DiffuseLambert(albedo);
+  return (diff + spec) * NdL;
+}
+
 // VTK's positional-light PBR terms (isotropic, vtkPBRFunctions.glsl).
 bool clShadeLight(int i, vec3 P, vec3 N, vec3 V, float NdV, vec3 albedo, float roughness,
   float metallic, vec3 F0, vec3 F90, inout vec3 Lo)
@@ -268,15 +283,7 @@ bool clShadeLight(int i, vec3 P, vec3 N, vec3 V, float NdV, vec3 albedo, float r
   {
     return false;
   }
-  vec3 L = -Lin;
-  vec3 H = normalize(V + L);
-  float NdL = clamp(dot(N, L), 1e-5, 1.0);
-  float NdH = clamp(dot(N, H), 1e-5, 1.0);
-  float HdL = clamp(dot(H, L), 1e-5, 1.0);
-  vec3 F;
-  vec3 spec = SpecularIsotropic(NdH, NdV, NdL, HdL, roughness, F0, F90, F);
-  vec3 diff = (1.0 - metallic) * (1.0 - F) * DiffuseLambert(albedo);
-  Lo += color * att * (diff + spec) * NdL;
+  Lo += color * att * clPbrTerms(-Lin, N, V, NdV, albedo, roughness, metallic, F0, F90);
   return true;
 }
 //CL_ENDIF
@@ -315,6 +322,45 @@ void clBruteForceLight(int i, vec3 P, vec3 N, vec3 V, float NdV, vec3 albedo, fl
 //CL_ENDIF
 //CL_ENDIF
 //CL_IF(FAR_FIELD)
+// The light k places after `start` in the stored order, wrapping around.
+int clFarIndex(int k, int start)
+{
+  int i = start + k;
+  return i >= clLightCount ? i - clLightCount : i;
+}
+
+//CL_IF(PBR)
+// Mirrors ComputePbrSpecularBound: an upper end of VTK's isotropic specular times N.L over
+// every light direction, per channel: D_GGX <= 1 / (pi a^4) (a the roughness),
+// V_SmithCorrelated * N.L <= 0.5 / sqrt(a^2 + NdV^2 (1 - a^2)) (its second term dropped),
+// F_Schlick <= max(F0, F90).
+vec3 clPbrSpecularBound(float NdV, float roughness, vec3 F0, vec3 F90)
+{
+  float a2 = roughness * roughness;
+  float dMax = 1.0 / (3.14159265 * max(a2 * a2, 1e-12));
+  float vMax = 0.5 / sqrt(max(a2 + NdV * NdV * (1.0 - a2), 1e-12));
+  return dMax * vMax * max(F0, F90);
+}
+
+// Adds the far part of the light k places after `start` (wrapping around), if there is
+// one, with VTK's whole PBR terms (diffuse with the light's own Fresnel, and specular), and
+// counts it.
+void clAddFarPart(int k, int start, vec3 P, vec3 N, vec3 V, float NdV, vec3 albedo,
+  float roughness, float metallic, vec3 F0, vec3 F90, inout vec3 Lo, inout int count)
+{
+  if (k < clLightCount)
+  {
+    vec3 Lin;
+    float att;
+    vec3 color;
+    if (clFarLight(clFarIndex(k, start), P, Lin, att, color))
+    {
+      Lo += color * att * clPbrTerms(-Lin, N, V, NdV, albedo, roughness, metallic, F0, F90);
+    }
+    ++count;
+  }
+}
+//CL_ELSE
 // Adds the far part of the light k places after `start` (wrapping around), if there is
 // one, to the sums (specular with Phong's power), and counts it.
 void clAddFarPart(int k, int start, vec3 P, vec3 N, vec3 V, float power, inout vec3 diffuse,
@@ -322,23 +368,20 @@ void clAddFarPart(int k, int start, vec3 P, vec3 N, vec3 V, float power, inout v
 {
   if (k < clLightCount)
   {
-    int i = start + k;
-    i -= i >= clLightCount ? clLightCount : 0;
     vec3 L;
     float att;
     vec3 color;
-    if (clFarLight(i, P, L, att, color))
+    if (clFarLight(clFarIndex(k, start), P, L, att, color))
     {
       float df = max(0.0, att * dot(N, -L));
       diffuse += df * color;
-//CL_IF(PHONG)
 //CL_IF(SPECULAR)
       float rv = max(0.0, dot(reflect(L, N), V));
       specular += sign(df) * att * (rv > 0.0 ? pow(rv, power) : 0.0) * color;
-//CL_ENDIF
 //CL_ENDIF
     }
     ++count;
   }
 }
+//CL_ENDIF
 //CL_ENDIF

@@ -187,22 +187,41 @@
       (clDiffuseHigh - clDiffuseLow) * diffuseColor + (clSpecularHigh - clSpecularLow) * specularColor;
 //CL_ENDIF
 //CL_IF(PBR)
-    // Lambert diffuse with the view's Fresnel (VTK's PBR terms at N.V); the far field's
-    // PBR specular is left out (docs/far-field.md).
+    // VTK's PBR terms of the far light, estimated from the moments: Lambert diffuse with
+    // the Fresnel at N.V, and the specular as a Phong lobe about the mirrored view whose
+    // width matches GGX's (power 1 / (2 a^4)) and whose peak is the specular at the mirror
+    // direction. Its interval: each light's Fresnel lies between F0 and F90, and its
+    // specular times N.L between 0 and clPbrSpecularBound (docs/far-field.md, "PBR").
+    vec3 clFmin = min(F0, F90);
+    vec3 clFmax = max(F0, F90);
+    vec3 clLambert = (1.0 - metallic) * DiffuseLambert(albedo);
     vec3 clF = F0 + (F90 - F0) * pow(1.0 - NdV, 5.0);
-    vec3 clDiffuseScale = (1.0 - metallic) * (1.0 - clF) * DiffuseLambert(albedo);
+    vec3 clDiffuseScale = clLambert * (1.0 - clF);
+    float clA2 = roughness * roughness;
+    float clPower = max(0.5 / max(clA2 * clA2, 1e-12), 1.0);
+    vec3 clR = 2.0 * NdV * clN - V;
+    vec3 clLobeLow, clLobeHigh;
+    vec3 clLobe = clApplyFarKernel(clLobeKernel(clPower), clWorldFromVC * clR, clS, clVx, clVy,
+      clVz, clTxx, clTyy, clTxy, clTxz, clTyz, true, clPower, clLobeLow, clLobeHigh);
+    vec3 clPeakF;
+    vec3 clPeak = SpecularIsotropic(1.0, NdV, NdV, NdV, roughness, F0, F90, clPeakF) * NdV;
+    // VTK clamps N.L at 1e-5 from below, so lights behind the surface add a little.
+    vec3 clLowest = clLambert * max(1.0 - clFmax, vec3(0.0)) * clDiffuseLow;
+    vec3 clHighest = clLambert * max(1.0 - clFmin, vec3(0.0)) * (clDiffuseHigh + 1e-5 * clS) +
+      clPbrSpecularBound(NdV, roughness, F0, F90) * clS;
+    vec3 clFarLo = clamp(clDiffuseScale * clFarDiffuse + clPeak * clLobe, clLowest, clHighest);
     // No saturation test before PBR's tone mapping: exact wherever uncertain by more
     // than the tolerance.
-    vec3 clLowest = vec3(0.0);
-    vec3 clUncertain = (clDiffuseHigh - clDiffuseLow) * clDiffuseScale;
+    vec3 clUncertain = clHighest - clLowest;
+    clLowest = vec3(0.0);
+    clHighest = vec3(2.0);
 //CL_ENDIF
     // Where the moments cannot tell whether the fragment saturates (its lowest value is
     // below 1, its highest above) and leave it uncertain by more than the tolerance, the
     // far parts are summed exactly, light by light: bright far fields need it on a few
     // fragments, faint ones (highest value below 1) never.
+//CL_IF(PHONG)
     vec3 clHighest = clLowest + clUncertain;
-//CL_IF(PBR)
-    clHighest = vec3(2.0);
 //CL_ENDIF
     bvec3 clBelow = lessThan(clLowest, vec3(1.0));
     bvec3 clAbove = greaterThan(clHighest, vec3(1.0));
@@ -210,20 +229,38 @@
       ((clBelow.r && clAbove.r) || (clBelow.g && clAbove.g) || (clBelow.b && clAbove.b)) &&
       max(max(clUncertain.r, clUncertain.g), clUncertain.b) > clFarFieldTolerance)
     {
-      clFarDiffuse = vec3(0.0);
-      clFarSpecular = vec3(0.0);
       // Lights are stored in Morton order: from a near light of the fragment on, the
       // nearest (brightest) far parts come first, and a saturating sum stops sooner.
       // 16 lights per iteration (see clAddFarPart).
       int clStart = max(clFirst, 0);
-//CL_IF(PHONG)
-      float clPower = specularPower;
-//CL_ENDIF
-//CL_IF(PBR)
-      float clPower = 1.0;
-//CL_ENDIF
       int clFarCount = 0;
       bool clStop = false;
+//CL_IF(PBR)
+      clFarLo = vec3(0.0);
+      for (int clK = 0; clK < clLightCount; clK += 16)
+      {
+        clAddFarPart(clK, clStart, clP, clN, V, NdV, albedo, roughness, metallic, F0, F90, clFarLo, clFarCount);
+        clAddFarPart(clK + 1, clStart, clP, clN, V, NdV, albedo, roughness, metallic, F0, F90, clFarLo, clFarCount);
+        clAddFarPart(clK + 2, clStart, clP, clN, V, NdV, albedo, roughness, metallic, F0, F90, clFarLo, clFarCount);
+        clAddFarPart(clK + 3, clStart, clP, clN, V, NdV, albedo, roughness, metallic, F0, F90, clFarLo, clFarCount);
+        clAddFarPart(clK + 4, clStart, clP, clN, V, NdV, albedo, roughness, metallic, F0, F90, clFarLo, clFarCount);
+        clAddFarPart(clK + 5, clStart, clP, clN, V, NdV, albedo, roughness, metallic, F0, F90, clFarLo, clFarCount);
+        clAddFarPart(clK + 6, clStart, clP, clN, V, NdV, albedo, roughness, metallic, F0, F90, clFarLo, clFarCount);
+        clAddFarPart(clK + 7, clStart, clP, clN, V, NdV, albedo, roughness, metallic, F0, F90, clFarLo, clFarCount);
+        clAddFarPart(clK + 8, clStart, clP, clN, V, NdV, albedo, roughness, metallic, F0, F90, clFarLo, clFarCount);
+        clAddFarPart(clK + 9, clStart, clP, clN, V, NdV, albedo, roughness, metallic, F0, F90, clFarLo, clFarCount);
+        clAddFarPart(clK + 10, clStart, clP, clN, V, NdV, albedo, roughness, metallic, F0, F90, clFarLo, clFarCount);
+        clAddFarPart(clK + 11, clStart, clP, clN, V, NdV, albedo, roughness, metallic, F0, F90, clFarLo, clFarCount);
+        clAddFarPart(clK + 12, clStart, clP, clN, V, NdV, albedo, roughness, metallic, F0, F90, clFarLo, clFarCount);
+        clAddFarPart(clK + 13, clStart, clP, clN, V, NdV, albedo, roughness, metallic, F0, F90, clFarLo, clFarCount);
+        clAddFarPart(clK + 14, clStart, clP, clN, V, NdV, albedo, roughness, metallic, F0, F90, clFarLo, clFarCount);
+        clAddFarPart(clK + 15, clStart, clP, clN, V, NdV, albedo, roughness, metallic, F0, F90, clFarLo, clFarCount);
+      }
+//CL_ENDIF
+//CL_IF(PHONG)
+      float clPower = specularPower;
+      clFarDiffuse = vec3(0.0);
+      clFarSpecular = vec3(0.0);
       for (int clK = 0; clK < clLightCount && !clStop; clK += 16)
       {
         clAddFarPart(clK, clStart, clP, clN, clV, clPower, clFarDiffuse, clFarSpecular, clFarCount);
@@ -250,6 +287,7 @@
             clNearSum + clFarDiffuse * diffuseColor + clFarSpecular * specularColor, vec3(1.0)));
 //CL_ENDIF
       }
+//CL_ENDIF
 //CL_IF(COUNT)
       clEvaluated += clFarCount;
 //CL_ENDIF
@@ -259,7 +297,7 @@
     clSpecular += clFarSpecular;
 //CL_ENDIF
 //CL_IF(PBR)
-    clLo += clDiffuseScale * clFarDiffuse;
+    clLo += clFarLo;
 //CL_ENDIF
   }
 //CL_ENDIF

@@ -72,6 +72,34 @@ void SwitchSpecular(Context& ctx, bool off)
   }
 }
 
+/// Every actor made PBR with the given metallic factor and roughness, and back to its own
+/// interpolation (a step that changes the scene).
+void SwitchPbr(Context& ctx, bool on, double metallic = 0.0, double roughness = 0.5)
+{
+  static std::vector<int> saved;
+  vtkActorCollection* actors = ctx.GetRenderer()->GetActors();
+  actors->InitTraversal();
+  std::size_t i = 0;
+  if (on)
+  {
+    saved.clear();
+  }
+  while (vtkActor* a = actors->GetNextActor())
+  {
+    if (on)
+    {
+      saved.push_back(a->GetProperty()->GetInterpolation());
+      a->GetProperty()->SetInterpolationToPBR();
+      a->GetProperty()->SetMetallic(metallic);
+      a->GetProperty()->SetRoughness(roughness);
+    }
+    else if (i < saved.size())
+    {
+      a->GetProperty()->SetInterpolation(saved[i++]);
+    }
+  }
+}
+
 // Rows of `from` with NearFieldBudget 4, 8 (the default) and 16: lights per point
 // evaluated exactly, against what the far field adds back (docs/far-field.md).
 void AddNearBudgetRows(const Step& from, std::vector<Step>& plan)
@@ -472,6 +500,37 @@ std::vector<Step> MakePlan(const PlanOptions& options)
           }
         };
         white->Teardown = [](Context& ctx) { ctx.MakeLights(4096, "uniform"); };
+      }
+      // PBR actors (VTK's isotropic terms), a plastic and a metal: the default
+      // FarFieldTolerance (the far light bracketed from the moments, summed exactly where
+      // the bracket is wider) and 1 (the moments' estimate alone), each against the exact
+      // reference of its own scene (docs/far-field.md, "PBR actors").
+      struct PbrMaterialRow
+      {
+        const char* Name;
+        double Metallic, Roughness;
+      };
+      for (const PbrMaterialRow& m :
+        { PbrMaterialRow{ "PBR plastic", 0.0, 0.5 }, PbrMaterialRow{ "PBR metal", 1.0, 0.4 } })
+      {
+        for (double tolerance : { 2.0 / 255.0, 1.0 })
+        {
+          Step* pbr =
+            knob("material", std::string(m.Name) + (tolerance < 1.0 ? "" : " far tolerance 1"),
+              [tolerance](vtkClusteredLightingPass* p) { p->SetFarFieldTolerance(tolerance); });
+          pbr->ChangesScene = m.Name;
+          pbr->Frames = std::min(F, 3);
+          pbr->Setup = [m](Context& ctx) { SwitchPbr(ctx, true, m.Metallic, m.Roughness); };
+          pbr->Teardown = [](Context& ctx) { SwitchPbr(ctx, false); };
+        }
+        // The peer: brute force on the same PBR actors.
+        Step brute = plan.back();
+        brute.Method = "brute";
+        brute.Value = m.Name;
+        brute.Counts = false;
+        brute.Apply = [](vtkClusteredLightingPass* p)
+        { p->SetShadingMode(vtkClusteredLightingPass::SHADING_BRUTE_FORCE); };
+        plan.push_back(brute);
       }
     }
     const std::vector<double> budgets =

@@ -188,9 +188,9 @@
 //CL_ENDIF
 //CL_IF(PBR)
     // VTK's PBR terms of the far light, estimated from the moments: Lambert diffuse with
-    // the Fresnel at N.V, and the specular as a Phong lobe about the mirrored view whose
-    // width matches GGX's (power 1 / (2 a^4)) and whose peak is the specular at the mirror
-    // direction. Its interval: each light's Fresnel lies between F0 and F90, and its
+    // the Fresnel at N.V, and the specular as a Phong lobe about the mirrored view of power
+    // 1 / (2 a^4) (a the roughness: GGX's energy at normal incidence, measured) whose peak
+    // is the specular at the mirror direction. Its interval: each light's Fresnel lies between F0 and F90, and its
     // specular times N.L between 0 and clPbrSpecularBound (docs/far-field.md, "PBR").
     vec3 clFmin = min(F0, F90);
     vec3 clFmax = max(F0, F90);

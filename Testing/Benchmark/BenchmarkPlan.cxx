@@ -165,6 +165,14 @@ std::vector<Step> MakePlan(const PlanOptions& options)
             r.Apply = [nodes](vtkClusteredLightingPass* p) { p->SetFarFieldResolution(nodes); };
             plan.push_back(r);
           }
+          // What the exact far sums near saturation cost here: on a GPU a fragment that
+          // sums every far part holds up the fragments shaded beside it (docs/benchmark,
+          // "On a real GPU").
+          Step t = s;
+          t.Sweep = "far tolerance";
+          t.Value = "1 (no exact sums)";
+          t.Apply = [](vtkClusteredLightingPass* p) { p->SetFarFieldTolerance(1.0); };
+          plan.push_back(t);
         }
         if (layout == "uniform" && n <= 16384)
         {

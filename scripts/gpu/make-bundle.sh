@@ -1,0 +1,75 @@
+#!/usr/bin/env bash
+# Packs into .gpu/ what scripts/gpu/run.sh needs to run this build's GL tests and the
+# benchmark on a bare headless NVIDIA GPU machine (no X server, no VTK, no network):
+#   gl/            libglvnd's loaders (Debian packages, unpacked there)
+#   bundle.tar.xz  Debian's VTK and every other library the tests and the benchmark load,
+#                  Xvfb with its keymaps and Mesa's software GLX for Xvfb's own use
+#   libglx-over-egl.so, gl-info   (scripts/gpu/README.md)
+#   bunny.obj.xz   the benchmark's mesh; tests.sh   the GL tests' ctest command lines
+# Run it here after scripts/build.sh; then send the checkout with .gpu/ and the build's
+# bin, lib, data, Examples/ManyLights and Testing/Benchmark/ClusteredLightingBenchmark.
+set -euo pipefail
+root="$(cd "$(dirname "$0")/../.." && pwd)"
+build="$(cd "${1:-$root/build}" && pwd)"
+out="$root/.gpu"
+rm -rf "$out" && mkdir -p "$out/gl"
+stage="$(mktemp -d)"
+trap 'rm -rf "$stage"' EXIT
+mkdir -p "$stage/lib" "$stage/bin" "$stage/dri"
+
+# libglvnd's loaders, as Debian packages (the GPU machine's driver brings the vendor side).
+(cd "$out/gl" && apt-get download libegl1 libglvnd0 libopengl0 libgl1 libglx0 libgles2 2>/dev/null)
+
+# Every library the programs load, except the C and C++ runtimes (the machine has newer
+# ones) and libglvnd's (above).
+programs=("$build/bin/vtkRenderingClusteredCxxTests" "$build/Examples/ManyLights"
+  "$build/Testing/Benchmark/ClusteredLightingBenchmark" /usr/bin/Xvfb /usr/bin/xkbcomp
+  /usr/lib/x86_64-linux-gnu/dri/swrast_dri.so)
+skip='^(libc|libm|libdl|libpthread|librt|ld-linux-x86-64|libstdc\+\+|libgcc_s|libGL|libGLX|libGLdispatch|libOpenGL|libEGL|libGLESv2)\.so'
+for p in "${programs[@]}"; do ldd "$p" | awk '$3 ~ /^\// { print $3 }'; done | sort -u |
+  while read -r lib; do
+    basename "$lib" | grep -Eq "$skip" || cp -L "$lib" "$stage/lib/"
+  done
+# Xvfb's GLX loads Mesa's software driver, which links LLVM, which links Z3 and ICU's
+# data (30 MB together) for features Xvfb never calls: stubs keep the bundle under the
+# GPU machine's 64 MiB transfer limit.
+nm -D --undefined-only "$stage/lib/libLLVM-15.so.1" | awk '$2 ~ /^Z3_/ { print $2 }' |
+  sed 's/@.*//' | sort -u | awk 'BEGIN { print "#include <stdlib.h>" } { print "void " $1 "(void) { abort(); }" }' \
+  > "$stage/z3.c"
+gcc -shared -fPIC -o "$stage/lib/libz3.so.4" -Wl,-soname,libz3.so.4 "$stage/z3.c"
+echo 'const char icudt72_dat[4096] = { 0 };' > "$stage/icu.c"
+gcc -shared -fPIC -o "$stage/lib/libicudata.so.72" -Wl,-soname,libicudata.so.72 "$stage/icu.c"
+rm -f "$stage/z3.c" "$stage/icu.c"
+cp /usr/bin/Xvfb /usr/bin/xkbcomp "$stage/bin/"
+cp /usr/lib/x86_64-linux-gnu/dri/swrast_dri.so "$stage/dri/"
+cp -r /usr/share/X11/xkb "$stage/xkb"
+tar -C "$stage" -cf - . | xz -T0 -6 > "$out/bundle.tar.xz"
+
+gcc -O2 -shared -fPIC -o "$out/libglx-over-egl.so" "$root/scripts/gpu/glx-over-egl.c" -lEGL -lX11 -ldl
+gcc -O2 -o "$out/gl-info" "$root/scripts/gpu/gl-info.c" -lGL -lX11
+xz -6 -c /usr/share/glmark2/models/bunny.obj > "$out/bunny.obj.xz"
+
+# The GL tests' command lines as ctest runs them (absolute paths into this checkout and
+# build: run.sh links the machine's copy of the checkout to the same path).
+echo "$root" > "$out/root.txt"
+# shellcheck disable=SC2016 # the Python below writes shell code
+(cd "$build" && ctest --show-only=json-v1) | /usr/bin/python3 -c '
+import json, shlex, sys
+tests = json.load(sys.stdin)["tests"]
+print("#!/bin/bash")
+print("mkdir -p /tmp/gpu-tests " + shlex.quote(sys.argv[1] + "/Testing/Temporary"))
+print("pass=0; fail=0")
+for t in tests:
+    command = t.get("command") or []
+    if not command or not ("vtkRenderingClusteredCxxTests" in command[0] or t["name"] == "Example.ManyLights"):
+        continue
+    wd = [p["value"] for p in t.get("properties", []) if p["name"] == "WORKING_DIRECTORY"]
+    wd = wd[0] if wd else "."
+    name = t["name"].split("-")[-1]
+    print(f"mkdir -p {shlex.quote(wd)}; cd {shlex.quote(wd)}")
+    print(f"s=$(date +%s%N); timeout 120 {shlex.join(command)} > /tmp/gpu-tests/{name}.log 2>&1; rc=$?")
+    print(f"echo \"{name} rc=$rc $(( ($(date +%s%N) - s) / 1000000 )) ms\"")
+    print("[ $rc = 0 ] && pass=$((pass + 1)) || fail=$((fail + 1))")
+print("echo \"GL tests: $pass passed, $fail failed\"")
+' "$build" > "$out/tests.sh"
+du -sh "$out"

@@ -165,9 +165,9 @@ std::vector<Step> MakePlan(const PlanOptions& options)
             r.Apply = [nodes](vtkClusteredLightingPass* p) { p->SetFarFieldResolution(nodes); };
             plan.push_back(r);
           }
-          // What the exact far sums near saturation cost here: on a GPU a fragment that
-          // sums every far part holds up the fragments shaded beside it (docs/benchmark,
-          // "On a real GPU").
+          // What the exact far sums near saturation cost here: a suspect for the time of
+          // this frame on a GPU, where the fragments shaded together wait for the one
+          // that sums every far part (docs/benchmark, "On a real GPU").
           Step t = s;
           t.Sweep = "far tolerance";
           t.Value = "1 (no exact sums)";

@@ -238,21 +238,50 @@ void Context::MeasureCounts(Row& row)
   this->Window->Render();
   const std::vector<float> re = ClusteredLightingImages::CaptureRGB(this->Window);
   this->Pass->SetDebugView(vtkClusteredLightingPass::DEBUG_NONE);
+  auto count = [](const std::vector<float>& img, std::size_t p)
+  {
+    auto byte = [](float v) { return static_cast<int>(std::lround(v * 255.0f)); };
+    return byte(img[3 * p]) + 256 * byte(img[3 * p + 1]);
+  };
   double se = 0.0, sr = 0.0;
   std::size_t n = 0;
   for (std::size_t p = 0; p < this->Geometry.size(); ++p)
   {
-    if (!this->Geometry[p])
+    if (this->Geometry[p])
     {
-      continue;
+      se += count(ev, p);
+      sr += count(re, p);
+      ++n;
     }
-    auto byte = [](float v) { return static_cast<int>(std::lround(v * 255.0f)); };
-    se += byte(ev[3 * p]) + 256 * byte(ev[3 * p + 1]);
-    sr += byte(re[3 * p]) + 256 * byte(re[3 * p + 1]);
-    ++n;
   }
   row.Evaluated = n ? se / n : NAN;
   row.Reached = n ? sr / n : NAN;
+  // Each geometry pixel at the most evaluated geometry pixel of its 8x4 tile.
+  const int* size = this->Window->GetSize();
+  const int w = size[0], h = size[1];
+  double s32 = 0.0;
+  for (int y0 = 0; y0 < h; y0 += 4)
+  {
+    for (int x0 = 0; x0 < w; x0 += 8)
+    {
+      int most = 0, pixels = 0;
+      for (int y = y0; y < std::min(y0 + 4, h); ++y)
+      {
+        for (int x = x0; x < std::min(x0 + 8, w); ++x)
+        {
+          const std::size_t p =
+            static_cast<std::size_t>(y) * static_cast<std::size_t>(w) + static_cast<std::size_t>(x);
+          if (p < this->Geometry.size() && this->Geometry[p])
+          {
+            most = std::max(most, count(ev, p));
+            ++pixels;
+          }
+        }
+      }
+      s32 += static_cast<double>(most) * pixels;
+    }
+  }
+  row.EvaluatedIn32 = n ? s32 / n : NAN;
 }
 
 //------------------------------------------------------------------------------
@@ -394,13 +423,14 @@ Row Context::Measure(const Step& step)
     }
     this->Renderer->SetPass(this->Pass);
   }
-  std::printf("%-6s %-8s %6d %-9s %-9s %-14s %8.1f ms [%7.1f, %7.1f]  assign %6s  lights %6s  "
-              "eval/px %6s reach/px %6s  max err %5s  rmse %7s  signed %7s  prepass %6s  "
-              "shaded/px %5s  far build %6s bound %5s\n",
+  std::printf(
+    "%-6s %-8s %6d %-9s %-9s %-14s %8.1f ms [%7.1f, %7.1f]  assign %6s  lights %6s  "
+    "eval/px %6s (in 32s %6s) reach/px %6s  max err %5s  rmse %7s  signed %7s  prepass %6s  "
+    "shaded/px %5s  far build %6s bound %5s\n",
     row.Scene.c_str(), row.Layout.c_str(), row.Lights, row.Method.c_str(), row.Sweep.c_str(),
     row.Value.c_str(), row.MsMedian, row.MsMin, row.MsMax, Num(row.AssignMs).c_str(),
-    Num(row.LightUpdateMs).c_str(), Num(row.Evaluated).c_str(), Num(row.Reached).c_str(),
-    Num(row.MaxError * 255.0).c_str(), Num(row.RMSE * 255.0).c_str(),
+    Num(row.LightUpdateMs).c_str(), Num(row.Evaluated).c_str(), Num(row.EvaluatedIn32).c_str(),
+    Num(row.Reached).c_str(), Num(row.MaxError * 255.0).c_str(), Num(row.RMSE * 255.0).c_str(),
     Num(row.SignedError * 255.0).c_str(), Num(row.PrepassMs).c_str(),
     Num(row.ShadedPerVisible).c_str(), Num(row.FarBuildMs).c_str(), Num(row.FarBoundSteps).c_str());
   std::fflush(stdout);

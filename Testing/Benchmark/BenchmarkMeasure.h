@@ -45,6 +45,12 @@ struct Row
   double MsMedian = NAN, MsMin = NAN, MsMax = NAN;
   double AssignMs = NAN, LightUpdateMs = NAN, ShadeMs = NAN, FirstFrameMs = NAN;
   double Evaluated = NAN, Reached = NAN;
+  /// Lights evaluated per pixel if every pixel cost as much as the most evaluated pixel of
+  /// its 8x4 tile: a GPU shades fragments in groups of 32 (on NVIDIA's, 8 quads of 2x2)
+  /// that step through the loops together, so a group takes as long as its slowest
+  /// fragment. A model (the rasterizer's grouping is not known): its ratio to Evaluated
+  /// says how much divergent loops could cost there, from an image any renderer gives.
+  double EvaluatedIn32 = NAN;
   double PrepassMs = NAN, ShadedPerVisible = NAN; ///< depth prepass; fragments shaded per pixel
   double FarBuildMs = NAN;    ///< the far field's last build (every frame when lights move)
   double FarBoundSteps = NAN; ///< the far field's stated bound (ComputeFarFieldErrorBound)

@@ -78,6 +78,7 @@ const std::vector<Column>& Columns()
     CL_NUMBER_COLUMN("first_frame_ms", FirstFrameMs),
     CL_NUMBER_COLUMN("evaluated_px", Evaluated),
     CL_NUMBER_COLUMN("reached_px", Reached),
+    CL_NUMBER_COLUMN("evaluated_px_in_32", EvaluatedIn32),
     CL_NUMBER_COLUMN("prepass_ms", PrepassMs),
     CL_NUMBER_COLUMN("shaded_per_visible_px", ShadedPerVisible),
     CL_NUMBER_COLUMN("far_build_ms", FarBuildMs),

@@ -40,6 +40,7 @@ static Display* CurrentDisplay;
 static GLXDrawable CurrentDrawable;
 static GLXContext CurrentContext;
 static int ConfigToken; // the one GLXFBConfig handed out points here
+static int NextEvicted; // the surface slot to reuse next when all are taken
 static struct
 {
   GLXDrawable Drawable;
@@ -271,9 +272,20 @@ static EGLSurface SurfaceFor(Display* dpy, GLXDrawable drawable)
       slot = i;
     }
   }
+  for (int tries = 0; slot < 0 && tries < MaxSurfaces; ++tries)
+  {
+    // All slots taken (windows are never said to be gone): reuse one not current now.
+    const int i = NextEvicted;
+    NextEvicted = (NextEvicted + 1) % MaxSurfaces;
+    if (Surfaces[i].Surface != eglGetCurrentSurface(EGL_DRAW))
+    {
+      eglDestroySurface(Egl, Surfaces[i].Surface);
+      Surfaces[i].Drawable = 0;
+      slot = i;
+    }
+  }
   if (slot < 0)
   {
-    fprintf(stderr, "glx-over-egl: more than %d windows\n", MaxSurfaces);
     return EGL_NO_SURFACE;
   }
   const EGLint attributes[] = { EGL_WIDTH, (EGLint)width, EGL_HEIGHT, (EGLint)height, EGL_NONE };

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Soak test: 2,000 frames in a small window (96x72 and two other sizes) with everything a
-// long-running application does to the pass changing under it. The schedule repeats every
-// 200 frames (so the state at the end of every period is the same):
+// Soak test: 2,000 frames (1,000 under AddressSanitizer) in a small window (96x72 and two other
+// sizes) with everything a long-running application does to the pass changing under it. The
+// schedule repeats every 200 frames (so the state at the end of every period is the same):
 //  - clustered lights move every frame; the light set is resized 8 times per period
 //    (40 to 600 lights), and for 10 frames one of its lights is invalid (NaN position,
 //    Inf intensity, negative attenuation or a colour beyond the float range, in turn);
@@ -73,15 +73,20 @@
 
 namespace
 {
-constexpr int DefaultFrames = 2000;
 constexpr int Period = 200;
 constexpr int WarmUpPeriods = 2;
 constexpr long long ResidentTolerance = 8LL << 20;
 constexpr long long HeapTolerancePerPeriod = 16LL << 10;
 #if defined(__SANITIZE_ADDRESS__)
 constexpr bool MemoryChecks = false;
+// Under AddressSanitizer the soak runs about 8x slower (723 s for 2,000 frames, the
+// longest test of the CI's sanitizer stage) and skips the memory checks, the only ones
+// that need many periods. The schedule repeats every period, so 5 periods (the warm-up
+// and 3 more) run every path of it 3 times after the warm-up.
+constexpr int DefaultFrames = 1000;
 #else
 constexpr bool MemoryChecks = true;
+constexpr int DefaultFrames = 2000;
 #endif
 
 /// Bytes of heap in use (glibc: all arenas, plus blocks served by mmap).
@@ -128,10 +133,12 @@ std::string DescribeCounts(const std::map<unsigned int, std::size_t>& counts)
 int TestClusteredLightingSoak(int, char*[])
 {
   using namespace ClusteredLightingTest;
-  // CLUSTERED_LIGHTING_SOAK_FRAMES runs a longer soak by hand (whole periods; CI: 2,000).
+  // CLUSTERED_LIGHTING_SOAK_FRAMES runs a longer soak by hand (whole periods; CI: 2,000,
+  // 1,000 under AddressSanitizer).
   const char* framesEnv = std::getenv("CLUSTERED_LIGHTING_SOAK_FRAMES");
-  const int Frames =
-    framesEnv ? std::max(8, std::atoi(framesEnv) / Period) * Period : DefaultFrames;
+  const int Frames = framesEnv
+    ? std::max(MemoryChecks ? 8 : 5, std::atoi(framesEnv) / Period) * Period
+    : DefaultFrames;
   vtkNew<vtkRenderWindow> renWin;
   vtkNew<vtkRenderer> ren;
   ren->AutomaticLightCreationOff();
@@ -401,7 +408,9 @@ int TestClusteredLightingSoak(int, char*[])
   {
     Fail("unexpected warnings or errors from the pass");
   }
-  if (nonFiniteChecks != 20 || assignmentChecks < 4)
+  // One non-finite check per 100 frames; an assignment check per 250 frames unless the
+  // frame renders in brute force (at most half of them).
+  if (nonFiniteChecks != Frames / 100 || assignmentChecks < Frames / 500)
   {
     Fail("fewer checks than scheduled");
   }

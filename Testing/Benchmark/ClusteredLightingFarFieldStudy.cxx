@@ -13,6 +13,7 @@
 //   ClusteredLightingFarFieldStudy [--scene bunny|house|user|dense] [--always-on]
 //     [--lights N] [--samples S] [--cutoffs 1024,4096] [--nodes 32768] [--cells 2]
 //     [--grouping 0.05] [--hierarchy 0.02,0.1] [--bounds] [--copies] [--worst K]
+//     [--orders] [--blocks 255,2048]
 //
 // Rows: "cut at 1/c" (before the far field: every light cut at its cutoff radius); "far
 // field" (design 1, the product's core code: PlanFarField, ComputeFarFieldMoments, the
@@ -24,12 +25,20 @@
 // rounds that time each copy once, and with --worst K where the far field's error comes
 // from (PrintWorstSamples: the kernels' angular truncation against the grid's
 // interpolation, the image error with each removed, and the K worst samples taken
-// apart); "hierarchy per point" (design 2: the light tree walked at each
+// apart), and with --orders as well what more angular resolution would buy: the kernels
+// of orders 2 (the product's), 4, 6 and 8 applied to the exact moments at the point,
+// clamped into the order-2 interval, with the grid's share as measured at order 2, and
+// each with the far specular exact; "hierarchy per point" (design 2: the light tree walked at each
 // point, groups taken by their aggregation bound, each shaded exactly; the cost is the lights and
-// groups evaluated per point, in the near/pt column). List options take comma-separated values.
+// groups evaluated per point, in the near/pt column); with --blocks, for each tolerance 1/t
+// (colour units), the far parts summed to within half of it from bounds of blocks of 32
+// lights in Morton order (FarBlocksStudy.h, a design measured and not adopted): the work
+// per point (block bounds and lights summed) against the far-field lights, and the largest
+// error against the exact far sum. List options take comma-separated values.
 #include "BenchmarkMeasure.h"
 #include "BenchmarkPlan.h"
 #include "ClusteredLightingScenes.h"
+#include "FarBlocksStudy.h"
 #include "vtkClusteredLightingFarFieldBound.h"
 
 #include "vtkActor.h"
@@ -50,6 +59,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <map>
 #include <random>
 #include <string>
 #include <thread>
@@ -262,6 +272,53 @@ void ParallelFor(std::size_t n, F f)
   }
 }
 
+/// Orders of the angular expansion the --worst analysis compares (the product: 2).
+constexpr int StudyOrders[] = { 2, 4, 6, 8 };
+constexpr int LargestStudyOrder = 8;
+
+/// Legendre coefficients k_0..k_L of max(0, t)^n on [-1, 1] (n = 1: the clamped cosine),
+/// k_l = (2l + 1) / 2 * integral of max(0, t)^n P_l(t) dt, by the midpoint rule.
+std::array<double, LargestStudyOrder + 1> ComputeLegendreKernel(double n)
+{
+  std::array<double, LargestStudyOrder + 1> k{};
+  const int steps = 20000;
+  for (int i = 0; i < steps; ++i)
+  {
+    const double t = (i + 0.5) / steps; // the kernel is 0 for t < 0
+    const double f = std::pow(t, n) / steps;
+    double p0 = 1.0, p1 = t;
+    k[0] += f * p0;
+    k[1] += f * p1;
+    for (int l = 2; l <= LargestStudyOrder; ++l)
+    {
+      const double p2 = ((2 * l - 1) * t * p1 - (l - 1) * p0) / l;
+      k[static_cast<std::size_t>(l)] += f * p2;
+      p0 = p1;
+      p1 = p2;
+    }
+  }
+  for (int l = 0; l <= LargestStudyOrder; ++l)
+  {
+    k[static_cast<std::size_t>(l)] *= 0.5 * (2 * l + 1);
+  }
+  return k;
+}
+
+/// P_0(t)..P_L(t).
+std::array<double, LargestStudyOrder + 1> EvaluateLegendre(double t)
+{
+  std::array<double, LargestStudyOrder + 1> p{};
+  p[0] = 1.0;
+  p[1] = t;
+  for (int l = 2; l <= LargestStudyOrder; ++l)
+  {
+    p[static_cast<std::size_t>(l)] = ((2 * l - 1) * t * p[static_cast<std::size_t>(l - 1)] -
+                                       (l - 1) * p[static_cast<std::size_t>(l - 2)]) /
+      l;
+  }
+  return p;
+}
+
 /**
  * Where the far field's error comes from at the `count` samples of largest error (8-bit
  * steps, worst channel), and on average over all samples: the far parts shaded exactly
@@ -272,7 +329,7 @@ void ParallelFor(std::size_t n, F f)
 void PrintWorstSamples(const std::vector<Sample>& samples, const std::vector<glm::dvec3>& exact,
   const std::vector<glm::dvec3>& approx, const std::vector<PreparedLight>& lights,
   const std::vector<double>& radii, const FarFieldGrid& grid, const std::vector<double>& values,
-  int count)
+  int count, bool orders)
 {
   struct Parts
   {
@@ -283,8 +340,22 @@ void PrintWorstSamples(const std::vector<Sample>& samples, const std::vector<glm
     double BrightestDistance = 0.0; ///< its distance over its near radius
     double GridSError = 0.0;        ///< (interpolated - exact) S at the point, over exact S
     double GridVNError = 0.0;       ///< (interpolated - exact) V.N at the point, over exact S
+    /// Per order of StudyOrders: sum_l k_l sum_j g_j P_l(t_j), the kernels applied to the
+    /// exact moments of that order at the point, clamped into the order-2 interval (which
+    /// holds the truth whatever the order), diffuse and specular.
+    std::array<glm::dvec3, std::size(StudyOrders)> OrderD{}, OrderS{};
   };
   std::vector<Parts> parts(samples.size());
+  // The kernels' Legendre coefficients, per specular power of the samples.
+  std::map<double, std::array<double, LargestStudyOrder + 1>> lobeKernels;
+  const auto diffuseKernel = ComputeLegendreKernel(1.0);
+  for (const Sample& smp : samples)
+  {
+    if (orders && !lobeKernels.count(smp.Power))
+    {
+      lobeKernels[smp.Power] = ComputeLegendreKernel(smp.Power);
+    }
+  }
   ParallelFor(samples.size(),
     [&](std::size_t i)
     {
@@ -292,12 +363,24 @@ void PrintWorstSamples(const std::vector<Sample>& samples, const std::vector<glm
       const glm::dvec3 R = 2.0 * glm::dot(smp.N, smp.V) * smp.N - smp.V;
       Parts& q = parts[i];
       std::array<double, FarFieldFloatsPerNode> m{};
+      // sum_j g_j colour_j P_l(t_j) for t = N.u and t = R.u, each order l.
+      std::array<glm::dvec3, LargestStudyOrder + 1> sumN{}, sumR{};
       for (std::size_t l = 0; l < lights.size(); ++l)
       {
         double far;
         glm::dvec3 u;
         if (ComputeFarContribution(lights[l], radii[l], smp.P, far, u))
         {
+          if (orders)
+          {
+            const auto pn = EvaluateLegendre(glm::dot(smp.N, u));
+            const auto pr = EvaluateLegendre(glm::dot(R, u));
+            for (std::size_t o = 0; o <= LargestStudyOrder; ++o)
+            {
+              sumN[o] += lights[l].Color * far * pn[o];
+              sumR[o] += lights[l].Color * far * pr[o];
+            }
+          }
           const glm::dvec2 sh = Shade(smp, u);
           q.TrueD += lights[l].Color * far * sh.x;
           q.TrueS += lights[l].Color * far * sh.y;
@@ -313,6 +396,29 @@ void PrintWorstSamples(const std::vector<Sample>& samples, const std::vector<glm
       }
       q.PointD = EvaluateFarDiffuse(m, smp.N);
       q.PointS = smp.Ks > 0.0 ? EvaluateFarSpecular(m, R, smp.Power) : glm::dvec3(0.0);
+      if (orders)
+      {
+        const auto& kd = diffuseKernel;
+        const auto& ks = lobeKernels.at(smp.Power);
+        for (std::size_t o = 0; o < std::size(StudyOrders); ++o)
+        {
+          for (int c = 0; c < 3; ++c)
+          {
+            const double* mc = &m[static_cast<std::size_t>(c) * FarFieldMomentsPerChannel];
+            double lowD = 0.0, highD = 0.0, lowS = 0.0, highS = 0.0;
+            ApplyMomentKernel(mc, ComputeLobeKernel(1.0), smp.N, false, 1.0, &lowD, &highD);
+            ApplyMomentKernel(mc, ComputeLobeKernel(smp.Power), R, true, smp.Power, &lowS, &highS);
+            double d = 0.0, sp = 0.0;
+            for (int l = 0; l <= StudyOrders[o]; ++l)
+            {
+              d += kd[static_cast<std::size_t>(l)] * sumN[static_cast<std::size_t>(l)][c];
+              sp += ks[static_cast<std::size_t>(l)] * sumR[static_cast<std::size_t>(l)][c];
+            }
+            q.OrderD[o][c] = std::min(std::max(d, lowD), highD);
+            q.OrderS[o][c] = smp.Ks > 0.0 ? std::min(std::max(sp, lowS), highS) : 0.0;
+          }
+        }
+      }
       const auto g = InterpolateFarMoments(grid, values, smp.P);
       q.GridD = EvaluateFarDiffuse(g, smp.N);
       q.GridS = smp.Ks > 0.0 ? EvaluateFarSpecular(g, R, smp.Power) : glm::dvec3(0.0);
@@ -337,6 +443,8 @@ void PrintWorstSamples(const std::vector<Sample>& samples, const std::vector<glm
   std::vector<std::pair<int, std::size_t>> order;
   double kernelD = 0.0, kernelS = 0.0, gridD = 0.0, gridS = 0.0, sError = 0.0, vnError = 0.0;
   Errors perfectSpecular, perfectDiffuseKernel, onlyGrid;
+  std::array<Errors, std::size(StudyOrders)> byOrder, byOrderSpecularExact;
+  std::array<double, std::size(StudyOrders)> orderKernelD{}, orderKernelS{};
   for (std::size_t i = 0; i < samples.size(); ++i)
   {
     const Sample& smp = samples[i];
@@ -358,6 +466,31 @@ void PrintWorstSamples(const std::vector<Sample>& samples, const std::vector<glm
     perfectSpecular.Add(exact[i], nearPart + p.GridD * smp.Kd + p.TrueS * smp.Ks);
     perfectDiffuseKernel.Add(exact[i], nearPart + diffuseKernelExact + p.GridS * smp.Ks);
     onlyGrid.Add(exact[i], nearPart + diffuseKernelExact + (p.GridS - p.PointS + p.TrueS) * smp.Ks);
+    for (std::size_t o = 0; orders && o < std::size(StudyOrders); ++o)
+    {
+      // The grid's and the grouping's share as measured at order 2, the kernels' at order o.
+      byOrder[o].Add(exact[i],
+        nearPart + (p.GridD - p.PointD + p.OrderD[o]) * smp.Kd +
+          (p.GridS - p.PointS + p.OrderS[o]) * smp.Ks);
+      byOrderSpecularExact[o].Add(
+        exact[i], nearPart + (p.GridD - p.PointD + p.OrderD[o]) * smp.Kd + p.TrueS * smp.Ks);
+      for (int c = 0; c < 3; ++c)
+      {
+        orderKernelD[o] += std::abs(p.OrderD[o][c] - p.TrueD[c]) * smp.Kd[c];
+        orderKernelS[o] += std::abs(p.OrderS[o][c] - p.TrueS[c]) * smp.Ks;
+      }
+    }
+  }
+  for (std::size_t o = 0; orders && o < std::size(StudyOrders); ++o)
+  {
+    char name[96];
+    std::snprintf(name, sizeof(name), "    kernels of order %d, clamped", StudyOrders[o]);
+    byOrder[o].Print(name, 0.0, 0);
+    std::snprintf(name, sizeof(name), "      the diffuse's alone, far specular exact");
+    byOrderSpecularExact[o].Print(name, 0.0, 0);
+    std::printf("      mean |kernel error| in steps: diffuse %.3f, specular %.3f\n",
+      orderKernelD[o] * 255.0 / (3.0 * samples.size()),
+      orderKernelS[o] * 255.0 / (3.0 * samples.size()));
   }
   perfectSpecular.Print("    far specular exact", 0.0, 0);
   perfectDiffuseKernel.Print("    far diffuse kernel exact", 0.0, 0);
@@ -404,6 +537,8 @@ int main(int argc, char* argv[])
   std::vector<double> cellsPerRadius = { 2.0 };
   std::vector<double> groupings = { 0.05 };
   std::vector<double> hierarchyEpsilons;
+  std::vector<double> blockTolerances;
+  bool orders = false;
   bool bounds = false;
   bool copies = false;
   int worst = -1;
@@ -456,6 +591,14 @@ int main(int argc, char* argv[])
     else if (a == "--hierarchy" && value)
     {
       hierarchyEpsilons = parseList(argv[++i], same);
+    }
+    else if (a == "--orders")
+    {
+      orders = true;
+    }
+    else if (a == "--blocks" && value)
+    {
+      blockTolerances = parseList(argv[++i], [](double v) { return 1.0 / v; });
     }
     else if (a == "--always-on")
     {
@@ -688,7 +831,7 @@ int main(int argc, char* argv[])
         }
         if (worst >= 0 && plan.Active)
         {
-          PrintWorstSamples(samples, exact, approx, lights, radii, grid, values, worst);
+          PrintWorstSamples(samples, exact, approx, lights, radii, grid, values, worst, orders);
         }
         char name[160];
         std::snprintf(name, sizeof(name), "far field: %g nodes, h %.3g, r <= %g h, grouping %g",
@@ -743,6 +886,50 @@ int main(int argc, char* argv[])
         std::printf("\n");
       }
     }
+  }
+
+  // The exact far sums by blocks of 32 lights (FarBlocksStudy.h), at the first node target:
+  // the lights in Morton order, as the pass stores them, split as the pass splits them.
+  for (double tau : blockTolerances)
+  {
+    std::vector<PreparedLight> lights =
+      PrepareLights(sources, LightPreparationOptions{ cutoffs[0], true }).Lights;
+    PlanFarField(lights, lo, hi,
+      FarFieldOptions{ true, cellsPerRadius[0], static_cast<std::int64_t>(nodeTargets[0]), 1.0 },
+      anchor);
+    const std::vector<ClusteredLightingStudy::FarBlock> blocks =
+      ClusteredLightingStudy::ComputeFarBlocks(lights);
+    std::size_t farLights = 0;
+    for (const PreparedLight& l : lights)
+    {
+      farLights += l.FarField ? 1 : 0;
+    }
+    std::vector<double> work(samples.size()), error(samples.size());
+    ParallelFor(samples.size(),
+      [&](std::size_t i)
+      {
+        const Sample& smp = samples[i];
+        const glm::dvec3 ks(smp.Ks);
+        glm::dvec3 d, sp, de, se;
+        ClusteredLightingStudy::FarBlockSumStatistics st;
+        ClusteredLightingStudy::SumFarPartsByBlocks(lights, blocks, smp.P, smp.N, smp.V, smp.Power,
+          smp.Kd, ks, tau, glm::dvec3(0.0), false, d, sp, &st);
+        ClusteredLightingStudy::SumFarPartsExactly(lights, smp.P, smp.N, smp.V, smp.Power, de, se);
+        se = smp.Ks > 0.0 ? se : glm::dvec3(0.0);
+        const glm::dvec3 diff = glm::abs((d - de) * smp.Kd + (sp - se) * ks);
+        error[i] = std::max(std::max(diff.x, diff.y), diff.z);
+        work[i] = st.BlocksVisited + st.LightsSummed;
+      });
+    double meanWork = 0.0, worstError = 0.0;
+    for (std::size_t i = 0; i < samples.size(); ++i)
+    {
+      meanWork += work[i] / samples.size();
+      worstError = std::max(worstError, error[i]);
+    }
+    std::printf("blocks of 32, tolerance 1/%g: %.0f evaluations per point for %zu far-field "
+                "lights (%.1f%%; %zu blocks), largest error %.3f of tolerance / 2\n",
+      1.0 / tau, meanWork, farLights, 100.0 * meanWork / std::max<std::size_t>(farLights, 1),
+      blocks.size(), worstError / (0.5 * tau));
   }
 
   // Design 2 (a light hierarchy evaluated per point, Lightcuts-style): the same near parts;

@@ -21,8 +21,10 @@
 #include "vtkWindowToImageFilter.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <ctime>
 #include <fstream>
 #include <functional>
@@ -359,7 +361,47 @@ static std::string ReadFirstLine(const char* path, const char* key)
   return "?";
 }
 
-void WriteMachine(vtkRenderWindow* rw, const std::string& command, const std::string& path)
+std::string ProbeHost()
+{
+  using Clock = std::chrono::steady_clock;
+  double flops = 0.0, bytes = 0.0;
+  for (int attempt = 0; attempt < 3; ++attempt)
+  {
+    // Four independent chains of multiply-adds (2 flops each), 50 million steps.
+    double a[4] = { 1.0, 1.1, 1.2, 1.3 };
+    const long steps = 50000000;
+    const auto t0 = Clock::now();
+    for (long i = 0; i < steps; ++i)
+    {
+      for (double& x : a)
+      {
+        x = x * 0.999999999 + 1e-9;
+      }
+    }
+    const double s = std::chrono::duration<double>(Clock::now() - t0).count();
+    volatile double sink = a[0] + a[1] + a[2] + a[3]; // keeps the loop
+    (void)sink;
+    flops = std::max(flops, 8.0 * steps / s);
+  }
+  const std::size_t size = std::size_t{ 256 } << 20;
+  std::vector<char> from(size, 1), to(size, 0);
+  for (int attempt = 0; attempt < 3; ++attempt)
+  {
+    const auto t0 = Clock::now();
+    std::memcpy(to.data(), from.data(), size);
+    const double s = std::chrono::duration<double>(Clock::now() - t0).count();
+    volatile char sink = to[static_cast<std::size_t>(attempt) * 4096];
+    (void)sink;
+    bytes = std::max(bytes, 2.0 * static_cast<double>(size) / s); // read + write
+  }
+  char text[128];
+  std::snprintf(text, sizeof(text), "%.2f Gflop/s arithmetic, %.1f GB/s memory copy", flops * 1e-9,
+    bytes * 1e-9);
+  return text;
+}
+
+void WriteMachine(vtkRenderWindow* rw, const std::string& command, const std::string& path,
+  const std::string& probeAtStart, const std::string& probeAtEnd)
 {
   std::ofstream out(path);
   const std::time_t now = std::time(nullptr);
@@ -391,6 +433,14 @@ void WriteMachine(vtkRenderWindow* rw, const std::string& command, const std::st
     out << "GL_MAX_TEXTURE_SIZE: " << vtkTextureObject::GetMaximumTextureSize(gl) << "\n";
   }
   out << "window: " << rw->GetSize()[0] << "x" << rw->GetSize()[1] << "\n";
+  if (!probeAtStart.empty())
+  {
+    out << "host probe at the start (one thread): " << probeAtStart << "\n";
+  }
+  if (!probeAtEnd.empty())
+  {
+    out << "host probe at the end (one thread): " << probeAtEnd << "\n";
+  }
 }
 
 //------------------------------------------------------------------------------ check

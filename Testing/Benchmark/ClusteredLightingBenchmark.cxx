@@ -147,6 +147,7 @@ int main(int argc, char* argv[])
   planOptions.LargestLights = vtkClusteredLightingPass::GetMaximumNumberOfLights(32, 16, 32,
     vtkTextureObject::GetMaximumTextureSize(vtkOpenGLRenderWindow::SafeDownCast(ctx.GetWindow())));
   const std::regex filter(opt.Filter.empty() ? std::string(".*") : opt.Filter);
+  const std::string probeAtStart = ProbeHost();
 
   std::vector<Row> rows;
   const Scene* loaded = nullptr;
@@ -214,7 +215,7 @@ int main(int argc, char* argv[])
   {
     command += std::string(" ") + argv[i];
   }
-  WriteMachine(ctx.GetWindow(), command, opt.Output + "/machine.txt");
+  WriteMachine(ctx.GetWindow(), command, opt.Output + "/machine.txt", probeAtStart, ProbeHost());
   const std::string csv = opt.Output + "/results.csv";
   WriteCSV(rows, csv);
   WriteMarkdown(rows, opt.Output + "/results.md");

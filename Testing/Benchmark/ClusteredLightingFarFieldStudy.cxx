@@ -276,6 +276,20 @@ void ParallelFor(std::size_t n, F f)
 constexpr int StudyOrders[] = { 2, 4, 6, 8 };
 constexpr int LargestStudyOrder = 8;
 
+/// P_0(t)..P_L(t).
+std::array<double, LargestStudyOrder + 1> EvaluateLegendre(double t)
+{
+  std::array<double, LargestStudyOrder + 1> p{};
+  p[0] = 1.0;
+  p[1] = t;
+  for (std::size_t l = 2; l <= LargestStudyOrder; ++l)
+  {
+    const double n = static_cast<double>(l);
+    p[l] = ((2.0 * n - 1.0) * t * p[l - 1] - (n - 1.0) * p[l - 2]) / n;
+  }
+  return p;
+}
+
 /// Legendre coefficients k_0..k_L of max(0, t)^n on [-1, 1] (n = 1: the clamped cosine),
 /// k_l = (2l + 1) / 2 * integral of max(0, t)^n P_l(t) dt, by the midpoint rule.
 std::array<double, LargestStudyOrder + 1> ComputeLegendreKernel(double n)
@@ -286,37 +300,17 @@ std::array<double, LargestStudyOrder + 1> ComputeLegendreKernel(double n)
   {
     const double t = (i + 0.5) / steps; // the kernel is 0 for t < 0
     const double f = std::pow(t, n) / steps;
-    double p0 = 1.0, p1 = t;
-    k[0] += f * p0;
-    k[1] += f * p1;
-    for (int l = 2; l <= LargestStudyOrder; ++l)
+    const auto p = EvaluateLegendre(t);
+    for (std::size_t l = 0; l <= LargestStudyOrder; ++l)
     {
-      const double p2 = ((2 * l - 1) * t * p1 - (l - 1) * p0) / l;
-      k[static_cast<std::size_t>(l)] += f * p2;
-      p0 = p1;
-      p1 = p2;
+      k[l] += f * p[l];
     }
   }
-  for (int l = 0; l <= LargestStudyOrder; ++l)
+  for (std::size_t l = 0; l <= LargestStudyOrder; ++l)
   {
-    k[static_cast<std::size_t>(l)] *= 0.5 * (2 * l + 1);
+    k[l] *= 0.5 * (2.0 * static_cast<double>(l) + 1.0);
   }
   return k;
-}
-
-/// P_0(t)..P_L(t).
-std::array<double, LargestStudyOrder + 1> EvaluateLegendre(double t)
-{
-  std::array<double, LargestStudyOrder + 1> p{};
-  p[0] = 1.0;
-  p[1] = t;
-  for (int l = 2; l <= LargestStudyOrder; ++l)
-  {
-    p[static_cast<std::size_t>(l)] = ((2 * l - 1) * t * p[static_cast<std::size_t>(l - 1)] -
-                                       (l - 1) * p[static_cast<std::size_t>(l - 2)]) /
-      l;
-  }
-  return p;
 }
 
 /**
@@ -400,14 +394,15 @@ void PrintWorstSamples(const std::vector<Sample>& samples, const std::vector<glm
       {
         const auto& kd = diffuseKernel;
         const auto& ks = lobeKernels.at(smp.Power);
-        for (std::size_t o = 0; o < std::size(StudyOrders); ++o)
+        for (int c = 0; c < 3; ++c)
         {
-          for (int c = 0; c < 3; ++c)
+          // The order-2 interval of the exact moments holds the truth at every order.
+          const double* mc = &m[static_cast<std::size_t>(c) * FarFieldMomentsPerChannel];
+          double lowD = 0.0, highD = 0.0, lowS = 0.0, highS = 0.0;
+          ApplyMomentKernel(mc, ComputeLobeKernel(1.0), smp.N, false, 1.0, &lowD, &highD);
+          ApplyMomentKernel(mc, ComputeLobeKernel(smp.Power), R, true, smp.Power, &lowS, &highS);
+          for (std::size_t o = 0; o < std::size(StudyOrders); ++o)
           {
-            const double* mc = &m[static_cast<std::size_t>(c) * FarFieldMomentsPerChannel];
-            double lowD = 0.0, highD = 0.0, lowS = 0.0, highS = 0.0;
-            ApplyMomentKernel(mc, ComputeLobeKernel(1.0), smp.N, false, 1.0, &lowD, &highD);
-            ApplyMomentKernel(mc, ComputeLobeKernel(smp.Power), R, true, smp.Power, &lowS, &highS);
             double d = 0.0, sp = 0.0;
             for (int l = 0; l <= StudyOrders[o]; ++l)
             {
@@ -912,8 +907,8 @@ int main(int argc, char* argv[])
         const glm::dvec3 ks(smp.Ks);
         glm::dvec3 d, sp, de, se;
         ClusteredLightingStudy::FarBlockSumStatistics st;
-        ClusteredLightingStudy::SumFarPartsByBlocks(lights, blocks, smp.P, smp.N, smp.V, smp.Power,
-          smp.Kd, ks, tau, glm::dvec3(0.0), false, d, sp, &st);
+        ClusteredLightingStudy::SumFarPartsByBlocks(
+          lights, blocks, smp.P, smp.N, smp.V, smp.Power, smp.Kd, ks, tau, d, sp, &st);
         ClusteredLightingStudy::SumFarPartsExactly(lights, smp.P, smp.N, smp.V, smp.Power, de, se);
         se = smp.Ks > 0.0 ? se : glm::dvec3(0.0);
         const glm::dvec3 diff = glm::abs((d - de) * smp.Kd + (sp - se) * ks);

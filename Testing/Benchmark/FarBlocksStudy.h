@@ -24,8 +24,8 @@
  * light by light. The result is within half the tolerance of the exact sum, per channel.
  *
  * Why it was not adopted: the widths are first order in rho / |c - P|, and the tolerance
- * (2/255) is about 1% of a far light of ordinary brightness, so almost every block is
- * summed light by light (docs/far-field.md, "Exact sums by blocks of lights").
+ * (2/255) is a small fraction of the far light at a point, so almost every block is
+ * summed light by light (docs/far-field.md, "Exact sums by blocks of 32 lights").
  */
 #ifndef FarBlocksStudy_h
 #define FarBlocksStudy_h
@@ -191,27 +191,55 @@ struct FarBlockSumStatistics
 {
   int BlocksVisited = 0; ///< non-empty block intervals computed, both passes
   int LightsSummed = 0;  ///< lights of refined blocks, each summed exactly
-  bool SecondPass = false;
-  bool Saturated = false; ///< the lower ends saturated every channel
 };
+
+/// Adds light l's far part at a Phong point to the diffuse d and (with `specular`) the
+/// specular sp, per unit material; false when the light has none there.
+inline bool AddFarPartPhong(const PreparedLight& l, const glm::dvec3& P, const glm::dvec3& N,
+  const glm::dvec3& R, double power, bool specular, glm::dvec3& d, glm::dvec3& sp)
+{
+  double far = 0.0;
+  glm::dvec3 toLight(0.0);
+  if (!l.FarField || !ComputeFarContribution(l, l.Radius, P, far, toLight))
+  {
+    return false;
+  }
+  const double nl = glm::dot(N, toLight);
+  if (nl > 0.0)
+  {
+    d += far * nl * l.Color;
+    const double rl = glm::dot(R, toLight);
+    sp += specular && rl > 0.0 ? far * std::pow(rl, power) * l.Color : glm::dvec3(0.0);
+  }
+  return true;
+}
 
 /**
  * The far parts of `lights` at a Phong point (world coordinates), summed to within tau / 2
  * per channel in colour units, kd and ks being the material's diffuse and specular colours:
- * diffuse and specular per unit material, as the shading code adds them. `nearSum` (the
- * point's colour without its far light) only decides saturation, with `clampsAtOne`.
+ * diffuse and specular per unit material, as the shading code adds them.
  */
 inline void SumFarPartsByBlocks(const std::vector<PreparedLight>& lights,
   const std::vector<FarBlock>& blocks, const glm::dvec3& P, const glm::dvec3& N,
   const glm::dvec3& V, double power, const glm::dvec3& kd, const glm::dvec3& ks, double tau,
-  const glm::dvec3& nearSum, bool clampsAtOne, glm::dvec3& diffuse, glm::dvec3& specular,
-  FarBlockSumStatistics* stats = nullptr)
+  glm::dvec3& diffuse, glm::dvec3& specular, FarBlockSumStatistics* stats = nullptr)
 {
   FarBlockSumStatistics s;
   const glm::dvec3 R = 2.0 * glm::dot(N, V) * N - V;
   const bool spec = ks != glm::dvec3(0.0);
+  // A block's interval (diffuse [x, y], specular [z, w] per unit colour) and its width in
+  // colour units, the largest over the channels.
+  const auto interval = [&](const FarBlock& b, double& width)
+  {
+    ++s.BlocksVisited;
+    const glm::dvec4 i = ComputeFarBlockPhongInterval(b, P, N, R, power, spec);
+    const glm::dvec3 w = ((i.y - i.x) * kd + (i.w - i.z) * ks) * b.Color;
+    width = std::max(std::max(w.x, w.y), w.z);
+    return i;
+  };
+  // Pass 1: every block's midpoint, its width binned.
   std::array<double, FarBlockBins> bins{};
-  glm::dvec3 lowD(0.0), lowS(0.0), midD(0.0), midS(0.0);
+  glm::dvec3 midD(0.0), midS(0.0);
   double total = 0.0;
   for (const FarBlock& b : blocks)
   {
@@ -219,39 +247,21 @@ inline void SumFarPartsByBlocks(const std::vector<PreparedLight>& lights,
     {
       continue;
     }
-    ++s.BlocksVisited;
-    const glm::dvec4 i = ComputeFarBlockPhongInterval(b, P, N, R, power, spec);
-    lowD += i.x * b.Color;
-    lowS += i.z * b.Color;
+    double width = 0.0;
+    const glm::dvec4 i = interval(b, width);
     midD += 0.5 * (i.x + i.y) * b.Color;
     midS += 0.5 * (i.z + i.w) * b.Color;
-    const glm::dvec3 w = ((i.y - i.x) * kd + (i.w - i.z) * ks) * b.Color;
-    const double width = std::max(std::max(w.x, w.y), w.z);
     if (width > 0.0)
     {
       bins[static_cast<std::size_t>(GetFarBlockBin(width, tau))] += width;
       total += width;
     }
   }
-  const auto saturates = [&](const glm::dvec3& d, const glm::dvec3& sp)
+  diffuse = midD;
+  specular = midS;
+  if (total > tau)
   {
-    const glm::dvec3 c = nearSum + d * kd + sp * ks;
-    return clampsAtOne && c.x >= 1.0 && c.y >= 1.0 && c.z >= 1.0;
-  };
-  if (saturates(lowD, lowS))
-  {
-    diffuse = lowD;
-    specular = lowS;
-    s.Saturated = true;
-  }
-  else if (total <= tau)
-  {
-    diffuse = midD;
-    specular = midS;
-  }
-  else
-  {
-    s.SecondPass = true;
+    // Pass 2: the blocks of the bins past the threshold, light by light.
     const int t = ChooseFarBlockThreshold(bins, tau);
     diffuse = specular = glm::dvec3(0.0);
     for (std::size_t k = 0; k < blocks.size(); ++k)
@@ -261,47 +271,18 @@ inline void SumFarPartsByBlocks(const std::vector<PreparedLight>& lights,
       {
         continue;
       }
-      ++s.BlocksVisited;
-      const glm::dvec4 i = ComputeFarBlockPhongInterval(b, P, N, R, power, spec);
-      const glm::dvec3 w = ((i.y - i.x) * kd + (i.w - i.z) * ks) * b.Color;
-      const double width = std::max(std::max(w.x, w.y), w.z);
+      double width = 0.0;
+      const glm::dvec4 i = interval(b, width);
       if (!(width > 0.0) || GetFarBlockBin(width, tau) < t)
       {
         diffuse += 0.5 * (i.x + i.y) * b.Color;
         specular += 0.5 * (i.z + i.w) * b.Color;
         continue;
       }
-      glm::dvec3 d(0.0), sp(0.0);
       const std::size_t last = std::min((k + 1) * LightsPerFarBlock, lights.size());
       for (std::size_t j = k * LightsPerFarBlock; j < last; ++j)
       {
-        const PreparedLight& l = lights[j];
-        double far = 0.0;
-        glm::dvec3 toLight(0.0);
-        if (!l.FarField || !ComputeFarContribution(l, l.Radius, P, far, toLight))
-        {
-          continue;
-        }
-        ++s.LightsSummed;
-        const double nl = glm::dot(N, toLight);
-        if (nl > 0.0)
-        {
-          d += far * nl * l.Color;
-          const double rl = glm::dot(R, toLight);
-          sp += spec && rl > 0.0 ? far * std::pow(rl, power) * l.Color : glm::dvec3(0.0);
-        }
-      }
-      diffuse += d;
-      specular += sp;
-      // The lower ends: this block's exact sum instead of its lower end.
-      lowD += d - i.x * b.Color;
-      lowS += sp - i.z * b.Color;
-      if (saturates(lowD, lowS))
-      {
-        diffuse = lowD;
-        specular = lowS;
-        s.Saturated = true;
-        break;
+        s.LightsSummed += AddFarPartPhong(lights[j], P, N, R, power, spec, diffuse, specular);
       }
     }
   }
@@ -311,7 +292,7 @@ inline void SumFarPartsByBlocks(const std::vector<PreparedLight>& lights,
   }
 }
 
-/// The exact far parts of `lights` at a Phong fragment (world coordinates), diffuse and
+/// The exact far parts of `lights` at a Phong point (world coordinates), diffuse and
 /// specular per unit material: the reference of SumFarPartsByBlocks.
 inline void SumFarPartsExactly(const std::vector<PreparedLight>& lights, const glm::dvec3& P,
   const glm::dvec3& N, const glm::dvec3& V, double power, glm::dvec3& diffuse, glm::dvec3& specular)
@@ -320,19 +301,7 @@ inline void SumFarPartsExactly(const std::vector<PreparedLight>& lights, const g
   diffuse = specular = glm::dvec3(0.0);
   for (const PreparedLight& l : lights)
   {
-    double far = 0.0;
-    glm::dvec3 toLight(0.0);
-    if (!l.FarField || !ComputeFarContribution(l, l.Radius, P, far, toLight))
-    {
-      continue;
-    }
-    const double nl = glm::dot(N, toLight);
-    if (nl > 0.0)
-    {
-      diffuse += far * nl * l.Color;
-      const double rl = glm::dot(R, toLight);
-      specular += rl > 0.0 ? far * std::pow(rl, power) * l.Color : glm::dvec3(0.0);
-    }
+    AddFarPartPhong(l, P, N, R, power, true, diffuse, specular);
   }
 }
 

@@ -1135,7 +1135,13 @@ bool vtkClusteredLightingPass::SetShaderParameters(
     }
     if (program->IsUniformUsed("clFarFieldTolerance"))
     {
-      program->SetUniformf("clFarFieldTolerance", static_cast<float>(this->FarFieldTolerance));
+      // 1 turns the exact far sums off (FarFieldExactSumLimit).
+      vtkActor* actor = vtkActor::SafeDownCast(prop);
+      vtkProperty* property = actor ? actor->GetProperty() : nullptr;
+      const bool pbr = property && property->GetInterpolation() == VTK_PBR;
+      const bool exact = pbr || r.NumberOfLights <= this->FarFieldExactSumLimit;
+      program->SetUniformf(
+        "clFarFieldTolerance", exact ? static_cast<float>(this->FarFieldTolerance) : 1.0f);
     }
   }
   if (program->IsUniformUsed("clLightCount"))
@@ -1207,6 +1213,7 @@ void vtkClusteredLightingPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Advanced:\n";
   os << next << "FarFieldCellsPerRadius: " << this->FarFieldCellsPerRadius << "\n";
   os << next << "FarFieldTolerance: " << this->FarFieldTolerance << "\n";
+  os << next << "FarFieldExactSumLimit: " << this->FarFieldExactSumLimit << "\n";
   os << next << "FarFieldGrouping: " << this->FarFieldGrouping << "\n";
   os << next << "FarFieldSharedColor: " << (this->FarFieldSharedColor ? "On" : "Off") << "\n";
   os << next << "NearFieldBudget: " << this->NearFieldBudget << "\n";

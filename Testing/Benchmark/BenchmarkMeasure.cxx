@@ -191,6 +191,7 @@ void Context::ResetPassDefaults()
   p->SetFarFieldResolution(32768);
   p->SetFarFieldCellsPerRadius(2.0);
   p->SetFarFieldTolerance(2.0 / 255.0);
+  p->SetFarFieldExactSumLimit(16384);
   p->SetFarFieldGrouping(1.0);
   p->SetFarFieldSharedColor(true);
   p->SetNearFieldBudget(8.0);
@@ -207,6 +208,49 @@ void Context::ResetPassDefaults()
   p->SetAutomaticDepthPrepass(false); // rows time the options as set; "automatic" rows turn it on
   p->SetShadingMode(vtkClusteredLightingPass::SHADING_CLUSTERED);
   p->SetDebugView(vtkClusteredLightingPass::DEBUG_NONE);
+}
+
+//------------------------------------------------------------------------------
+std::string Context::CheckPassDefaults()
+{
+  // The options as PrintSelf lists them, from ShadingMode to the last render's statistics,
+  // less the effective cutoff (a result).
+  auto options = [](vtkClusteredLightingPass* pass)
+  {
+    std::ostringstream all;
+    pass->PrintSelf(all, vtkIndent());
+    std::istringstream lines(all.str());
+    std::vector<std::string> out;
+    bool inside = false;
+    for (std::string line; std::getline(lines, line);)
+    {
+      inside = inside || line.find("ShadingMode:") != std::string::npos;
+      if (line.find("Last render:") != std::string::npos)
+      {
+        break;
+      }
+      if (inside && line.find("EffectiveCutoff:") == std::string::npos)
+      {
+        out.push_back(line);
+      }
+    }
+    return out;
+  };
+  this->ResetPassDefaults();
+  vtkNew<vtkClusteredLightingPass> fresh;
+  // Set apart on purpose: rows time the options as set (AutomaticDepthPrepass).
+  fresh->SetAutomaticDepthPrepass(false);
+  const std::vector<std::string> ours = options(this->Pass), theirs = options(fresh);
+  std::string differences;
+  for (std::size_t i = 0; i < std::max(ours.size(), theirs.size()); ++i)
+  {
+    const std::string a = i < ours.size() ? ours[i] : "", b = i < theirs.size() ? theirs[i] : "";
+    if (a != b)
+    {
+      differences += "  reset: " + a + "\n  fresh: " + b + "\n";
+    }
+  }
+  return differences;
 }
 
 //------------------------------------------------------------------------------

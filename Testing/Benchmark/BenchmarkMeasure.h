@@ -84,6 +84,10 @@ public:
   void ClearReference() { this->Reference.clear(); }
   /// Sets every option the plan's knobs touch back to the pass's default.
   void ResetPassDefaults();
+  /// ResetPassDefaults, then the options (PrintSelf's lines) where it left the pass unlike
+  /// a new one, other than AutomaticDepthPrepass; empty if none. A knob a row sets and the
+  /// reset forgets would leak into every later row.
+  std::string CheckPassDefaults();
   /// Measures one step with the current scene, lights and pass options.
   Row Measure(const Step& step);
 

@@ -113,6 +113,16 @@ void AddNearBudgetRows(const Step& from, std::vector<Step>& plan)
     plan.push_back(s);
   }
 }
+// The same step with the exact far sums near saturation taken at any light count
+// (FarFieldExactSumLimit), for the counts above their default limit.
+Step ExactFarSumsAtAnyCount(const Step& from)
+{
+  Step e = from;
+  e.Sweep = "exact far sums";
+  e.Value = "at any light count";
+  e.Apply = [](vtkClusteredLightingPass* p) { p->SetFarFieldExactSumLimit(VTK_INT_MAX); };
+  return e;
+}
 }
 
 //------------------------------------------------------------------------------
@@ -152,6 +162,21 @@ std::vector<Step> MakePlan(const PlanOptions& options)
         // and one at 65,536 uniform lights (about 4 minutes, rendered once).
         s.Reference = n <= 16384 || (layout == "uniform" && n == 65536);
         plan.push_back(s);
+        if (n == 65536 && layout != "uniform" && !quick)
+        {
+          Step e = ExactFarSumsAtAnyCount(s);
+          e.Frames = 2; // seconds per frame on llvmpipe
+          plan.push_back(e);
+        }
+        if (layout == "uniform" && n == 16384 && !quick)
+        {
+          // What the exact far sums cost below their limit.
+          Step t = s;
+          t.Sweep = "far tolerance";
+          t.Value = "1 (no exact sums)";
+          t.Apply = [](vtkClusteredLightingPass* p) { p->SetFarFieldTolerance(1.0); };
+          plan.push_back(t);
+        }
         if (layout == "uniform" && n == 65536 && !quick)
         {
           // The far field's resolution where it holds most of the light (the same
@@ -165,14 +190,22 @@ std::vector<Step> MakePlan(const PlanOptions& options)
             r.Apply = [nodes](vtkClusteredLightingPass* p) { p->SetFarFieldResolution(nodes); };
             plan.push_back(r);
           }
-          // What the exact far sums near saturation cost here: a suspect for the time of
-          // this frame on a GPU, where the fragments shaded together wait for the one
-          // that sums every far part (docs/benchmark, "On a real GPU").
-          Step t = s;
-          t.Sweep = "far tolerance";
-          t.Value = "1 (no exact sums)";
-          t.Apply = [](vtkClusteredLightingPass* p) { p->SetFarFieldTolerance(1.0); };
-          plan.push_back(t);
+          // What the exact far sums near saturation would cost here, above their default
+          // limit (FarFieldExactSumLimit): 93% of an H200's frame, for the same error
+          // (docs/far-field.md, "The exact far sums on a GPU").
+          plan.push_back(ExactFarSumsAtAnyCount(s));
+          // A list texture a quarter the size (32 MiB instead of 128 MiB, one bit per
+          // light and cluster): ruled out on a GPU as the cause of the 65,536-light frame
+          // (docs/benchmark/2026-11-27/gpu-h200-exact-sums).
+          Step q = s;
+          q.Sweep = "tiles";
+          q.Value = "16x8";
+          q.Apply = [](vtkClusteredLightingPass* p)
+          {
+            p->SetTilesX(16);
+            p->SetTilesY(8);
+          };
+          plan.push_back(q);
         }
         if (layout == "uniform" && n <= 16384)
         {
@@ -258,10 +291,10 @@ std::vector<Step> MakePlan(const PlanOptions& options)
         };
         s.Teardown = [n](Context& ctx) { ctx.MakeLights(n, "uniform"); };
         plan.push_back(s);
-        // Still white lights at 65,536, with a reference, with and without the exact far
-        // sums near saturation (FarFieldTolerance 1 turns them off): where the time of
-        // white lights goes (docs/far-field.md).
-        for (double tolerance : { 2.0 / 255.0, 1.0 })
+        // Still white lights at 65,536, with a reference, without the exact far sums near
+        // saturation (the default above FarFieldExactSumLimit) and with them: where the
+        // time of white lights goes (docs/far-field.md).
+        for (bool exact : { false, true })
         {
           if (n > 16384)
           {
@@ -269,9 +302,12 @@ std::vector<Step> MakePlan(const PlanOptions& options)
             still.AnimateLights = false;
             still.Reference = true;
             still.Frames = 2;
-            still.Value = tolerance < 1.0 ? "white" : "white far tolerance 1";
-            still.Apply = [tolerance](vtkClusteredLightingPass* p)
-            { p->SetFarFieldTolerance(tolerance); };
+            still.Value = exact ? "white exact far sums" : "white";
+            if (exact)
+            {
+              still.Apply = [](vtkClusteredLightingPass* p)
+              { p->SetFarFieldExactSumLimit(VTK_INT_MAX); };
+            }
             plan.push_back(still);
           }
         }

@@ -207,7 +207,15 @@ int main(int argc, char* argv[])
       step.Teardown(ctx);
       referenceKey.clear();
     }
-    ctx.ResetPassDefaults();
+    // Resets, and checks that no option this row set outlives it.
+    const std::string unlike = ctx.CheckPassDefaults();
+    if (!unlike.empty())
+    {
+      std::fprintf(stderr,
+        "after %s, Context::ResetPassDefaults leaves the pass unlike a new one:\n%s",
+        step.GetId().c_str(), unlike.c_str());
+      return EXIT_FAILURE;
+    }
   }
 
   std::string command = "ClusteredLightingBenchmark";

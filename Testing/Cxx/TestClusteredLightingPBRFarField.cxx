@@ -12,6 +12,7 @@
 //  - the default tolerance (2/255): within the tolerance plus rounding of brute force (the
 //    bracket is computed from interpolated moments, whose own error is the grid's);
 //  - no NaN pixel, and the frame uses the far field (every light is split);
+//  - FarFieldExactSumLimit (Phong fragments only) leaves PBR's exact sums on;
 //  - the pass says once, in a warning, that PBR actors sum their far light exactly and
 //    what to do for speed (and not while the actors are Phong).
 #include "ClusteredLightingTestUtilities.h"
@@ -119,6 +120,13 @@ int TestClusteredLightingPBRFarField(int, char*[])
       "default tolerance: within the tolerance and rounding of brute force");
     Check(ClusteredLightingTest::CountNonFinitePixels(pass, rw) == 0, "no NaN pixel");
   }
+  // PBR actors take the exact sums whatever FarFieldExactSumLimit says (their far light
+  // has no stated bound without them; the metal above is up to 35 steps off without).
+  pass->SetFarFieldExactSumLimit(0);
+  const auto limited = CompareWithBruteForce(pass, rw);
+  std::printf("exact sum limit 0: max %.2f steps\n", 255.0 * limited.MaxAbsError);
+  Check(limited.MaxAbsError <= 2.0 / 255.0 + rounding,
+    "exact sum limit 0: PBR still within the tolerance and rounding of brute force");
   const std::size_t said = CountPbrWarnings(messages->Warnings);
   std::printf(
     "%zu warnings, %zu of them about PBR and the far field\n", messages->Warnings.size(), said);

@@ -13,7 +13,9 @@
 //    the error reaches 5 steps there, inside a stated bound of up to 58;
 //  - at every scale, the image is within what the README states for very bright far
 //    fields (at most 5 steps, RMSE under one step): the derived bound alone, up to 458
-//    steps at intensity 1, could not catch a regression.
+//    steps at intensity 1, could not catch a regression;
+//  - with more lights than FarFieldExactSumLimit the exact sums are off (fewer lights
+//    evaluated per pixel) and every pixel is still within its derived bound.
 #include "ClusteredLightingTestUtilities.h"
 
 #include "vtkActorCollection.h"
@@ -107,8 +109,28 @@ int TestClusteredLightingSaturation(int, char*[])
     // under one step (measured: 0, 5, 5 and 1 steps; RMSE at most 0.62 steps, at 1/8).
     Check(255.0 * comparison.Image.MaxAbsError <= 5.0 + 1e-3 && 255.0 * comparison.Image.RMSE < 1.0,
       (what + ": at most 5 steps from brute force, RMSE under one step").c_str());
-    std::printf(
-      "%s: lights evaluated per pixel %.1f of %d\n", what.c_str(), MeanEvaluated(pass, rw), n);
+    const double evaluated = MeanEvaluated(pass, rw);
+    std::printf("%s: lights evaluated per pixel %.1f of %d\n", what.c_str(), evaluated, n);
+    if (scale == 0.125)
+    {
+      // FarFieldExactSumLimit: with more lights than it the exact sums are off (fewer
+      // lights evaluated), and the image stays inside the stated bound; at exactly as many
+      // lights they are on.
+      const int limit = pass->GetFarFieldExactSumLimit();
+      pass->SetFarFieldExactSumLimit(n);
+      Check(MeanEvaluated(pass, rw) == evaluated, "as many lights as the limit: exact sums on");
+      pass->SetFarFieldExactSumLimit(n - 1);
+      rw->Render();
+      const double without = MeanEvaluated(pass, rw);
+      std::printf(
+        "%s, exact sum limit %d: lights evaluated per pixel %.1f\n", what.c_str(), n - 1, without);
+      Check(without < 0.5 * evaluated, "more lights than the limit: no exact far sums");
+      Check(ClusteredLightingTest::CheckClusteredFrame(
+              pass, rw, ren, 1.4, (what + ", above the exact sum limit").c_str()) == 0,
+        "above the exact sum limit: within the derived bound of brute force");
+      pass->SetFarFieldExactSumLimit(limit);
+      rw->Render();
+    }
   }
 
   // VTK's default specular power is 1. Below power 2 a Phong lobe can exceed R^T T R (the

@@ -21,11 +21,13 @@ mkdir -p "$stage/lib" "$stage/bin" "$stage/dri"
 (cd "$out/gl" && apt-get download libegl1 libglvnd0 libopengl0 libgl1 libglx0 libgles2 2>/dev/null)
 
 # Every library the programs load, except the C and C++ runtimes (the machine has newer
-# ones) and libglvnd's (above).
+# ones), libglvnd's (above) and this module's own, which comes with the build's lib/ (a
+# copy here would go first on the library path there, and a stale one crashes the
+# programs built with a newer header).
 programs=("$build/bin/vtkRenderingClusteredCxxTests" "$build/Examples/ManyLights"
   "$build/Testing/Benchmark/ClusteredLightingBenchmark" /usr/bin/Xvfb /usr/bin/xkbcomp
   /usr/lib/x86_64-linux-gnu/dri/swrast_dri.so)
-skip='^(libc|libm|libdl|libpthread|librt|ld-linux-x86-64|libstdc\+\+|libgcc_s|libGL|libGLX|libGLdispatch|libOpenGL|libEGL|libGLESv2)\.so'
+skip='^(libvtkRenderingClustered|libc|libm|libdl|libpthread|librt|ld-linux-x86-64|libstdc\+\+|libgcc_s|libGL|libGLX|libGLdispatch|libOpenGL|libEGL|libGLESv2)\.so'
 for p in "${programs[@]}"; do ldd "$p" | awk '$3 ~ /^\// { print $3 }'; done | sort -u |
   while read -r lib; do
     basename "$lib" | grep -Eq "$skip" || cp -L "$lib" "$stage/lib/"

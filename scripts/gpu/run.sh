@@ -4,7 +4,7 @@
 # GLX window renders on the GPU (through libglx-over-egl.so), runs the GL tests, then the
 # benchmark. Writes tests.txt, test-logs.tgz, bench.log and bench.tgz to $OUT (default
 # ./gpu-out). Run as root (it unpacks libglvnd and Xvfb's files into /).
-# Environment: REQUIRE_GPU=0 runs on whatever renders (to try the harness without a GPU), BENCH_S (seconds the benchmark may run, default 280; it prints each row as
+# Environment: VARIANTS (names of library variants, see the end), REQUIRE_GPU=0 runs on whatever renders (to try the harness without a GPU), BENCH_S (seconds the benchmark may run, default 280; it prints each row as
 # it is measured), BENCH_ARGS (e.g. --filter REGEX), TESTS=0 to skip the tests.
 set -uo pipefail
 here="$PWD"
@@ -46,4 +46,13 @@ timeout "${BENCH_S:-280}" build/Testing/Benchmark/ClusteredLightingBenchmark \
   --output /tmp/gpu-bench "${args[@]}" > "$out/bench.log" 2>&1
 echo "benchmark exit $? at $(($(date +%s) - start)) s (124: stopped at BENCH_S; bench.log has every row measured)"
 tar -C /tmp -czf "$out/bench.tgz" gpu-bench 2>/dev/null
+# Variants of the library to compare side by side in the same session: each is a folder
+# .gpu/variants/NAME holding a libvtkRenderingClustered.so built from changed code; the
+# benchmark (the same rows) runs again with it first on the library path.
+for v in ${VARIANTS:-}; do
+  LD_LIBRARY_PATH="$here/.gpu/variants/$v:$b/lib" timeout "${BENCH_S:-280}" \
+    build/Testing/Benchmark/ClusteredLightingBenchmark --output "/tmp/gpu-bench-$v" "${args[@]}" \
+    > "$out/bench-$v.log" 2>&1
+  echo "variant $v: benchmark exit $? at $(($(date +%s) - start)) s"
+done
 true

@@ -40,6 +40,21 @@ using namespace vtkClusteredLighting;
 namespace
 {
 //------------------------------------------------------------------------------
+// The actor's property, or null for other props.
+vtkProperty* GetActorProperty(vtkProp* prop)
+{
+  vtkActor* actor = vtkActor::SafeDownCast(prop);
+  return actor ? actor->GetProperty() : nullptr;
+}
+
+// Whether the prop shades with VTK's PBR model (the shading code's PBR variant).
+bool IsPbr(vtkProp* prop)
+{
+  vtkProperty* property = GetActorProperty(prop);
+  return property && property->GetInterpolation() == VTK_PBR;
+}
+
+//------------------------------------------------------------------------------
 // Translucent step that behaves like stock VTK: order-independent transparency, or
 // (dual) depth peeling when the renderer has UseDepthPeeling on.
 class vtkClusteredLightingTranslucentStep : public vtkRenderPass
@@ -1017,9 +1032,8 @@ void vtkClusteredLightingPass::InjectShadingCode(std::string& fragmentShader, vt
     return; // clustered lighting off for this build
   }
   vtkClusteredLightingShaderVariant variant = this->Internals->Variant;
-  vtkActor* actor = vtkActor::SafeDownCast(prop);
-  vtkProperty* property = actor ? actor->GetProperty() : nullptr;
-  variant.PBR = property && property->GetInterpolation() == VTK_PBR;
+  vtkProperty* property = GetActorProperty(prop);
+  variant.PBR = IsPbr(prop);
   if (property)
   {
     const double* sc = property->GetSpecularColor();
@@ -1136,10 +1150,7 @@ bool vtkClusteredLightingPass::SetShaderParameters(
     if (program->IsUniformUsed("clFarFieldTolerance"))
     {
       // 1 turns the exact far sums off (FarFieldExactSumLimit).
-      vtkActor* actor = vtkActor::SafeDownCast(prop);
-      vtkProperty* property = actor ? actor->GetProperty() : nullptr;
-      const bool pbr = property && property->GetInterpolation() == VTK_PBR;
-      const bool exact = pbr || r.NumberOfLights <= this->FarFieldExactSumLimit;
+      const bool exact = IsPbr(prop) || r.NumberOfLights <= this->FarFieldExactSumLimit;
       program->SetUniformf(
         "clFarFieldTolerance", exact ? static_cast<float>(this->FarFieldTolerance) : 1.0f);
     }

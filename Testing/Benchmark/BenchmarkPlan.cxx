@@ -113,6 +113,16 @@ void AddNearBudgetRows(const Step& from, std::vector<Step>& plan)
     plan.push_back(s);
   }
 }
+// The same step without the exact far sums near saturation (FarFieldTolerance 1).
+Step WithoutExactFarSums(const Step& from)
+{
+  Step t = from;
+  t.Sweep = "far tolerance";
+  t.Value = "1 (no exact sums)";
+  t.Apply = [](vtkClusteredLightingPass* p) { p->SetFarFieldTolerance(1.0); };
+  return t;
+}
+
 // The same step with the exact far sums near saturation taken at any light count
 // (FarFieldExactSumLimit), for the counts above their default limit.
 Step ExactFarSumsAtAnyCount(const Step& from)
@@ -171,11 +181,7 @@ std::vector<Step> MakePlan(const PlanOptions& options)
         if (layout == "uniform" && n == 16384 && !quick)
         {
           // What the exact far sums cost below their limit.
-          Step t = s;
-          t.Sweep = "far tolerance";
-          t.Value = "1 (no exact sums)";
-          t.Apply = [](vtkClusteredLightingPass* p) { p->SetFarFieldTolerance(1.0); };
-          plan.push_back(t);
+          plan.push_back(WithoutExactFarSums(s));
         }
         if (layout == "uniform" && n == 65536 && !quick)
         {
@@ -236,11 +242,7 @@ std::vector<Step> MakePlan(const PlanOptions& options)
         if (k == 0)
         {
           // What the exact far sums near saturation cost, and what they buy.
-          Step t = s;
-          t.Sweep = "far tolerance";
-          t.Value = "1 (no exact sums)";
-          t.Apply = [](vtkClusteredLightingPass* p) { p->SetFarFieldTolerance(1.0); };
-          plan.push_back(t);
+          plan.push_back(WithoutExactFarSums(s));
         }
         s.Method = "brute";
         s.Counts = false;

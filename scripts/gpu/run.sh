@@ -42,17 +42,17 @@ fi
 cd "$root" || exit 5
 args=()
 eval "args=(${BENCH_ARGS:-})" # BENCH_ARGS is shell words: quote a regex in it
-timeout "${BENCH_S:-280}" build/Testing/Benchmark/ClusteredLightingBenchmark \
-  --output /tmp/gpu-bench "${args[@]}" > "$out/bench.log" 2>&1
-echo "benchmark exit $? at $(($(date +%s) - start)) s (124: stopped at BENCH_S; bench.log has every row measured)"
+bench() { # bench <name> <library path>: the benchmark's rows, to $out/<name>.log
+  LD_LIBRARY_PATH="$2" timeout "${BENCH_S:-280}" build/Testing/Benchmark/ClusteredLightingBenchmark \
+    --output "/tmp/gpu-$1" "${args[@]}" > "$out/$1.log" 2>&1
+  echo "$1: benchmark exit $? at $(($(date +%s) - start)) s (124: stopped at BENCH_S; the log has every row measured)"
+}
+bench bench "$b/lib"
 tar -C /tmp -czf "$out/bench.tgz" gpu-bench 2>/dev/null
 # Variants of the library to compare side by side in the same session: each is a folder
 # .gpu/variants/NAME holding a libvtkRenderingClustered.so built from changed code; the
 # benchmark (the same rows) runs again with it first on the library path.
 for v in ${VARIANTS:-}; do
-  LD_LIBRARY_PATH="$here/.gpu/variants/$v:$b/lib" timeout "${BENCH_S:-280}" \
-    build/Testing/Benchmark/ClusteredLightingBenchmark --output "/tmp/gpu-bench-$v" "${args[@]}" \
-    > "$out/bench-$v.log" 2>&1
-  echo "variant $v: benchmark exit $? at $(($(date +%s) - start)) s"
+  bench "bench-$v" "$here/.gpu/variants/$v:$b/lib"
 done
 true

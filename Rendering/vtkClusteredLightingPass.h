@@ -543,8 +543,10 @@ public:
    * their times (GetLastAssignmentTime, GetLastShadingTime), and count the fragments of
    * the shading render that pass the depth test (GetShadedFragmentsPerVisiblePixel, an
    * occlusion query). Costs a pipeline stall; for benchmarks. Default is off.
+   * Changes what is measured, not what is drawn, so it does not modify the pass: turning
+   * it on does not make a new scene for AutomaticDepthPrepass (no new trial).
    */
-  vtkSetMacro(MeasureTimings, bool);
+  void SetMeasureTimings(bool measure) { this->MeasureTimings = measure; }
   vtkGetMacro(MeasureTimings, bool);
   vtkBooleanMacro(MeasureTimings, bool);
   //@}

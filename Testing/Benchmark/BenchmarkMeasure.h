@@ -43,6 +43,13 @@ struct Row
   int Lights = 0;
   int Frames = 0;
   double MsMedian = NAN, MsMin = NAN, MsMax = NAN;
+  /// Median frame time of the frames that measured the pass's parts (MeasureTimings:
+  /// a glFinish between the parts); the timed frames above run without it.
+  double InstrumentedMs = NAN;
+  /// Median CPU time of the rendering thread in a timed frame (what it costs to issue
+  /// the frame: VTK's and the pass's own work, the driver's front end; a GPU driver's
+  /// worker threads and llvmpipe's rasterizer threads are not counted).
+  double CpuMs = NAN;
   double AssignMs = NAN, LightUpdateMs = NAN, ShadeMs = NAN, FirstFrameMs = NAN;
   double Evaluated = NAN, Reached = NAN;
   /// Lights evaluated per pixel if every pixel cost as much as the most evaluated pixel of

@@ -244,6 +244,15 @@ std::vector<Step> MakePlan(const PlanOptions& options)
           // What the exact far sums near saturation cost, and what they buy.
           plan.push_back(WithoutExactFarSums(s));
         }
+        // The pass's default chooses the prepass by timing (AutomaticDepthPrepass, off in
+        // the rows above so that they time the mode they name; its trial runs in the 12
+        // warm-up frames).
+        Step automatic = s;
+        automatic.Sweep = "depth";
+        automatic.Value = "automatic";
+        automatic.Warmup = 12;
+        automatic.Apply = [](vtkClusteredLightingPass* p) { p->SetAutomaticDepthPrepass(true); };
+        plan.push_back(automatic);
         s.Method = "brute";
         s.Counts = false;
         s.Apply = [](vtkClusteredLightingPass* p)

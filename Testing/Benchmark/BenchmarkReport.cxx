@@ -74,6 +74,8 @@ const std::vector<Column>& Columns()
     CL_NUMBER_COLUMN("ms_median", MsMedian),
     CL_NUMBER_COLUMN("ms_min", MsMin),
     CL_NUMBER_COLUMN("ms_max", MsMax),
+    CL_NUMBER_COLUMN("cpu_ms", CpuMs),
+    CL_NUMBER_COLUMN("instrumented_ms", InstrumentedMs),
     CL_NUMBER_COLUMN("assign_ms", AssignMs),
     CL_NUMBER_COLUMN("light_update_ms", LightUpdateMs),
     CL_NUMBER_COLUMN("shade_ms", ShadeMs),
@@ -328,17 +330,19 @@ void WriteMarkdown(const std::vector<Row>& rows, const std::string& path)
 {
   std::ofstream out(path);
   out << "| scene | layout | lights | method | knob | value | ms (median) | [min, max] | "
-         "assign ms | evaluated/px | reaching/px | max err (steps) | RMSE (steps) | "
+         "CPU ms | ms with timings | assign ms | evaluated/px | reaching/px | max err (steps) | "
+         "RMSE (steps) | "
          "px > 1 step | signed (steps) | list MiB | prepass ms | shaded/visible px | "
          "far build ms | far bound (steps) |\n";
-  out << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  out << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
+         "\n";
   for (const Row& r : rows)
   {
     out << "| " << r.Scene << " | " << r.Layout << " | " << r.Lights << " | " << r.Method << " | "
         << r.Sweep << " | " << r.Value << " | " << Num(r.MsMedian, 4) << " | [" << Num(r.MsMin, 4)
-        << ", " << Num(r.MsMax, 4) << "] | " << Num(r.AssignMs, 3) << " | " << Num(r.Evaluated, 3)
-        << " | " << Num(r.Reached, 3) << " | " << Num(r.MaxError * 255.0, 3) << " | "
-        << Num(r.RMSE * 255.0, 3) << " | "
+        << ", " << Num(r.MsMax, 4) << "] | " << Num(r.CpuMs, 3) << " | " << Num(r.InstrumentedMs, 3)
+        << " | " << Num(r.AssignMs, 3) << " | " << Num(r.Evaluated, 3) << " | " << Num(r.Reached, 3)
+        << " | " << Num(r.MaxError * 255.0, 3) << " | " << Num(r.RMSE * 255.0, 3) << " | "
         << (std::isnan(r.OverOneStep) ? std::string() : Num(100.0 * r.OverOneStep, 3) + "%")
         << " | " << Num(r.SignedError * 255.0, 3) << " | " << Num(r.ListMiB, 3) << " | "
         << Num(r.PrepassMs, 3) << " | " << Num(r.ShadedPerVisible, 3) << " | "

@@ -149,6 +149,17 @@ int TestClusteredLightingAutomaticPrepass(int, char*[])
   }
   Check(pass->GetNumberOfDepthPrepassTrials() == 1,
     "moving camera, a prop hidden every other frame: one trial completed in 11 frames");
+  // Measuring the pass's parts (as a benchmark does after its timed frames) changes
+  // nothing drawn, so it is the same scene: the trial and its choice stay.
+  const std::string chosen = Pattern(RenderFrames(rw, pass, 2).Prepass);
+  pass->MeasureTimingsOn();
+  frames = RenderFrames(rw, pass, 2);
+  pass->MeasureTimingsOff();
+  std::printf("after the trial: %s, with MeasureTimings: %s\n", chosen.c_str(),
+    Pattern(frames.Prepass).c_str());
+  Check(pass->GetNumberOfDepthPrepassTrials() == 1 && (chosen == "PP" || chosen == "--") &&
+      Pattern(frames.Prepass) == chosen,
+    "MeasureTimings on: still one trial, and its choice in every frame");
 
   // 4. Twice the lights: a new scene, which starts with the prepass and no trial.
   ClusteredLightingTest::MakeUserLights(userLights, 1200, 0.01, 13);

@@ -84,6 +84,10 @@ for name in re.findall(r"virtual void Set(\w+)\(int \w+\);", header):
         r"void Set%sTo\w+\(\) \{ this->Set%s\((\w+)\); \}" % (name, name), header)]
     if t.check(len(values) >= 2, "%s: an enumerated option with SetXToY methods" % name):
         options[name] = {"type": "int", "range": (min(values), max(values))}
+# A diagnostic whose setter does not modify the pass (it changes what is measured, not
+# what is drawn): MeasureTimings.
+for name in re.findall(r"void Set(\w+)\(bool \w+\) \{", header):
+    options[name] = {"type": "bool", "range": None}
 defaults = {name: value_of(value) for _, name, value in re.findall(
     r"^\s*(bool|int|double|float)\s+(\w+)\s*=\s*([^;]+);", header, re.M)}
 t.check(len(options) >= 15, "%d options in vtkClusteredLightingPass.h: %s"

@@ -49,6 +49,7 @@ double ThreadCpuMs()
   return 1e3 * static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_nsec);
 }
 
+//------------------------------------------------------------------------------
 double Median(std::vector<double> v)
 {
   return ClusteredLightingScenes::Median(std::move(v));

@@ -24,6 +24,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <ctime>
 #include <fstream>
@@ -437,6 +438,15 @@ void WriteMachine(vtkRenderWindow* rw, const std::string& command, const std::st
     out << "GL_MAX_TEXTURE_SIZE: " << vtkTextureObject::GetMaximumTextureSize(gl) << "\n";
   }
   out << "window: " << rw->GetSize()[0] << "x" << rw->GetSize()[1] << "\n";
+  // Drivers' settings that change what is timed: llvmpipe's thread count, and whether
+  // NVIDIA's driver spins (counted as CPU time, cpu_ms) or sleeps while it waits.
+  for (const char* name : { "LP_NUM_THREADS", "__GL_YIELD", "__GL_THREADED_OPTIMIZATIONS" })
+  {
+    if (const char* value = std::getenv(name))
+    {
+      out << "environment: " << name << "=" << value << "\n";
+    }
+  }
   if (!probeAtStart.empty())
   {
     out << "host probe at the start (one thread): " << probeAtStart << "\n";

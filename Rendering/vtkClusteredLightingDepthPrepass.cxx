@@ -259,28 +259,48 @@ vtkClusteredLighting::DepthImage vtkClusteredLightingDepthPrepass::GetImage() co
 }
 
 //------------------------------------------------------------------------------
-void vtkClusteredLightingDepthPrepass::NoteProgram(vtkShaderProgram* program)
+vtkClusteredLightingDepthPrepass::ProgramFacts vtkClusteredLightingDepthPrepass::ReadProgramFacts(
+  const std::string& fs)
 {
-  if (!program || !program->GetFragmentShader())
-  {
-    return;
-  }
-  const std::string fs = program->GetFragmentShader()->GetSource();
-  if (fs.find(RecordedOutput) == std::string::npos)
-  {
-    this->UnrecordedDepths = true;
-  }
-  const std::size_t writes = Count(fs, "gl_FragDepth =");
-  if (writes == 0)
-  {
-    return;
-  }
+  ProgramFacts facts;
+  facts.Records = fs.find(RecordedOutput) != std::string::npos;
+  facts.Writes = Count(fs, "gl_FragDepth =");
   // VTK's coincident-topology offset (vtkOpenGLPolyDataMapper::ReplaceShaderCoincidentOffset):
   // 9.1 adds cOffset / 65000; 9.2 also adds cFactor times the depth slope, which no fixed
   // margin bounds, so only cFactor = 0 is accepted there.
   const std::size_t offsets91 = Count(fs, "gl_FragDepth = gl_FragCoord.z + 1.0*cOffset/65000;");
   const std::size_t offsets92 =
     Count(fs, "gl_FragDepth = gl_FragCoord.z + cFactor*cscale + 1.0*cOffset/65000;");
+  facts.KnownOffsets = offsets91 + offsets92 == facts.Writes;
+  facts.SlopeFactor = offsets92 > 0;
+  return facts;
+}
+
+//------------------------------------------------------------------------------
+void vtkClusteredLightingDepthPrepass::NoteProgram(vtkShaderProgram* program)
+{
+  if (!program || !program->GetFragmentShader())
+  {
+    return;
+  }
+  const std::string hash = program->GetMD5Hash();
+  auto it = hash.empty() ? this->Facts.end() : this->Facts.find(hash);
+  const ProgramFacts facts = it != this->Facts.end()
+    ? it->second
+    : ReadProgramFacts(program->GetFragmentShader()->GetSource());
+  if (!hash.empty() && it == this->Facts.end())
+  {
+    this->Facts.emplace(hash, facts);
+  }
+  if (!facts.Records)
+  {
+    this->UnrecordedDepths = true;
+  }
+  if (facts.Writes == 0)
+  {
+    return;
+  }
+  // The offsets' values are uniforms, set per draw.
   const GLuint handle = static_cast<GLuint>(program->GetHandle());
   auto uniform = [handle](const char* name)
   {
@@ -292,7 +312,7 @@ void vtkClusteredLightingDepthPrepass::NoteProgram(vtkShaderProgram* program)
     }
     return static_cast<double>(value);
   };
-  if (offsets91 + offsets92 != writes || (offsets92 > 0 && uniform("cFactor") != 0.0))
+  if (!facts.KnownOffsets || (facts.SlopeFactor && uniform("cFactor") != 0.0))
   {
     this->UnknownDepthWrites = true;
     return;

@@ -42,6 +42,7 @@
 
 #include "vtkOpenGLRenderPass.h"
 
+#include <map>    // for the programs' facts
 #include <string> // for std::string
 #include <vector> // for std::vector
 
@@ -107,6 +108,19 @@ private:
   void operator=(const vtkClusteredLightingDepthPrepass&) = delete;
 
   void NoteProgram(vtkShaderProgram* program);
+
+  /// What a program's fragment source says about depth (NoteProgram), kept by the hash of
+  /// its sources (vtkShaderProgram::GetMD5Hash, set by VTK's shader cache): the source is
+  /// the same every frame, and reading it is a copy and two scans of some 20 KB per draw.
+  struct ProgramFacts
+  {
+    bool Records = false;      ///< has AddDepthOutput's line
+    std::size_t Writes = 0;    ///< gl_FragDepth assignments
+    bool KnownOffsets = false; ///< every one is VTK's coincident-topology offset
+    bool SlopeFactor = false;  ///< some of them are VTK 9.2's, with cFactor
+  };
+  static ProgramFacts ReadProgramFacts(const std::string& fragmentSource);
+  std::map<std::string, ProgramFacts> Facts;
 
   double MaxCoincidentOffset = 0.0;
   bool UnknownDepthWrites = false;

@@ -7,7 +7,32 @@
 #include "vtkClusteredLightingShadingDec.h"
 #include "vtkClusteredLightingShadingImpl.h"
 
+#include <map>   // for the selections already made
+#include <mutex> // for their cache
+#include <utility>
+
 using namespace vtkClusteredLighting;
+
+namespace
+{
+// SelectShaderCode parses a whole GLSL file. A mapper rebuilds its shader source whenever
+// the render passes its prop carries change, which around the depth prepass is twice a
+// frame for every actor: the same selections, asked again and again. Each selection is
+// made once (a few hundred variants at most) and kept for the process's life.
+const std::string& SelectOnce(const char* code, const std::set<std::string>& flags)
+{
+  static std::mutex mutex;
+  static std::map<std::pair<const char*, std::set<std::string>>, std::string> selections;
+  const std::lock_guard<std::mutex> lock(mutex);
+  auto key = std::make_pair(code, flags);
+  auto it = selections.find(key);
+  if (it == selections.end())
+  {
+    it = selections.emplace(std::move(key), SelectShaderCode(code, flags)).first;
+  }
+  return it->second; // map elements stay where they are; none is ever erased
+}
+}
 
 //------------------------------------------------------------------------------
 bool vtkClusteredLightingShaderVariant::SameGlobalPart(
@@ -104,17 +129,17 @@ std::set<std::string> vtkClusteredLightingShaderVariant::GetFlags() const
 //------------------------------------------------------------------------------
 std::string vtkClusteredLightingShaderVariant::GetDeclarations() const
 {
-  std::string code = SelectShaderCode(vtkClusteredLightingShadingDec, this->GetFlags());
+  std::string code = SelectOnce(vtkClusteredLightingShadingDec, this->GetFlags());
   ReplaceShaderKey(code, "@CL_MASTER_TEXELS@", std::to_string(this->MasterTexels));
   return code;
 }
 
 std::string vtkClusteredLightingShaderVariant::GetImplementation() const
 {
-  return SelectShaderCode(vtkClusteredLightingShadingImpl, this->GetFlags());
+  return SelectOnce(vtkClusteredLightingShadingImpl, this->GetFlags());
 }
 
 std::string vtkClusteredLightingShaderVariant::GetDebugImplementation() const
 {
-  return SelectShaderCode(vtkClusteredLightingDebugImpl, this->GetFlags());
+  return SelectOnce(vtkClusteredLightingDebugImpl, this->GetFlags());
 }

@@ -123,6 +123,16 @@ Step WithoutExactFarSums(const Step& from)
   return t;
 }
 
+// The same step with the pass's default choice of the prepass (AutomaticDepthPrepass, off
+// in every other row so that it times the mode it names): its trial runs in the warm-up
+// frames (3 settle frames, 4 with the prepass, 4 without), so the timed frames show the
+// choice it made.
+void MakeAutomatic(Step& step)
+{
+  step.Warmup = 12;
+  step.Apply = [](vtkClusteredLightingPass* p) { p->SetAutomaticDepthPrepass(true); };
+}
+
 // The same step with the exact far sums near saturation taken at any light count
 // (FarFieldExactSumLimit), for the counts above their default limit.
 Step ExactFarSumsAtAnyCount(const Step& from)
@@ -244,14 +254,11 @@ std::vector<Step> MakePlan(const PlanOptions& options)
           // What the exact far sums near saturation cost, and what they buy.
           plan.push_back(WithoutExactFarSums(s));
         }
-        // The pass's default chooses the prepass by timing (AutomaticDepthPrepass, off in
-        // the rows above so that they time the mode they name; its trial runs in the 12
-        // warm-up frames).
+        // The pass's default, which chooses the prepass by timing.
         Step automatic = s;
         automatic.Sweep = "depth";
         automatic.Value = "automatic";
-        automatic.Warmup = 12;
-        automatic.Apply = [](vtkClusteredLightingPass* p) { p->SetAutomaticDepthPrepass(true); };
+        MakeAutomatic(automatic);
         plan.push_back(automatic);
         s.Method = "brute";
         s.Counts = false;
@@ -361,13 +368,6 @@ std::vector<Step> MakePlan(const PlanOptions& options)
       p->SetDepthPrepass(false);
       p->SetDepthAwareClusters(false);
     };
-    // The prepass chosen by timing: its trial runs in the warm-up frames (3 settle frames,
-    // 4 with the prepass, 4 without), so the timed frames show the choice it made.
-    const auto makeAutomatic = [](Step& step)
-    {
-      step.Warmup = 12;
-      step.Apply = [](vtkClusteredLightingPass* p) { p->SetAutomaticDepthPrepass(true); };
-    };
     auto bothOff = [&](int lights)
     {
       Step off = base;
@@ -391,7 +391,7 @@ std::vector<Step> MakePlan(const PlanOptions& options)
       a.Lights = lights;
       a.Sweep = "depth";
       a.Value = "automatic";
-      makeAutomatic(a);
+      MakeAutomatic(a);
       plan.push_back(a);
     };
     for (int n :
@@ -423,7 +423,7 @@ std::vector<Step> MakePlan(const PlanOptions& options)
           }
           else if (v == " automatic")
           {
-            makeAutomatic(m);
+            MakeAutomatic(m);
           }
           plan.push_back(m);
         }

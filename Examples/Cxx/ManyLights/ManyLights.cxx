@@ -250,23 +250,25 @@ int main(int argc, char* argv[])
   renWin->Render();
   renWin->Render();
   WritePNG(renWin, output);
-  // The light assignment's time comes from as many frames again with MeasureTimings on,
-  // after the timed ones: its glFinish calls would stall a GPU's pipeline in a timed frame.
-  std::vector<double> clusteredMs, assignMs;
-  for (int f = 0; f < 2 * frames; ++f)
+  // One orbiting frame, timed.
+  auto orbit = [&]()
   {
-    pass->SetMeasureTimings(f >= frames);
     camera->Azimuth(1.0);
     ren->ResetCameraClippingRange();
-    const double ms = TimeRender(renWin);
-    if (f < frames)
-    {
-      clusteredMs.push_back(ms);
-    }
-    else
-    {
-      assignMs.push_back(pass->GetLastAssignmentTime());
-    }
+    return TimeRender(renWin);
+  };
+  std::vector<double> clusteredMs, assignMs;
+  for (int f = 0; f < frames; ++f)
+  {
+    clusteredMs.push_back(orbit());
+  }
+  // The light assignment's time comes from as many frames again with MeasureTimings on,
+  // after the timed ones: its glFinish calls would stall a GPU's pipeline in a timed frame.
+  pass->MeasureTimingsOn();
+  for (int f = 0; f < frames; ++f)
+  {
+    orbit();
+    assignMs.push_back(pass->GetLastAssignmentTime());
   }
   pass->MeasureTimingsOff();
   camera->Azimuth(-2.0 * frames);
@@ -287,9 +289,7 @@ int main(int argc, char* argv[])
     renWin->Render(); // compile
     for (int f = 0; f < bruteFrames; ++f)
     {
-      camera->Azimuth(1.0);
-      ren->ResetCameraClippingRange();
-      bruteMs.push_back(TimeRender(renWin));
+      bruteMs.push_back(orbit());
     }
   }
 

@@ -806,9 +806,23 @@ vtkClusteredLightingAssigner::SummarizeFarFieldErrorBound() const
   {
     return vtkClusteredLighting::FarFieldBoundSummary();
   }
-  return vtkClusteredLighting::SummarizeFarFieldErrorBound(
-    vtkClusteredLighting::FarFieldBuildInputs{ &this->FarFieldPlan.Grid, &this->Prepared.Lights,
-      &this->FarField.GetNearRadii(), &this->FarField.GetTree(), this->FarFieldPlan.Grouping });
+  const vtkClusteredLighting::FarFieldBuildInputs in{ &this->FarFieldPlan.Grid,
+    &this->Prepared.Lights, &this->FarField.GetNearRadii(), &this->FarField.GetTree(),
+    this->FarFieldPlan.Grouping };
+  // The probes are independent: one per task, combined in probe order (the core's
+  // serial summary, bit for bit).
+  std::vector<double> values(
+    static_cast<std::size_t>(vtkClusteredLighting::GetFarFieldBoundProbeCount(in)));
+  vtkSMPTools::For(0, static_cast<vtkIdType>(values.size()), 1,
+    [&](vtkIdType first, vtkIdType last)
+    {
+      for (vtkIdType i = first; i < last; ++i)
+      {
+        values[static_cast<std::size_t>(i)] =
+          vtkClusteredLighting::ComputeFarFieldBoundAtProbe(in, static_cast<int>(i));
+      }
+    });
+  return vtkClusteredLighting::SummarizeFarFieldBoundProbes(values);
 }
 
 //------------------------------------------------------------------------------

@@ -222,7 +222,8 @@ public:
 
   /// The far field's stated error bound over probe points (SummarizeFarFieldErrorBound,
   /// Rendering/Core/vtkClusteredLightingFarFieldBound.h) for the last build; zeros without
-  /// a far field. CPU only; its cost grows with the number of lights.
+  /// a far field. CPU only, the probes on VTK's SMP threads (the core's serial summary,
+  /// bit for bit); its cost grows with the number of lights.
   vtkClusteredLighting::FarFieldBoundSummary SummarizeFarFieldErrorBound() const;
 
   ///@{

@@ -224,34 +224,42 @@ inline glm::dvec3 ComputeFarFieldErrorBound(
       }
     }
   }
-  std::sort(groups.begin(), groups.end());
-  groups.erase(std::unique(groups.begin(), groups.end()), groups.end());
-  auto topmost = [&](int node)
+  // Each tree node's atom: its topmost ancestor (itself included) taken whole at some
+  // corner, or -1. Nodes are stored parent first (BuildTreeNode), so one pass down the
+  // tree finds them all.
+  std::vector<char> isGroup(tree.Nodes.size(), 0);
+  for (int node : groups)
   {
-    int atom = -1;
-    for (; node >= 0; node = tree.Nodes[static_cast<std::size_t>(node)].Parent)
-    {
-      atom = std::binary_search(groups.begin(), groups.end(), node) ? node : atom;
-    }
-    return atom;
-  };
+    isGroup[static_cast<std::size_t>(node)] = 1;
+  }
+  std::vector<int> atomOfNode(tree.Nodes.size(), -1);
+  for (std::size_t node = 0; node < tree.Nodes.size(); ++node)
+  {
+    const int parent = tree.Nodes[node].Parent;
+    const int inherited = parent >= 0 ? atomOfNode[static_cast<std::size_t>(parent)] : -1;
+    atomOfNode[node] = inherited >= 0 ? inherited : (isGroup[node] ? static_cast<int>(node) : -1);
+  }
   // Atom key: tree node >= 0, or -1 - light.
   auto atomOfLight = [&](int light)
   {
-    const int atom = topmost(tree.LeafOf[static_cast<std::size_t>(light)]);
+    const int leaf = tree.LeafOf[static_cast<std::size_t>(light)];
+    const int atom = leaf >= 0 ? atomOfNode[static_cast<std::size_t>(leaf)] : -1;
     return atom >= 0 ? atom : -1 - light;
   };
-  std::unordered_map<int, std::size_t> atomIndex;
+  // Each atom's slot, in order of first use: by node for groups, by light for the others.
+  std::vector<int> nodeSlot(tree.Nodes.size(), -1), lightSlot(lights.size(), -1);
+  std::size_t atoms = 0;
   std::vector<double> interpolated;
-  auto slot = [&](int key)
+  auto slotIndex = [&](int key)
   {
-    auto it = atomIndex.find(key);
-    if (it == atomIndex.end())
+    int& slot = key >= 0 ? nodeSlot[static_cast<std::size_t>(key)]
+                         : lightSlot[static_cast<std::size_t>(-1 - key)];
+    if (slot < 0)
     {
-      it = atomIndex.emplace(key, atomIndex.size()).first;
-      interpolated.resize(std::size_t{ 3 } * Q * atomIndex.size(), 0.0);
+      slot = static_cast<int>(atoms++);
+      interpolated.resize(std::size_t{ 3 } * Q * atoms, 0.0);
     }
-    return &interpolated[std::size_t{ 3 } * Q * it->second];
+    return static_cast<std::size_t>(slot);
   };
 
   // The interpolated grid value, atom by atom, and the float term's far light.
@@ -276,7 +284,7 @@ inline glm::dvec3 ComputeFarFieldErrorBound(
         color = n.Color;
         far = EvaluateAttenuation(d, n.Attenuation);
         u = v / d;
-        key = topmost(src.Group);
+        key = atomOfNode[static_cast<std::size_t>(src.Group)];
         // The group's spread terms, as the build adds them (at the block's centre).
         double dm[FarFieldMomentsPerChannel];
         ComputeGroupSpreadTerms(n, c.BlockCenter, dm);
@@ -294,7 +302,7 @@ inline glm::dvec3 ComputeFarFieldErrorBound(
         key = atomOfLight(src.Light);
       }
       Detail::AddBoundQuantities(s, qd, qn, color, far, u, scratch);
-      double* o = slot(key);
+      double* o = &interpolated[std::size_t{ 3 } * Q * slotIndex(key)];
       for (int q = 0; q < 3 * Q; ++q)
       {
         o[q] += c.Weight * scratch[q];
@@ -317,9 +325,9 @@ inline glm::dvec3 ComputeFarFieldErrorBound(
     {
       continue;
     }
-    slot(atomOfLight(l));
+    const std::size_t index = slotIndex(atomOfLight(l));
     exact.resize(interpolated.size(), 0.0);
-    double* o = &exact[std::size_t{ 3 } * Q * atomIndex[atomOfLight(l)]];
+    double* o = &exact[std::size_t{ 3 } * Q * index];
     Detail::AddBoundQuantities(s, qd, qn, lights[li].Color, far, u, o);
     const double tn = glm::dot(s.N, u), tr = glm::dot(s.R, u);
     const double lobe = tn > 0.0 && tr > 0.0 ? std::pow(tr, s.Power) : 0.0;
@@ -337,7 +345,7 @@ inline glm::dvec3 ComputeFarFieldErrorBound(
   for (int ch = 0; ch < 3; ++ch)
   {
     double delta[Q] = {};
-    for (std::size_t a = 0; a < atomIndex.size(); ++a)
+    for (std::size_t a = 0; a < atoms; ++a)
     {
       for (int q = 0; q < Q; ++q)
       {
@@ -373,7 +381,7 @@ inline glm::dvec3 ComputeFarFieldErrorBound(
 struct FarFieldBoundSummary
 {
   double Max = 0.0;  ///< largest bound, 8-bit steps
-  double Mean = 0.0; ///< mean bound, 8-bit steps
+  double Mean = 0.0; ///< mean over the probes of their largest bound, 8-bit steps
   int Probes = 0;    ///< points probed (each with 6 normals)
 };
 
@@ -383,50 +391,77 @@ struct FarFieldBoundSummary
  * normals, largest channel, in 8-bit steps. The number of probes keeps the work near
  * `lightEvaluations` light evaluations (8 to 256 probes). A summary, not a supremum: the
  * bound at a pixel depends on its position and normal (ComputeFarFieldErrorBound).
+ * SummarizeFarFieldErrorBound runs the probes in order; the probes are independent, so a
+ * caller may run ComputeFarFieldBoundAtProbe on several threads and combine the values
+ * with SummarizeFarFieldBoundProbes (the same result, bit for bit).
  */
-inline FarFieldBoundSummary SummarizeFarFieldErrorBound(
+inline int GetFarFieldBoundProbeCount(
   const FarFieldBuildInputs& in, double lightEvaluations = 16777216.0)
 {
-  FarFieldBoundSummary summary;
   if (!in.Grid || !in.Lights || !in.Tree || in.Tree->Nodes.empty())
   {
-    return summary;
+    return 0;
   }
-  const FarFieldGrid& g = *in.Grid;
   const double perProbe = 6.0 * (static_cast<double>(in.Tree->Order.size()) + 1.0);
-  summary.Probes =
-    static_cast<int>(std::min(256.0, std::max(8.0, std::floor(lightEvaluations / perProbe))));
-  auto halton = [](int i, int b)
+  return static_cast<int>(std::min(256.0, std::max(8.0, std::floor(lightEvaluations / perProbe))));
+}
+
+/// The largest bound (8-bit steps, largest channel) at probe `i` over its 6 axis normals.
+inline double ComputeFarFieldBoundAtProbe(const FarFieldBuildInputs& in, int i)
+{
+  auto halton = [](int n, int b)
   {
     double f = 1.0, r = 0.0;
-    for (; i > 0; i /= b)
+    for (; n > 0; n /= b)
     {
       f /= b;
-      r += f * (i % b);
+      r += f * (n % b);
     }
     return r;
   };
+  const FarFieldGrid& g = *in.Grid;
   const glm::dvec3 lo = g.Origin + g.Spacing;
   const glm::dvec3 size = g.Spacing *
     glm::dvec3(std::max(g.Dims[0] - 3, 0), std::max(g.Dims[1] - 3, 0), std::max(g.Dims[2] - 3, 0));
-  double sum = 0.0;
-  for (int i = 0; i < summary.Probes; ++i)
+  FarFieldShadingPoint s;
+  s.P = lo + size * glm::dvec3(halton(i + 1, 2), halton(i + 1, 3), halton(i + 1, 5));
+  double largest = 0.0;
+  for (int axis = 0; axis < 6; ++axis)
   {
-    FarFieldShadingPoint s;
-    s.P = lo + size * glm::dvec3(halton(i + 1, 2), halton(i + 1, 3), halton(i + 1, 5));
-    for (int axis = 0; axis < 6; ++axis)
-    {
-      s.N = glm::dvec3(0.0);
-      s.N[axis % 3] = axis < 3 ? 1.0 : -1.0;
-      s.R = s.N;
-      const glm::dvec3 b = 255.0 * ComputeFarFieldErrorBound(s, in);
-      const double largest = std::max(b.x, std::max(b.y, b.z));
-      summary.Max = std::max(summary.Max, largest);
-      sum += largest;
-    }
+    s.N = glm::dvec3(0.0);
+    s.N[axis % 3] = axis < 3 ? 1.0 : -1.0;
+    s.R = s.N;
+    const glm::dvec3 b = 255.0 * ComputeFarFieldErrorBound(s, in);
+    largest = std::max(largest, std::max(b.x, std::max(b.y, b.z)));
   }
-  summary.Mean = sum / (6.0 * summary.Probes);
+  return largest;
+}
+
+/// The summary of the probes' values (ComputeFarFieldBoundAtProbe), in probe order.
+inline FarFieldBoundSummary SummarizeFarFieldBoundProbes(const std::vector<double>& values)
+{
+  FarFieldBoundSummary summary;
+  summary.Probes = static_cast<int>(values.size());
+  double sum = 0.0;
+  for (double v : values)
+  {
+    summary.Max = std::max(summary.Max, v);
+    sum += v;
+  }
+  summary.Mean = values.empty() ? 0.0 : sum / static_cast<double>(values.size());
   return summary;
+}
+
+inline FarFieldBoundSummary SummarizeFarFieldErrorBound(
+  const FarFieldBuildInputs& in, double lightEvaluations = 16777216.0)
+{
+  std::vector<double> values(
+    static_cast<std::size_t>(GetFarFieldBoundProbeCount(in, lightEvaluations)));
+  for (std::size_t i = 0; i < values.size(); ++i)
+  {
+    values[i] = ComputeFarFieldBoundAtProbe(in, static_cast<int>(i));
+  }
+  return SummarizeFarFieldBoundProbes(values);
 }
 
 } // namespace vtkClusteredLighting

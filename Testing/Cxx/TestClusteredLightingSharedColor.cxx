@@ -13,7 +13,9 @@
 //  - one light of another hue brings back three channels; a light that the far field
 //    does not hold (an explicit radius, a spot light) may have any colour;
 //  - switching paths back and forth gives the first image again (textures released and
-//    made again).
+//    made again);
+//  - the pass's ComputeFarFieldErrorBound(), whose probes run on several threads, is the
+//    core's serial SummarizeFarFieldErrorBound over the same build, bit for bit.
 #include "ClusteredLightingTestUtilities.h"
 
 #include "vtkClusteredLightSet.h"
@@ -111,6 +113,23 @@ int TestClusteredLightingSharedColor(int, char*[])
   Check(MaxSteps(one, three) == 0.0, "white lights: the same image bit for bit");
   Check(ClusteredLightingTest::CheckClusteredFrame(pass, rw, ren, 1.4, "white lights") == 0,
     "white lights: within the stated bound of brute force, zero false negatives, finite");
+
+  // The stated bound's summary: threaded in the pass, serial in the core.
+  {
+    const vtkClusteredLightingAssignmentSnapshot frame =
+      vtkClusteredLightingInspector(pass).GetFrame(ren);
+    const std::vector<double> radii = vtkClusteredLighting::GetFarFieldNearRadii(frame.Lights);
+    const vtkClusteredLighting::FarFieldLightTree tree =
+      vtkClusteredLighting::BuildFarFieldLightTree(frame.Lights, radii);
+    const vtkClusteredLighting::FarFieldBuildInputs in{ &frame.FarField.Grid, &frame.Lights, &radii,
+      &tree, frame.FarField.Grouping };
+    const double serial = vtkClusteredLighting::SummarizeFarFieldErrorBound(in).Max;
+    const double threaded = pass->ComputeFarFieldErrorBound();
+    std::printf(
+      "far-field bound over the probes: %.17g steps (pass), %.17g (core)\n", threaded, serial);
+    Check(threaded == serial && serial > 0.0,
+      "ComputeFarFieldErrorBound: the core's serial summary of the same build, bit for bit");
+  }
 
   // 2. One tint, intensities from 0.005 to 0.04.
   for (vtkIdType i = 0; i < n; ++i)

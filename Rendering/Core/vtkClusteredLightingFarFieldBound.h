@@ -48,7 +48,7 @@
 #include <cmath>     // for std::abs
 #include <cstdint>   // for std::int64_t
 #include <glm/glm.hpp>
-#include <unordered_map> // for the atoms
+#include <unordered_map> // for the block lists
 #include <vector>        // for std::vector
 
 namespace vtkClusteredLighting
@@ -385,16 +385,7 @@ struct FarFieldBoundSummary
   int Probes = 0;    ///< points probed (each with 6 normals)
 };
 
-/**
- * The stated bound for a white, fully diffuse surface (Kd 1, Ks 0) at probe points spread
- * through the grid's interior (a Halton sequence, deterministic), each with the 6 axis
- * normals, largest channel, in 8-bit steps. The number of probes keeps the work near
- * `lightEvaluations` light evaluations (8 to 256 probes). A summary, not a supremum: the
- * bound at a pixel depends on its position and normal (ComputeFarFieldErrorBound).
- * SummarizeFarFieldErrorBound runs the probes in order; the probes are independent, so a
- * caller may run ComputeFarFieldBoundAtProbe on several threads and combine the values
- * with SummarizeFarFieldBoundProbes (the same result, bit for bit).
- */
+/// How many probe points SummarizeFarFieldErrorBound takes (8 to 256, see there).
 inline int GetFarFieldBoundProbeCount(
   const FarFieldBuildInputs& in, double lightEvaluations = 16777216.0)
 {
@@ -452,6 +443,16 @@ inline FarFieldBoundSummary SummarizeFarFieldBoundProbes(const std::vector<doubl
   return summary;
 }
 
+/**
+ * The stated bound for a white, fully diffuse surface (Kd 1, Ks 0) at probe points spread
+ * through the grid's interior (a Halton sequence, deterministic), each with the 6 axis
+ * normals, largest channel, in 8-bit steps. The number of probes keeps the work near
+ * `lightEvaluations` light evaluations (8 to 256 probes). A summary, not a supremum: the
+ * bound at a pixel depends on its position and normal (ComputeFarFieldErrorBound).
+ * SummarizeFarFieldErrorBound runs the probes in order; the probes are independent, so a
+ * caller may run ComputeFarFieldBoundAtProbe on several threads and combine the values
+ * with SummarizeFarFieldBoundProbes (the same result, bit for bit).
+ */
 inline FarFieldBoundSummary SummarizeFarFieldErrorBound(
   const FarFieldBuildInputs& in, double lightEvaluations = 16777216.0)
 {

@@ -332,6 +332,27 @@ inline std::vector<vtkClusteredLighting::FarFieldShadingPoint> CollectMaterials(
 }
 
 /**
+ * A frame's far field as its build saw it (the near radii and the light tree, made again
+ * from the snapshot's lights with the core's functions), for the stated bound. `frame`
+ * must outlive it.
+ */
+struct SnapshotFarField
+{
+  explicit SnapshotFarField(const vtkClusteredLightingAssignmentSnapshot& frame)
+    : Radii(vtkClusteredLighting::GetFarFieldNearRadii(frame.Lights))
+    , Tree(vtkClusteredLighting::BuildFarFieldLightTree(frame.Lights, Radii))
+    , Inputs{ &frame.FarField.Grid, &frame.Lights, &Radii, &Tree, frame.FarField.Grouping }
+  {
+  }
+  SnapshotFarField(const SnapshotFarField&) = delete;
+  SnapshotFarField& operator=(const SnapshotFarField&) = delete;
+
+  const std::vector<double> Radii;
+  const vtkClusteredLighting::FarFieldLightTree Tree;
+  const vtkClusteredLighting::FarFieldBuildInputs Inputs;
+};
+
+/**
  * The far field's stated bound (vtkClusteredLightingFarFieldBound.h) at every pixel of a
  * renderer's viewport, largest channel, in colour units, row-major from the bottom (0 off
  * the geometry and without a far field). Positions come from `depth` (opaque surfaces),
@@ -358,11 +379,8 @@ inline std::vector<double> ComputeFarFieldBounds(vtkClusteredLightingPass* pass,
   pass->SetDebugView(previous);
   rw->Render();
 
-  const std::vector<double> radii = vtkClusteredLighting::GetFarFieldNearRadii(frame.Lights);
-  const vtkClusteredLighting::FarFieldLightTree tree =
-    vtkClusteredLighting::BuildFarFieldLightTree(frame.Lights, radii);
-  const vtkClusteredLighting::FarFieldBuildInputs in{ &frame.FarField.Grid, &frame.Lights, &radii,
-    &tree, frame.FarField.Grouping };
+  const SnapshotFarField farField(frame);
+  const vtkClusteredLighting::FarFieldBuildInputs& in = farField.Inputs;
   const std::vector<vtkClusteredLighting::FarFieldShadingPoint> materials = CollectMaterials(ren);
   const glm::dmat4 worldFromVC = glm::inverse(frame.WCVC);
   const glm::dmat3 directionToWorld(worldFromVC);

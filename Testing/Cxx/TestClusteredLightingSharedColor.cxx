@@ -118,12 +118,8 @@ int TestClusteredLightingSharedColor(int, char*[])
   {
     const vtkClusteredLightingAssignmentSnapshot frame =
       vtkClusteredLightingInspector(pass).GetFrame(ren);
-    const std::vector<double> radii = vtkClusteredLighting::GetFarFieldNearRadii(frame.Lights);
-    const vtkClusteredLighting::FarFieldLightTree tree =
-      vtkClusteredLighting::BuildFarFieldLightTree(frame.Lights, radii);
-    const vtkClusteredLighting::FarFieldBuildInputs in{ &frame.FarField.Grid, &frame.Lights, &radii,
-      &tree, frame.FarField.Grouping };
-    const double serial = vtkClusteredLighting::SummarizeFarFieldErrorBound(in).Max;
+    const ClusteredLightingTest::SnapshotFarField farField(frame);
+    const double serial = vtkClusteredLighting::SummarizeFarFieldErrorBound(farField.Inputs).Max;
     const double threaded = pass->ComputeFarFieldErrorBound();
     std::printf(
       "far-field bound over the probes: %.17g steps (pass), %.17g (core)\n", threaded, serial);

@@ -8,10 +8,12 @@
  * ComputeFarFieldErrorBound gives, for one point, normal, view and material, a number the
  * error of the far field's diffuse and Phong specular provably does not exceed. Its terms:
  *
- *  1. Angular truncation, light by light: sum_j g_j |q(t_j) - k(t_j)|, where g_j is light
- *     j's far part at the point, t_j the cosine to the normal (diffuse) or to the mirrored
- *     view (specular), k the true kernel (max(0, t), the Phong lobe with no light from
- *     behind the surface) and q its order-2 approximation.
+ *  1. Angular truncation: |sum_j g_j (q(t_j) - k(t_j))|, where g_j is light j's far part
+ *     at the point, t_j the cosine to the normal (diffuse) or to the mirrored view
+ *     (specular), k the true kernel (max(0, t), the Phong lobe with no light from behind
+ *     the surface) and q its order-2 approximation. With the exact moments at the point,
+ *     the kernel's estimate is sum_j g_j q(t_j), so this is its error exactly (a signed
+ *     sum: the lights' errors partly cancel), not a bound of it.
  *  2. Interpolation and aggregation, source by source: the grid's value at the point is
  *     sum_c w_c (sum of the sources of corner c), the trilinear weights w_c of the 8
  *     corners and each corner's sources from the tree walk of its block. Grouping the
@@ -27,7 +29,12 @@
  *     with interpolated ones the interval itself moves, by at most what term 2 gives for
  *     the moments it is made of (S, V.D, D^T T D for D = N and D = R; for a Phong lobe the
  *     upper end depends on its power, as in ApplyMomentKernel), so the bound takes
- *     the larger of the unclamped bound and that shift.
+ *     the larger of the unclamped bound and that shift. One end is a square root,
+ *     (V.D + sqrt(S D^T T D)) / 2: a change d of the product moves it by at most
+ *     GetSquareRootShift (about d / (2 sqrt(S D^T T D)) where d is small against the
+ *     product, as it is wherever the far light is not faint), not sqrt(d). Until
+ *     2026-11-28 the bound took sqrt(d), which made it 2 to 5 times larger on surfaces
+ *     (docs/far-field.md, "The stated bound made tighter").
  *  4. Single precision: a relative 1e-3 of the far light (1.25 (kd + ks) sum g), which
  *     covers the node sums (up to 16,000 sources at 2^-24 each), the textures and the
  *     shader's arithmetic with float filtering weights. GPUs that filter with 8-bit
@@ -134,6 +141,19 @@ inline void AddBoundMomentQuantities(const FarFieldShadingPoint& s, const glm::d
       out[c * BoundQuantities + k] += color[c] * v[k];
     }
   }
+}
+/// The most sqrt(y) can differ from sqrt(x) for y >= 0 within d of x >= 0:
+/// max(sqrt(x + d) - sqrt(x), sqrt(x) - sqrt(max(x - d, 0))), in a form that keeps its
+/// digits when d is much smaller than x (each difference as a quotient). Below d the
+/// square root's slope grows without bound, so the shift is then up to sqrt(d); above it,
+/// about d / (2 sqrt(x)).
+inline double GetSquareRootShift(double x, double d)
+{
+  const double rx = std::sqrt(x);
+  const double up = d > 0.0 ? d / (std::sqrt(x + d) + rx) : 0.0;
+  const double fall = std::min(d, x);
+  const double down = fall > 0.0 ? fall / (rx + std::sqrt(x - fall)) : 0.0;
+  return std::max(up, down);
 }
 } // namespace Detail
 
@@ -332,9 +352,8 @@ inline glm::dvec3 ComputeFarFieldErrorBound(
     const double tn = glm::dot(s.N, u), tr = glm::dot(s.R, u);
     const double lobe = tn > 0.0 && tr > 0.0 ? std::pow(tr, s.Power) : 0.0;
     const glm::dvec3 g = lights[li].Color * far;
-    angularDiffuse +=
-      g * std::abs(qd.x + qd.y * tn + qd.z * 0.5 * (3 * tn * tn - 1) - std::max(0.0, tn));
-    angularSpecular += g * std::abs(qn.x + qn.y * tr + qn.z * 0.5 * (3 * tr * tr - 1) - lobe);
+    angularDiffuse += g * (qd.x + qd.y * tn + qd.z * 0.5 * (3 * tn * tn - 1) - std::max(0.0, tn));
+    angularSpecular += g * (qn.x + qn.y * tr + qn.z * 0.5 * (3 * tr * tr - 1) - lobe);
     farLight += g;
     exactS += g;
     exactNN += g * tn * tn;
@@ -358,18 +377,19 @@ inline glm::dvec3 ComputeFarFieldErrorBound(
     // How far the clamp interval of ApplyMomentKernel can move.
     auto upperShift = [&](double dV, double dD, double D)
     {
-      const double product = exactS[ch] * dD + D * dS + dS * dD;
-      return std::max(0.5 * (dV + std::sqrt(std::max(product, 0.0))), 0.25 * (dS + 2.0 * dV + dD));
+      const double x = std::max(exactS[ch] * D, 0.0);
+      const double d = std::max(exactS[ch] * dD + D * dS + dS * dD, 0.0);
+      return std::max(0.5 * (dV + Detail::GetSquareRootShift(x, d)), 0.25 * (dS + 2.0 * dV + dD));
     };
     const double lowerShiftN = std::max(dVN, 0.5 * (dVN + dNN));
-    const double diffuse =
-      std::max(angularDiffuse[ch] + dQd, std::max(lowerShiftN, upperShift(dVN, dNN, exactNN[ch])));
+    const double diffuse = std::max(
+      std::abs(angularDiffuse[ch]) + dQd, std::max(lowerShiftN, upperShift(dVN, dNN, exactNN[ch])));
     // The lobe's upper end as ApplyMomentKernel takes it for this power.
     const LobeUpperEnd end = GetLobeUpperEnd(s.Power);
     const double lobeShift = end == LobeUpperEnd::SecondMoment
       ? std::max(dRR, upperShift(dVR, dRR, exactRR[ch]))
       : (end == LobeUpperEnd::Diffuse ? upperShift(dVR, dRR, exactRR[ch]) : dS);
-    const double specular = std::max(angularSpecular[ch] + dQn, lobeShift);
+    const double specular = std::max(std::abs(angularSpecular[ch]) + dQn, lobeShift);
     const double precision =
       1e-3 * 1.25 * (s.Kd[ch] + s.Ks[ch]) * std::max(farLight[ch], farLightAtCorners[ch]);
     bound[ch] = s.Kd[ch] * diffuse + s.Ks[ch] * specular + precision;

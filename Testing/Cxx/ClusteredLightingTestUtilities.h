@@ -444,6 +444,7 @@ struct BruteForceCheck
   double MeanTail = 0.0;      ///< mean cutoff tail bound over geometry pixels
   double MeanFarField = 0.0;  ///< mean far-field bound over geometry pixels
   double MaxFarField = 0.0;   ///< largest far-field bound
+  double WorstRatio = 0.0;    ///< largest error / tolerance (how close the tightest pixel is)
   ImageComparison Image;
 };
 
@@ -586,6 +587,7 @@ inline BruteForceCheck CheckAgainstBruteForce(vtkClusteredLightingPass* pass, vt
       const double err = errors[i];
       out.MaxError = std::max(out.MaxError, err);
       out.MaxTolerance = std::max(out.MaxTolerance, tolerance);
+      out.WorstRatio = std::max(out.WorstRatio, err / tolerance);
       out.Violations += err > tolerance ? 1 : 0;
       if (err > tolerance && std::getenv("CL_VIOLATIONS") && out.Violations < 12)
       {
@@ -620,10 +622,10 @@ inline BruteForceCheck CheckAgainstBruteForce(vtkClusteredLightingPass* pass, vt
   std::printf("%s: clustered vs brute force: max error %.2f steps, RMSE %.5f, %.2f%% pixels over "
               "one step; derived tolerance up to %.2f steps (mean cutoff tail %.3f steps, "
               "far-field bound mean %.3f, max %.2f steps, on 1/64 of the pixels and wherever "
-              "needed); %zu of %zu pixels over their tolerance\n",
+              "needed); %zu of %zu pixels over their tolerance (the closest at %.2f of it)\n",
     what, out.MaxError * 255.0, out.Image.RMSE, 100.0 * out.Image.FractionOverOneStep,
     out.MaxTolerance * 255.0, out.MeanTail * 255.0, out.MeanFarField * 255.0,
-    out.MaxFarField * 255.0, out.Violations, out.Pixels);
+    out.MaxFarField * 255.0, out.Violations, out.Pixels, out.WorstRatio);
   return out;
 }
 

@@ -110,17 +110,26 @@ Built Build(std::vector<PreparedLight>& lights, const glm::dvec3& lo, const glm:
   return b;
 }
 
+/// What CheckBound measured: the largest error / bound ratio, and the sums of the bounds
+/// and of the errors over every sample and channel.
+struct BoundCheck
+{
+  double Worst = 0.0;
+  double SumBound = 0.0;
+  double SumError = 0.0;
+};
+
 /// Checks the stated bound at `samples` random points of the box (random normals and
-/// materials); returns the largest error / bound ratio.
-double CheckBound(const std::vector<PreparedLight>& lights, const Built& b, const glm::dvec3& lo,
-  const glm::dvec3& hi, int samples, const char* what)
+/// materials).
+BoundCheck CheckBound(const std::vector<PreparedLight>& lights, const Built& b,
+  const glm::dvec3& lo, const glm::dvec3& hi, int samples, const char* what)
 {
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> U(0.0, 1.0);
   std::normal_distribution<double> G(0.0, 1.0);
   const FarFieldBuildInputs in{ &b.Plan.Grid, &lights, &b.Radii, &b.Tree, b.Plan.Grouping };
   FarFieldBoundCache cache;
-  double worst = 0.0;
+  BoundCheck check;
   int violations = 0;
   for (int i = 0; i < samples; ++i)
   {
@@ -147,15 +156,17 @@ double CheckBound(const std::vector<PreparedLight>& lights, const Built& b, cons
       }
       if (bound[c] > 0.0)
       {
-        worst = std::max(worst, err / bound[c]);
+        check.Worst = std::max(check.Worst, err / bound[c]);
       }
+      check.SumBound += bound[c];
+      check.SumError += err;
     }
     if (violations > 5)
     {
       break;
     }
   }
-  return worst;
+  return check;
 }
 
 } // namespace
@@ -1015,6 +1026,46 @@ TEST(FarFieldBuild, ThisCPUUsesTheWidestCopyItRuns)
   }
 }
 
+TEST(FarFieldBound, SquareRootShiftIsTheLargestChangeWithinTheInterval)
+{
+  // Detail::GetSquareRootShift(x, d) bounds |sqrt(y) - sqrt(x)| for every y >= 0 within d
+  // of x, and one end of that interval reaches it: at every scale, with d far below x (the
+  // usual case: then about d / (2 sqrt(x)), not sqrt(d)), near it and above it.
+  std::mt19937 rng(12);
+  std::uniform_real_distribution<double> U(0.0, 1.0);
+  for (double scale : { 1e-12, 1e-3, 1.0, 1e6 })
+  {
+    for (double ratio : { 0.0, 1e-9, 1e-3, 0.5, 1.0, 2.0, 1e3 })
+    {
+      const double x = scale * (0.1 + U(rng)), d = ratio * x;
+      const double shift = Detail::GetSquareRootShift(x, d);
+      const double rx = std::sqrt(x);
+      double largest = 0.0;
+      for (int k = 0; k <= 1000; ++k)
+      {
+        // y within d of x (rounding may step past an end: step back), and |sqrt(y) -
+        // sqrt(x)| as |y - x| / (sqrt(y) + sqrt(x)), which keeps its digits for d << x.
+        double y = std::max(x - d + 2.0 * d * k / 1000.0, 0.0);
+        while (std::abs(y - x) > d)
+        {
+          y = std::nextafter(y, x);
+        }
+        const double rs = std::sqrt(y) + rx;
+        largest = std::max(largest, rs > 0.0 ? std::abs(y - x) / rs : 0.0);
+      }
+      EXPECT_LE(largest, shift * (1.0 + 1e-12)) << x << " " << d;
+      // Reached at an end, up to the doubles nearest it (ulp(x) / d: 2e-7 at d = 1e-9 x).
+      EXPECT_GE(largest, shift * (1.0 - 1e-6)) << x << " " << d;
+      if (ratio > 0.0 && ratio <= 1e-3)
+      {
+        EXPECT_LT(shift, 0.6 * d / rx) << x << " " << d; // far below sqrt(d)
+      }
+    }
+  }
+  EXPECT_EQ(Detail::GetSquareRootShift(0.0, 0.0), 0.0);
+  EXPECT_DOUBLE_EQ(Detail::GetSquareRootShift(0.0, 4.0), 2.0);
+}
+
 TEST(FarFieldBound, HoldsForUniformLightsAtEveryScale)
 {
   for (double scale : { 1e-3, 1.0, 1e6 })
@@ -1027,8 +1078,12 @@ TEST(FarFieldBound, HoldsForUniformLightsAtEveryScale)
     const glm::dvec3 lo(-scale), hi(scale);
     const Built b = Build(lights, lo, hi, 1.0);
     ASSERT_TRUE(b.Plan.Active) << scale;
-    const double worst = CheckBound(lights, b, lo, hi, 1500, "uniform");
-    std::printf("uniform, scale %g: largest error / bound %.3f\n", scale, worst);
+    const BoundCheck check = CheckBound(lights, b, lo, hi, 1500, "uniform");
+    std::printf("uniform, scale %g: largest error / bound %.3f, mean bound / mean error %.2f\n",
+      scale, check.Worst, check.SumBound / check.SumError);
+    // Informative as well as safe: on average within a few times the error (3.4 here;
+    // 13.8 when the clamp's square-root end moved by sqrt(d) instead of what d allows).
+    EXPECT_LT(check.SumBound, 5.0 * check.SumError) << scale;
   }
 }
 
@@ -1050,9 +1105,11 @@ TEST(FarFieldBound, HoldsForClumpedAndAlwaysOnLights)
       1200, att, [&](int i) { return centres[i % 8] + glm::dvec3(G(rng), G(rng), G(rng)); });
     const Built b = Build(lights, glm::dvec3(-1), glm::dvec3(1), 1.0);
     ASSERT_TRUE(b.Plan.Active);
-    const double worst = CheckBound(lights, b, glm::dvec3(-1), glm::dvec3(1), 1000, "clumped");
-    std::printf("clumped, attenuation (%g, %g, %g): largest error / bound %.3f\n", att.x, att.y,
-      att.z, worst);
+    const BoundCheck check = CheckBound(lights, b, glm::dvec3(-1), glm::dvec3(1), 1000, "clumped");
+    std::printf("clumped, attenuation (%g, %g, %g): largest error / bound %.3f, mean bound / "
+                "mean error %.2f\n",
+      att.x, att.y, att.z, check.Worst, check.SumBound / check.SumError);
+    EXPECT_LT(check.SumBound, 2.5 * check.SumError); // 1.6 here (4.1 with sqrt(d))
   }
 }
 
@@ -1075,7 +1132,12 @@ TEST(FarFieldBound, HoldsForHardLayouts)
     });
   const Built b = Build(lights, glm::dvec3(-1), glm::dvec3(1), 1.0);
   ASSERT_TRUE(b.Plan.Active);
-  const double inside = CheckBound(lights, b, glm::dvec3(-1), glm::dvec3(1), 1000, "hard");
-  const double outside = CheckBound(lights, b, glm::dvec3(1), glm::dvec3(1.5), 100, "outside");
-  std::printf("hard layouts: largest error / bound %.3f inside, %.3f outside\n", inside, outside);
+  const BoundCheck inside = CheckBound(lights, b, glm::dvec3(-1), glm::dvec3(1), 1000, "hard");
+  const BoundCheck outside = CheckBound(lights, b, glm::dvec3(1), glm::dvec3(1.5), 100, "outside");
+  std::printf("hard layouts: largest error / bound %.3f inside, %.3f outside; mean bound / mean "
+              "error %.2f inside, %.2f outside\n",
+    inside.Worst, outside.Worst, inside.SumBound / inside.SumError,
+    outside.SumBound / outside.SumError);
+  EXPECT_LT(inside.SumBound, 3.5 * inside.SumError);   // 2.1 (6.7 with sqrt(d))
+  EXPECT_LT(outside.SumBound, 4.0 * outside.SumError); // 2.8 (5.1 with sqrt(d))
 }

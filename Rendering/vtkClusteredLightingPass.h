@@ -644,7 +644,7 @@ public:
    * 8-bit steps of a white, fully diffuse surface: the largest over probe points spread
    * through the far field's region (each with the 6 axis normals) and over the renderers
    * the pass renders. Computed on request on the CPU, the probes spread over VTK's SMP
-   * threads (on 2 threads about 0.4 s for 4,096 lights, 1.6 s for 65,536, 3 s for
+   * threads (on 2 threads about 0.25 s for 4,096 lights, 0.7 s for 65,536, 1.1 s for
    * 524,288: docs/far-field.md), never during a render. 0 without a far field.
    * The bound at a pixel depends on its position, normal and material; the tests check it
    * pixel by pixel against brute force.

@@ -158,20 +158,35 @@ inline double GetSquareRootShift(double x, double d)
 } // namespace Detail
 
 /**
- * The stated bound (see the file description) of the far field's error at the shaded
- * point s, per colour channel, in the units of the light colours (multiply by 255 for
- * 8-bit steps). `cache` (optional) keeps the blocks' source lists for further calls on
- * the same build.
+ * The stated bound (see the file description) at `count` shaded points that share one
+ * position (points[k].P, the same for every k) and differ in normal, view or material:
+ * bounds[k] is ComputeFarFieldErrorBound(points[k], in, cache), bit for bit (each point's
+ * sums are taken in the same order). What depends on the position only (the corners'
+ * sources, the atoms, every light's far part and direction at the corners and at the
+ * point) is done once for all of them.
  */
-inline glm::dvec3 ComputeFarFieldErrorBound(
-  const FarFieldShadingPoint& s, const FarFieldBuildInputs& in, FarFieldBoundCache* cache = nullptr)
+inline void ComputeFarFieldErrorBounds(const FarFieldShadingPoint* points, int count,
+  const FarFieldBuildInputs& in, FarFieldBoundCache* cache, glm::dvec3* bounds)
 {
+  if (count <= 0)
+  {
+    return;
+  }
   const FarFieldGrid& g = *in.Grid;
   const std::vector<PreparedLight>& lights = *in.Lights;
   const std::vector<double>& radii = *in.NearRadii;
   const FarFieldLightTree& tree = *in.Tree;
-  const glm::dvec3 qd = ComputeLobeKernel(1.0), qn = ComputeLobeKernel(s.Power);
+  const FarFieldShadingPoint& s = points[0]; // the position all of them share
+  const std::size_t n = static_cast<std::size_t>(count);
+  const glm::dvec3 qd = ComputeLobeKernel(1.0);
+  std::vector<glm::dvec3> qn(n);
+  for (std::size_t k = 0; k < n; ++k)
+  {
+    qn[k] = ComputeLobeKernel(points[k].Power);
+  }
   constexpr int Q = Detail::BoundQuantities;
+  // Each atom's values: the points' 3 Q quantities one after the other.
+  const std::size_t stride = std::size_t{ 3 } * Q * n;
 
   // The cell and weights, as InterpolateFarMoments.
   const glm::dvec3 u0 = (s.P - g.Origin) / g.Spacing;
@@ -277,7 +292,7 @@ inline glm::dvec3 ComputeFarFieldErrorBound(
     if (slot < 0)
     {
       slot = static_cast<int>(atoms++);
-      interpolated.resize(std::size_t{ 3 } * Q * atoms, 0.0);
+      interpolated.resize(stride * atoms, 0.0);
     }
     return static_cast<std::size_t>(slot);
   };
@@ -291,24 +306,24 @@ inline glm::dvec3 ComputeFarFieldErrorBound(
       glm::dvec3 color, u;
       double far;
       int key;
-      double scratch[3 * Q] = {};
+      bool spread = false;
+      double dm[FarFieldMomentsPerChannel];
       if (src.Group >= 0)
       {
-        const FarFieldLightTree::Node& n = tree.Nodes[static_cast<std::size_t>(src.Group)];
-        const glm::dvec3 v = n.Centroid - c.Position;
+        const FarFieldLightTree::Node& node = tree.Nodes[static_cast<std::size_t>(src.Group)];
+        const glm::dvec3 v = node.Centroid - c.Position;
         const double d = glm::length(v);
         if (!(d > 0.0))
         {
           continue;
         }
-        color = n.Color;
-        far = EvaluateAttenuation(d, n.Attenuation);
+        color = node.Color;
+        far = EvaluateAttenuation(d, node.Attenuation);
         u = v / d;
         key = atomOfNode[static_cast<std::size_t>(src.Group)];
         // The group's spread terms, as the build adds them (at the block's centre).
-        double dm[FarFieldMomentsPerChannel];
-        ComputeGroupSpreadTerms(n, c.BlockCenter, dm);
-        Detail::AddBoundMomentQuantities(s, qd, qn, color, dm, scratch);
+        ComputeGroupSpreadTerms(node, c.BlockCenter, dm);
+        spread = true;
         farLightAtCorners += c.Weight * color * std::abs(dm[0]);
       }
       else
@@ -321,11 +336,19 @@ inline glm::dvec3 ComputeFarFieldErrorBound(
         color = lights[l].Color;
         key = atomOfLight(src.Light);
       }
-      Detail::AddBoundQuantities(s, qd, qn, color, far, u, scratch);
-      double* o = &interpolated[std::size_t{ 3 } * Q * slotIndex(key)];
-      for (int q = 0; q < 3 * Q; ++q)
+      double* o = &interpolated[stride * slotIndex(key)];
+      for (std::size_t k = 0; k < n; ++k, o += std::size_t{ 3 } * Q)
       {
-        o[q] += c.Weight * scratch[q];
+        double scratch[3 * Q] = {};
+        if (spread)
+        {
+          Detail::AddBoundMomentQuantities(points[k], qd, qn[k], color, dm, scratch);
+        }
+        Detail::AddBoundQuantities(points[k], qd, qn[k], color, far, u, scratch);
+        for (int q = 0; q < 3 * Q; ++q)
+        {
+          o[q] += c.Weight * scratch[q];
+        }
       }
       farLightAtCorners += c.Weight * color * far;
     }
@@ -334,8 +357,9 @@ inline glm::dvec3 ComputeFarFieldErrorBound(
   // The exact values at the point, atom by atom; the angular term light by light. Every
   // light of the tree is in every corner's list, so its atom has a slot already.
   std::vector<double> exact(interpolated.size(), 0.0);
-  glm::dvec3 angularDiffuse(0.0), angularSpecular(0.0), farLight(0.0);
-  glm::dvec3 exactS(0.0), exactNN(0.0), exactRR(0.0);
+  std::vector<glm::dvec3> angularDiffuse(n, glm::dvec3(0.0)), angularSpecular(n, glm::dvec3(0.0));
+  std::vector<glm::dvec3> exactNN(n, glm::dvec3(0.0)), exactRR(n, glm::dvec3(0.0));
+  glm::dvec3 farLight(0.0), exactS(0.0);
   for (int l : tree.Order)
   {
     const std::size_t li = static_cast<std::size_t>(l);
@@ -347,53 +371,77 @@ inline glm::dvec3 ComputeFarFieldErrorBound(
     }
     const std::size_t index = slotIndex(atomOfLight(l));
     exact.resize(interpolated.size(), 0.0);
-    double* o = &exact[std::size_t{ 3 } * Q * index];
-    Detail::AddBoundQuantities(s, qd, qn, lights[li].Color, far, u, o);
-    const double tn = glm::dot(s.N, u), tr = glm::dot(s.R, u);
-    const double lobe = tn > 0.0 && tr > 0.0 ? std::pow(tr, s.Power) : 0.0;
+    double* o = &exact[stride * index];
     const glm::dvec3 g = lights[li].Color * far;
-    angularDiffuse += g * (qd.x + qd.y * tn + qd.z * 0.5 * (3 * tn * tn - 1) - std::max(0.0, tn));
-    angularSpecular += g * (qn.x + qn.y * tr + qn.z * 0.5 * (3 * tr * tr - 1) - lobe);
+    for (std::size_t k = 0; k < n; ++k, o += std::size_t{ 3 } * Q)
+    {
+      const FarFieldShadingPoint& p = points[k];
+      Detail::AddBoundQuantities(p, qd, qn[k], lights[li].Color, far, u, o);
+      const double tn = glm::dot(p.N, u), tr = glm::dot(p.R, u);
+      const double lobe = tn > 0.0 && tr > 0.0 ? std::pow(tr, p.Power) : 0.0;
+      const glm::dvec3& qk = qn[k];
+      angularDiffuse[k] +=
+        g * (qd.x + qd.y * tn + qd.z * 0.5 * (3 * tn * tn - 1) - std::max(0.0, tn));
+      angularSpecular[k] += g * (qk.x + qk.y * tr + qk.z * 0.5 * (3 * tr * tr - 1) - lobe);
+      exactNN[k] += g * tn * tn;
+      exactRR[k] += g * tr * tr;
+    }
     farLight += g;
     exactS += g;
-    exactNN += g * tn * tn;
-    exactRR += g * tr * tr;
   }
 
-  glm::dvec3 bound(0.0);
-  for (int ch = 0; ch < 3; ++ch)
+  for (std::size_t k = 0; k < n; ++k)
   {
-    double delta[Q] = {};
-    for (std::size_t a = 0; a < atoms; ++a)
+    const FarFieldShadingPoint& p = points[k];
+    glm::dvec3& bound = bounds[k];
+    for (int ch = 0; ch < 3; ++ch)
     {
-      for (int q = 0; q < Q; ++q)
+      double delta[Q] = {};
+      for (std::size_t a = 0; a < atoms; ++a)
       {
-        const std::size_t at = std::size_t{ 3 } * Q * a + static_cast<std::size_t>(ch * Q + q);
-        delta[q] += std::abs(interpolated[at] - exact[at]);
+        for (int q = 0; q < Q; ++q)
+        {
+          const std::size_t at =
+            stride * a + std::size_t{ 3 } * Q * k + static_cast<std::size_t>(ch * Q + q);
+          delta[q] += std::abs(interpolated[at] - exact[at]);
+        }
       }
+      const double dS = delta[0], dVN = delta[1], dNN = delta[2], dQd = delta[3];
+      const double dVR = delta[4], dRR = delta[5], dQn = delta[6];
+      // How far the clamp interval of ApplyMomentKernel can move.
+      auto upperShift = [&](double dV, double dD, double D)
+      {
+        const double x = std::max(exactS[ch] * D, 0.0);
+        const double d = std::max(exactS[ch] * dD + D * dS + dS * dD, 0.0);
+        return std::max(0.5 * (dV + Detail::GetSquareRootShift(x, d)), 0.25 * (dS + 2.0 * dV + dD));
+      };
+      const double lowerShiftN = std::max(dVN, 0.5 * (dVN + dNN));
+      const double diffuse = std::max(std::abs(angularDiffuse[k][ch]) + dQd,
+        std::max(lowerShiftN, upperShift(dVN, dNN, exactNN[k][ch])));
+      // The lobe's upper end as ApplyMomentKernel takes it for this power.
+      const LobeUpperEnd end = GetLobeUpperEnd(p.Power);
+      const double lobeShift = end == LobeUpperEnd::SecondMoment
+        ? std::max(dRR, upperShift(dVR, dRR, exactRR[k][ch]))
+        : (end == LobeUpperEnd::Diffuse ? upperShift(dVR, dRR, exactRR[k][ch]) : dS);
+      const double specular = std::max(std::abs(angularSpecular[k][ch]) + dQn, lobeShift);
+      const double precision =
+        1e-3 * 1.25 * (p.Kd[ch] + p.Ks[ch]) * std::max(farLight[ch], farLightAtCorners[ch]);
+      bound[ch] = p.Kd[ch] * diffuse + p.Ks[ch] * specular + precision;
     }
-    const double dS = delta[0], dVN = delta[1], dNN = delta[2], dQd = delta[3];
-    const double dVR = delta[4], dRR = delta[5], dQn = delta[6];
-    // How far the clamp interval of ApplyMomentKernel can move.
-    auto upperShift = [&](double dV, double dD, double D)
-    {
-      const double x = std::max(exactS[ch] * D, 0.0);
-      const double d = std::max(exactS[ch] * dD + D * dS + dS * dD, 0.0);
-      return std::max(0.5 * (dV + Detail::GetSquareRootShift(x, d)), 0.25 * (dS + 2.0 * dV + dD));
-    };
-    const double lowerShiftN = std::max(dVN, 0.5 * (dVN + dNN));
-    const double diffuse = std::max(
-      std::abs(angularDiffuse[ch]) + dQd, std::max(lowerShiftN, upperShift(dVN, dNN, exactNN[ch])));
-    // The lobe's upper end as ApplyMomentKernel takes it for this power.
-    const LobeUpperEnd end = GetLobeUpperEnd(s.Power);
-    const double lobeShift = end == LobeUpperEnd::SecondMoment
-      ? std::max(dRR, upperShift(dVR, dRR, exactRR[ch]))
-      : (end == LobeUpperEnd::Diffuse ? upperShift(dVR, dRR, exactRR[ch]) : dS);
-    const double specular = std::max(std::abs(angularSpecular[ch]) + dQn, lobeShift);
-    const double precision =
-      1e-3 * 1.25 * (s.Kd[ch] + s.Ks[ch]) * std::max(farLight[ch], farLightAtCorners[ch]);
-    bound[ch] = s.Kd[ch] * diffuse + s.Ks[ch] * specular + precision;
   }
+}
+
+/**
+ * The stated bound (see the file description) of the far field's error at the shaded
+ * point s, per colour channel, in the units of the light colours (multiply by 255 for
+ * 8-bit steps). `cache` (optional) keeps the blocks' source lists for further calls on
+ * the same build. Several points at one position: ComputeFarFieldErrorBounds.
+ */
+inline glm::dvec3 ComputeFarFieldErrorBound(
+  const FarFieldShadingPoint& s, const FarFieldBuildInputs& in, FarFieldBoundCache* cache = nullptr)
+{
+  glm::dvec3 bound(0.0);
+  ComputeFarFieldErrorBounds(&s, 1, in, cache, &bound);
   return bound;
 }
 
@@ -436,13 +484,21 @@ inline double ComputeFarFieldBoundAtProbe(const FarFieldBuildInputs& in, int i)
     glm::dvec3(std::max(g.Dims[0] - 3, 0), std::max(g.Dims[1] - 3, 0), std::max(g.Dims[2] - 3, 0));
   FarFieldShadingPoint s;
   s.P = lo + size * glm::dvec3(halton(i + 1, 2), halton(i + 1, 3), halton(i + 1, 5));
-  double largest = 0.0;
+  // The 6 axis normals at one position: one call does the position's work once.
+  FarFieldShadingPoint axes[6];
   for (int axis = 0; axis < 6; ++axis)
   {
-    s.N = glm::dvec3(0.0);
-    s.N[axis % 3] = axis < 3 ? 1.0 : -1.0;
-    s.R = s.N;
-    const glm::dvec3 b = 255.0 * ComputeFarFieldErrorBound(s, in);
+    axes[axis] = s;
+    axes[axis].N = glm::dvec3(0.0);
+    axes[axis].N[axis % 3] = axis < 3 ? 1.0 : -1.0;
+    axes[axis].R = axes[axis].N;
+  }
+  glm::dvec3 bounds[6];
+  ComputeFarFieldErrorBounds(axes, 6, in, nullptr, bounds);
+  double largest = 0.0;
+  for (const glm::dvec3& bound : bounds)
+  {
+    const glm::dvec3 b = 255.0 * bound;
     largest = std::max(largest, std::max(b.x, std::max(b.y, b.z)));
   }
   return largest;

@@ -1066,6 +1066,47 @@ TEST(FarFieldBound, SquareRootShiftIsTheLargestChangeWithinTheInterval)
   EXPECT_DOUBLE_EQ(Detail::GetSquareRootShift(0.0, 4.0), 2.0);
 }
 
+TEST(FarFieldBound, SeveralPointsAtOnePositionGiveEachItsOwnBound)
+{
+  // ComputeFarFieldErrorBounds does the position's work once for several normals, views
+  // and materials (the summary's 6 axis normals): each point's bound must be the one it
+  // gets alone, bit for bit.
+  std::mt19937 rng(13);
+  std::uniform_real_distribution<double> U(-1.0, 1.0);
+  std::normal_distribution<double> G(0.0, 1.0);
+  std::vector<PreparedLight> lights =
+    MakeLights(800, glm::dvec3(1, 0, 8), [&](int) { return glm::dvec3(U(rng), U(rng), U(rng)); });
+  const Built b = Build(lights, glm::dvec3(-1), glm::dvec3(1), 1.0);
+  ASSERT_TRUE(b.Plan.Active);
+  const FarFieldBuildInputs in{ &b.Plan.Grid, &lights, &b.Radii, &b.Tree, b.Plan.Grouping };
+  for (int trial = 0; trial < 20; ++trial)
+  {
+    const glm::dvec3 P(U(rng), U(rng), U(rng));
+    std::vector<FarFieldShadingPoint> points(static_cast<std::size_t>(1 + trial % 7));
+    for (FarFieldShadingPoint& s : points)
+    {
+      s.P = P;
+      s.N = glm::normalize(glm::dvec3(G(rng), G(rng), G(rng)));
+      s.R = glm::normalize(glm::dvec3(G(rng), G(rng), G(rng)));
+      s.Kd = 0.5 * (glm::dvec3(U(rng), U(rng), U(rng)) + 1.0);
+      s.Ks = 0.5 * (glm::dvec3(U(rng), U(rng), U(rng)) + 1.0);
+      s.Power = 0.5 + 50.0 * (U(rng) + 1.0);
+    }
+    std::vector<glm::dvec3> together(points.size());
+    ComputeFarFieldErrorBounds(
+      points.data(), static_cast<int>(points.size()), in, nullptr, together.data());
+    for (std::size_t k = 0; k < points.size(); ++k)
+    {
+      const glm::dvec3 alone = ComputeFarFieldErrorBound(points[k], in);
+      for (int c = 0; c < 3; ++c)
+      {
+        EXPECT_EQ(together[k][c], alone[c]) << trial << " " << k << " " << c;
+        EXPECT_GT(alone[c], 0.0);
+      }
+    }
+  }
+}
+
 TEST(FarFieldBound, HoldsForUniformLightsAtEveryScale)
 {
   for (double scale : { 1e-3, 1.0, 1e6 })

@@ -359,7 +359,7 @@ inline void ComputeFarFieldErrorBounds(const FarFieldShadingPoint* points, int c
   std::vector<double> exact(interpolated.size(), 0.0);
   std::vector<glm::dvec3> angularDiffuse(n, glm::dvec3(0.0)), angularSpecular(n, glm::dvec3(0.0));
   std::vector<glm::dvec3> exactNN(n, glm::dvec3(0.0)), exactRR(n, glm::dvec3(0.0));
-  glm::dvec3 farLight(0.0), exactS(0.0);
+  glm::dvec3 exactS(0.0); // the far light at the point: S exactly
   for (int l : tree.Order)
   {
     const std::size_t li = static_cast<std::size_t>(l);
@@ -386,7 +386,6 @@ inline void ComputeFarFieldErrorBounds(const FarFieldShadingPoint* points, int c
       exactNN[k] += g * tn * tn;
       exactRR[k] += g * tr * tr;
     }
-    farLight += g;
     exactS += g;
   }
 
@@ -425,7 +424,7 @@ inline void ComputeFarFieldErrorBounds(const FarFieldShadingPoint* points, int c
         : (end == LobeUpperEnd::Diffuse ? upperShift(dVR, dRR, exactRR[k][ch]) : dS);
       const double specular = std::max(std::abs(angularSpecular[k][ch]) + dQn, lobeShift);
       const double precision =
-        1e-3 * 1.25 * (p.Kd[ch] + p.Ks[ch]) * std::max(farLight[ch], farLightAtCorners[ch]);
+        1e-3 * 1.25 * (p.Kd[ch] + p.Ks[ch]) * std::max(exactS[ch], farLightAtCorners[ch]);
       bound[ch] = p.Kd[ch] * diffuse + p.Ks[ch] * specular + precision;
     }
   }

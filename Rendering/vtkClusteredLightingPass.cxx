@@ -272,6 +272,10 @@ struct vtkClusteredLightingPass::vtkInternals
   std::vector<vtkSmartPointer<vtkClusteredLightSet>> LightSets;
   vtkClusteredLightingAssigner* Current = nullptr; ///< during Render()
   vtkClusteredLightingShaderVariant Variant;       ///< global part for the current render
+  /// MeasureTimings: the fragment queries before and from the first translucent draw, and
+  /// which of them counts now (-1: none).
+  GLuint FragmentQueries[2] = { 0, 0 };
+  int ActiveFragmentQuery = -1;
   vtkTimeStamp ShaderStageTime;
   vtkNew<vtkLight> PlaceholderLight; ///< keeps VTK's lit code when every light is clustered
   vtkNew<vtkLight> ComplexityLight;  ///< keeps VTK's lighting complexity (switched off)
@@ -869,22 +873,32 @@ void vtkClusteredLightingPass::RenderDelegate(const vtkRenderState* s,
   }
   const auto s1 = std::chrono::steady_clock::now();
   // Fragments that pass the depth test per visible pixel: what a GPU with early depth
-  // tests shades (an occlusion query, MeasureTimings only).
-  GLuint query = 0;
+  // tests shades (occlusion queries, MeasureTimings only). The first counts the draws
+  // before the first translucent one, the second the rest (SetShaderParameters switches).
+  GLuint queries[2] = { 0, 0 };
   const bool countFragments = this->MeasureTimings;
   if (countFragments)
   {
-    glGenQueries(1, &query);
-    glBeginQuery(GL_SAMPLES_PASSED, query);
+    glGenQueries(2, queries);
+    glBeginQuery(GL_SAMPLES_PASSED, queries[0]);
+    this->Internals->FragmentQueries[0] = queries[0];
+    this->Internals->FragmentQueries[1] = queries[1];
+    this->Internals->ActiveFragmentQuery = 0;
   }
   this->RenderDelegateOnce(s);
   this->ShadedFragmentsPerVisiblePixel = 0.0;
-  GLuint64 shaded = 0;
+  this->ShadedOpaqueFragmentsPerVisiblePixel = 0.0;
+  this->ShadedTranslucentFragmentsPerVisiblePixel = 0.0;
+  GLuint64 shaded[2] = { 0, 0 };
   if (countFragments)
   {
     glEndQuery(GL_SAMPLES_PASSED);
-    glGetQueryObjectui64v(query, GL_QUERY_RESULT, &shaded);
-    glDeleteQueries(1, &query);
+    for (int q = 0; q <= this->Internals->ActiveFragmentQuery; ++q)
+    {
+      glGetQueryObjectui64v(queries[q], GL_QUERY_RESULT, shaded + q);
+    }
+    glDeleteQueries(2, queries);
+    this->Internals->ActiveFragmentQuery = -1;
   }
   this->NumberOfRenderedProps += this->DelegatePass->GetNumberOfRenderedProps();
   if (counting)
@@ -900,8 +914,11 @@ void vtkClusteredLightingPass::RenderDelegate(const vtkRenderState* s,
   if (countFragments)
   {
     const std::size_t visible = CountVisiblePixels(s, rw);
+    const double perPixel = visible > 0 ? 1.0 / static_cast<double>(visible) : 0.0;
+    this->ShadedOpaqueFragmentsPerVisiblePixel = static_cast<double>(shaded[0]) * perPixel;
+    this->ShadedTranslucentFragmentsPerVisiblePixel = static_cast<double>(shaded[1]) * perPixel;
     this->ShadedFragmentsPerVisiblePixel =
-      visible > 0 ? static_cast<double>(shaded) / static_cast<double>(visible) : 0.0;
+      this->ShadedOpaqueFragmentsPerVisiblePixel + this->ShadedTranslucentFragmentsPerVisiblePixel;
   }
   if (enabled)
   {
@@ -1090,6 +1107,15 @@ void vtkClusteredLightingPass::InjectShadingCode(std::string& fragmentShader, vt
 bool vtkClusteredLightingPass::SetShaderParameters(
   vtkShaderProgram* program, vtkAbstractMapper*, vtkProp* prop, vtkOpenGLVertexArrayObject*)
 {
+  // MeasureTimings: fragments of translucent draws are counted apart (between draws, so
+  // no draw is split between the two queries).
+  if (this->Internals->ActiveFragmentQuery == 0 && prop &&
+    prop->IsRenderingTranslucentPolygonalGeometry())
+  {
+    glEndQuery(GL_SAMPLES_PASSED);
+    glBeginQuery(GL_SAMPLES_PASSED, this->Internals->FragmentQueries[1]);
+    this->Internals->ActiveFragmentQuery = 1;
+  }
   if (!this->Internals->Current || !program)
   {
     return true;
@@ -1265,7 +1291,9 @@ void vtkClusteredLightingPass::PrintSelf(ostream& os, vtkIndent indent)
      << ", visible depths " << this->VisibleDepthRange[0] << " to " << this->VisibleDepthRange[1]
      << ", slices over " << this->SlicingRangeInUse[0] << " to " << this->SlicingRangeInUse[1]
      << ", non-empty clusters " << this->NonEmptyClusterFraction << "\n";
-  os << next << "ShadedFragmentsPerVisiblePixel: " << this->ShadedFragmentsPerVisiblePixel << "\n";
+  os << next << "ShadedFragmentsPerVisiblePixel: " << this->ShadedFragmentsPerVisiblePixel
+     << " (opaque " << this->ShadedOpaqueFragmentsPerVisiblePixel << ", translucent "
+     << this->ShadedTranslucentFragmentsPerVisiblePixel << ")\n";
   os << next << "NearRadiusCap: " << this->NearRadiusCap << "\n";
   os << next << "FarFieldGridSpacing: " << this->FarFieldGridSpacing << "\n";
 }

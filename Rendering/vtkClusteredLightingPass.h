@@ -541,10 +541,11 @@ public:
   /**
    * Diagnostic: finish the GL work around the assignment and shading stages and record
    * their times (GetLastAssignmentTime, GetLastShadingTime), and count the fragments of
-   * the shading render that pass the depth test (GetShadedFragmentsPerVisiblePixel, an
-   * occlusion query). Costs a pipeline stall; for benchmarks. Default is off.
-   * Changes what is measured, not what is drawn, so it does not modify the pass: turning
-   * it on does not make a new scene for AutomaticDepthPrepass (no new trial).
+   * the shading render that pass the depth test (GetShadedFragmentsPerVisiblePixel and
+   * its opaque and translucent parts: occlusion queries). Costs a pipeline stall; for
+   * benchmarks. Default is off. Changes what is measured, not what is drawn, so it does
+   * not modify the pass: turning it on does not make a new scene for
+   * AutomaticDepthPrepass (no new trial).
    */
   void SetMeasureTimings(bool measure) { this->MeasureTimings = measure; }
   vtkGetMacro(MeasureTimings, bool);
@@ -618,9 +619,16 @@ public:
   vtkGetMacro(NonEmptyClusterFraction, double);
   /// Fragments of the last shading render that passed the depth test (so were shaded by a
   /// GPU with early depth tests), per pixel showing opaque geometry, with MeasureTimings
-  /// on (a GL_SAMPLES_PASSED query); 0 when not measured. 1.0 means no hidden fragment
-  /// was shaded.
+  /// on (GL_SAMPLES_PASSED queries); 0 when not measured. The sum of the two parts below.
   vtkGetMacro(ShadedFragmentsPerVisiblePixel, double);
+  /// Its part from the draws before the first translucent draw (the opaque geometry):
+  /// 1.0 means no hidden opaque fragment was shaded (a face drawn twice at the same depth,
+  /// or coincident faces, count more).
+  vtkGetMacro(ShadedOpaqueFragmentsPerVisiblePixel, double);
+  /// Its part from the translucent draws and everything after them: every translucent
+  /// layer in front of the opaque surface is shaded and blended, as it must be (depth
+  /// peeling draws each layer once per peel).
+  vtkGetMacro(ShadedTranslucentFragmentsPerVisiblePixel, double);
   /// Number of lights split into near and far parts in the last render.
   vtkGetMacro(NumberOfFarFieldLights, int);
   /// Time in ms of the last far-field build.
@@ -768,6 +776,8 @@ protected:
   double SlicingRangeInUse[2] = { 0.0, 0.0 };
   double NonEmptyClusterFraction = 1.0;
   double ShadedFragmentsPerVisiblePixel = 0.0;
+  double ShadedOpaqueFragmentsPerVisiblePixel = 0.0;
+  double ShadedTranslucentFragmentsPerVisiblePixel = 0.0;
   bool LastAssignmentUpdated = false;
   int NumberOfLightUploads = 0;
   int NumberOfAssignmentUpdates = 0;

@@ -422,7 +422,8 @@ Row Context::Measure(const Step& step)
     }
     return ClusteredLightingScenes::TimeRender(this->Window);
   };
-  std::vector<double> ms, cpu, instrumented, assign, update, shade, prepass, shaded, farBuild;
+  std::vector<double> ms, cpu, instrumented, assign, update, shade, prepass, shaded, opaqueShaded,
+    farBuild;
   for (int f = 0; f < step.Frames; ++f)
   {
     const double cpu0 = ThreadCpuMs();
@@ -441,6 +442,7 @@ Row Context::Measure(const Step& step)
       shade.push_back(this->Pass->GetLastShadingTime());
       prepass.push_back(this->Pass->GetLastDepthPrepassTime());
       shaded.push_back(this->Pass->GetShadedFragmentsPerVisiblePixel());
+      opaqueShaded.push_back(this->Pass->GetShadedOpaqueFragmentsPerVisiblePixel());
       farBuild.push_back(this->Pass->GetLastFarFieldBuildTime());
     }
     this->Pass->SetMeasureTimings(false);
@@ -468,6 +470,7 @@ Row Context::Measure(const Step& step)
       row.Note = note.str();
     }
     row.ShadedPerVisible = Median(shaded);
+    row.OpaqueShadedPerVisible = Median(opaqueShaded);
     if (this->Pass->GetNumberOfFarFieldLights() > 0)
     {
       row.FarBuildMs = Median(farBuild);
@@ -498,14 +501,15 @@ Row Context::Measure(const Step& step)
     "%-6s %-8s %6d %-9s %-9s %-14s %8.1f ms [%7.1f, %7.1f]  cpu %6s  instrumented %6s  assign %6s  "
     "lights %6s  "
     "eval/px %6s (in 32s %6s) reach/px %6s  max err %5s  rmse %7s  signed %7s  prepass %6s  "
-    "shaded/px %5s  far build %6s bound %5s\n",
+    "shaded/px %5s (opaque %5s)  far build %6s bound %5s\n",
     row.Scene.c_str(), row.Layout.c_str(), row.Lights, row.Method.c_str(), row.Sweep.c_str(),
     row.Value.c_str(), row.MsMedian, row.MsMin, row.MsMax, Num(row.CpuMs).c_str(),
     Num(row.InstrumentedMs).c_str(), Num(row.AssignMs).c_str(), Num(row.LightUpdateMs).c_str(),
     Num(row.Evaluated).c_str(), Num(row.EvaluatedIn32).c_str(), Num(row.Reached).c_str(),
     Num(row.MaxError * 255.0).c_str(), Num(row.RMSE * 255.0).c_str(),
     Num(row.SignedError * 255.0).c_str(), Num(row.PrepassMs).c_str(),
-    Num(row.ShadedPerVisible).c_str(), Num(row.FarBuildMs).c_str(), Num(row.FarBoundSteps).c_str());
+    Num(row.ShadedPerVisible).c_str(), Num(row.OpaqueShadedPerVisible).c_str(),
+    Num(row.FarBuildMs).c_str(), Num(row.FarBoundSteps).c_str());
   std::fflush(stdout);
   return row;
 }

@@ -59,6 +59,7 @@ struct Row
   /// says how much divergent loops could cost there, from an image any renderer gives.
   double EvaluatedIn32 = NAN;
   double PrepassMs = NAN, ShadedPerVisible = NAN; ///< depth prepass; fragments shaded per pixel
+  double OpaqueShadedPerVisible = NAN;            ///< the opaque draws' part of ShadedPerVisible
   double FarBuildMs = NAN;    ///< the far field's last build (every frame when lights move)
   double FarBoundSteps = NAN; ///< the far field's stated bound (ComputeFarFieldErrorBound)
   double MaxError = NAN, RMSE = NAN, OverOneStep = NAN;

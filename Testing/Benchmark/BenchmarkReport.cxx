@@ -86,6 +86,7 @@ const std::vector<Column>& Columns()
     CL_NUMBER_COLUMN("evaluated_px_in_32", EvaluatedIn32),
     CL_NUMBER_COLUMN("prepass_ms", PrepassMs),
     CL_NUMBER_COLUMN("shaded_per_visible_px", ShadedPerVisible),
+    CL_NUMBER_COLUMN("opaque_shaded_per_visible_px", OpaqueShadedPerVisible),
     CL_NUMBER_COLUMN("far_build_ms", FarBuildMs),
     CL_NUMBER_COLUMN("far_bound_steps", FarBoundSteps),
     CL_NUMBER_COLUMN("max_error", MaxError),
@@ -333,7 +334,7 @@ void WriteMarkdown(const std::vector<Row>& rows, const std::string& path)
   out << "| scene | layout | lights | method | knob | value | ms (median) | [min, max] | "
          "CPU ms | ms with timings | assign ms | evaluated/px | reaching/px | max err (steps) | "
          "RMSE (steps) | "
-         "px > 1 step | signed (steps) | list MiB | prepass ms | shaded/visible px | "
+         "px > 1 step | signed (steps) | list MiB | prepass ms | shaded/visible px (opaque) | "
          "far build ms | far bound (steps) |\n";
   out << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
          "\n";
@@ -346,8 +347,10 @@ void WriteMarkdown(const std::vector<Row>& rows, const std::string& path)
         << " | " << Num(r.MaxError * 255.0, 3) << " | " << Num(r.RMSE * 255.0, 3) << " | "
         << (std::isnan(r.OverOneStep) ? std::string() : Num(100.0 * r.OverOneStep, 3) + "%")
         << " | " << Num(r.SignedError * 255.0, 3) << " | " << Num(r.ListMiB, 3) << " | "
-        << Num(r.PrepassMs, 3) << " | " << Num(r.ShadedPerVisible, 3) << " | "
-        << Num(r.FarBuildMs, 3) << " | " << Num(r.FarBoundSteps, 3) << " |\n";
+        << Num(r.PrepassMs, 3) << " | " << Num(r.ShadedPerVisible, 3)
+        << (std::isnan(r.OpaqueShadedPerVisible) ? std::string()
+                                                 : " (" + Num(r.OpaqueShadedPerVisible, 3) + ")")
+        << " | " << Num(r.FarBuildMs, 3) << " | " << Num(r.FarBoundSteps, 3) << " |\n";
   }
   WriteFloors(rows, out);
 }

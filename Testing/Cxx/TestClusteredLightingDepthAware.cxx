@@ -13,7 +13,8 @@
 //  - the culling helps: fewer lights evaluated per pixel than without (a count that could
 //    fail), most clusters empty, and the slices span the visible depths;
 //  - the prepass shades each visible pixel once: fragments passing the depth test per
-//    visible pixel are 1.0 with it, more than 1 without it in an occluding scene;
+//    visible pixel are 1.0 with it, more than 1 without it in an occluding scene; the
+//    fragments of translucent draws are counted apart (the opaque part stays 1.0);
 //  - a mapper that writes its own depth (points as spheres) turns depth-aware clusters
 //    off with one warning, and the image stays correct;
 //  - with 40 positional vtkLights in the renderer (clustered), the prepass and the shading
@@ -232,6 +233,9 @@ int TestClusteredLightingDepthAware(int, char*[])
     shadedOn, shadedOff);
   Check(shadedOn > 0.999 && shadedOn < 1.001, "the prepass shades each visible pixel once");
   Check(shadedOff > shadedOn, "without it hidden fragments are shaded too");
+  Check(pass->GetShadedTranslucentFragmentsPerVisiblePixel() == 0.0 &&
+      pass->GetShadedOpaqueFragmentsPerVisiblePixel() == shadedOn,
+    "no translucent geometry: every shaded fragment is counted as opaque");
 
   // 3. Camera inside lights, looking at the sphere from close by.
   ren->GetActiveCamera()->SetPosition(0.3, 0.4, 2.2);
@@ -279,6 +283,20 @@ int TestClusteredLightingDepthAware(int, char*[])
   ren->AddActor(glass);
   ren->ResetCameraClippingRange();
   CheckCase("translucent sphere", rw, ren, pass, true, true);
+  // Its fragments are counted apart from the opaque ones: each opaque pixel still shades
+  // one fragment, the glass adds its own.
+  pass->SetMeasureTimings(true);
+  rw->Render();
+  pass->SetMeasureTimings(false);
+  const double opaque = pass->GetShadedOpaqueFragmentsPerVisiblePixel();
+  const double glassShaded = pass->GetShadedTranslucentFragmentsPerVisiblePixel();
+  std::printf("translucent sphere: shaded fragments per visible pixel %.4f opaque, %.4f "
+              "translucent\n",
+    opaque, glassShaded);
+  Check(opaque > 0.999 && opaque < 1.001, "translucent sphere: one opaque fragment per pixel");
+  Check(glassShaded > 0.01 &&
+      std::abs(pass->GetShadedFragmentsPerVisiblePixel() - (opaque + glassShaded)) < 1e-12,
+    "translucent sphere: its fragments are counted apart, and the total is the sum");
   ren->RemoveActor(glass);
 
   // 7. A scene far from the origin (the lights and geometry moved by 1e5).

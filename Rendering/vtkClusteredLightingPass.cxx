@@ -875,18 +875,15 @@ void vtkClusteredLightingPass::RenderDelegate(const vtkRenderState* s,
   // Fragments that pass the depth test per visible pixel: what a GPU with early depth
   // tests shades (occlusion queries, MeasureTimings only). The first counts the draws
   // before the first translucent one, the second the rest (SetShaderParameters switches).
-  GLuint queries[2] = { 0, 0 };
+  GLuint* queries = this->Internals->FragmentQueries;
   const bool countFragments = this->MeasureTimings;
   if (countFragments)
   {
     glGenQueries(2, queries);
     glBeginQuery(GL_SAMPLES_PASSED, queries[0]);
-    this->Internals->FragmentQueries[0] = queries[0];
-    this->Internals->FragmentQueries[1] = queries[1];
     this->Internals->ActiveFragmentQuery = 0;
   }
   this->RenderDelegateOnce(s);
-  this->ShadedFragmentsPerVisiblePixel = 0.0;
   this->ShadedOpaqueFragmentsPerVisiblePixel = 0.0;
   this->ShadedTranslucentFragmentsPerVisiblePixel = 0.0;
   GLuint64 shaded[2] = { 0, 0 };
@@ -917,8 +914,6 @@ void vtkClusteredLightingPass::RenderDelegate(const vtkRenderState* s,
     const double perPixel = visible > 0 ? 1.0 / static_cast<double>(visible) : 0.0;
     this->ShadedOpaqueFragmentsPerVisiblePixel = static_cast<double>(shaded[0]) * perPixel;
     this->ShadedTranslucentFragmentsPerVisiblePixel = static_cast<double>(shaded[1]) * perPixel;
-    this->ShadedFragmentsPerVisiblePixel =
-      this->ShadedOpaqueFragmentsPerVisiblePixel + this->ShadedTranslucentFragmentsPerVisiblePixel;
   }
   if (enabled)
   {
@@ -1291,7 +1286,7 @@ void vtkClusteredLightingPass::PrintSelf(ostream& os, vtkIndent indent)
      << ", visible depths " << this->VisibleDepthRange[0] << " to " << this->VisibleDepthRange[1]
      << ", slices over " << this->SlicingRangeInUse[0] << " to " << this->SlicingRangeInUse[1]
      << ", non-empty clusters " << this->NonEmptyClusterFraction << "\n";
-  os << next << "ShadedFragmentsPerVisiblePixel: " << this->ShadedFragmentsPerVisiblePixel
+  os << next << "ShadedFragmentsPerVisiblePixel: " << this->GetShadedFragmentsPerVisiblePixel()
      << " (opaque " << this->ShadedOpaqueFragmentsPerVisiblePixel << ", translucent "
      << this->ShadedTranslucentFragmentsPerVisiblePixel << ")\n";
   os << next << "NearRadiusCap: " << this->NearRadiusCap << "\n";

@@ -620,7 +620,11 @@ public:
   /// Fragments of the last shading render that passed the depth test (so were shaded by a
   /// GPU with early depth tests), per pixel showing opaque geometry, with MeasureTimings
   /// on (GL_SAMPLES_PASSED queries); 0 when not measured. The sum of the two parts below.
-  vtkGetMacro(ShadedFragmentsPerVisiblePixel, double);
+  double GetShadedFragmentsPerVisiblePixel()
+  {
+    return this->ShadedOpaqueFragmentsPerVisiblePixel +
+      this->ShadedTranslucentFragmentsPerVisiblePixel;
+  }
   /// Its part from the draws before the first translucent draw (the opaque geometry):
   /// 1.0 means no hidden opaque fragment was shaded (a face drawn twice at the same depth,
   /// or coincident faces, count more).
@@ -775,7 +779,6 @@ protected:
   double VisibleDepthRange[2] = { 0.0, 0.0 };
   double SlicingRangeInUse[2] = { 0.0, 0.0 };
   double NonEmptyClusterFraction = 1.0;
-  double ShadedFragmentsPerVisiblePixel = 0.0;
   double ShadedOpaqueFragmentsPerVisiblePixel = 0.0;
   double ShadedTranslucentFragmentsPerVisiblePixel = 0.0;
   bool LastAssignmentUpdated = false;

@@ -228,6 +228,7 @@ const vtkClusteredLightingAssignment& vtkClusteredLightingAssigner::Update(
   vtkClusteredLightingAssignment& r = this->Result;
   r.Reasons = 0;
   r.LightsUploaded = false;
+  r.FarFieldResolutionChosen = false;
   r.Reassigned = false;
   r.NewProblems.clear();
   r.NewError.clear();
@@ -417,21 +418,29 @@ void vtkClusteredLightingAssigner::PrepareLights(const vtkClusteredLightingAssig
   vtkClusteredLightingLightCollector::Read(lights);
   auto nameOf = [&lights](std::size_t i) { return lights.NameOf(i); };
   LightPreparationOptions options = inputs.Preparation;
+  double farBudget = 0.0; // the far field's share of the error budget (fraction)
   if (inputs.ErrorBudget > 0.0)
   {
-    // Validate once, then pick the cutoff that meets the budget over the lights that are
-    // culled, not split by the far field (ChooseBudgetCutoff).
+    // Validate once, share the budget between the culled lights' tails and the far field
+    // (ShareErrorBudget: half each when both are present), then pick the cutoff that meets
+    // the tails' share over the lights that are culled, not split (ChooseBudgetCutoff).
     LightPreparationOptions probe = options;
     probe.MortonOrder = false;
     const PreparedLights valid = vtkClusteredLighting::PrepareLights(lights.Sources, probe, nameOf);
+    const vtkClusteredLighting::ErrorBudgetShares shares = vtkClusteredLighting::ShareErrorBudget(
+      valid.Lights, inputs.ErrorBudget, inputs.FarField.Enabled);
     options.Cutoff = vtkClusteredLighting::ChooseBudgetCutoff(
-      valid.Lights, inputs.ErrorBudget, inputs.FarField.Enabled, options.Cutoff, inputs.Windowed);
+      valid.Lights, shares.CutTails, inputs.FarField.Enabled, options.Cutoff, inputs.Windowed);
+    farBudget = shares.FarField;
   }
   this->EffectiveCutoff = options.Cutoff;
   this->Prepared = vtkClusteredLighting::PrepareLights(lights.Sources, options, nameOf);
   // Near radii and the far field's grid (caps the culling radii of far-field lights).
+  const vtkClusteredLighting::FarFieldOptions farOptions =
+    this->ChooseFarFieldOptions(inputs, farBudget);
   this->FarFieldPlan = PlanFarField(
-    this->Prepared.Lights, this->RegionLo, this->RegionHi, inputs.FarField, this->RegionAnchor);
+    this->Prepared.Lights, this->RegionLo, this->RegionHi, farOptions, this->RegionAnchor);
+  this->Result.FarFieldNodesTarget = this->FarFieldPlan.Active ? farOptions.TargetNodes : 0;
   this->NumberReachingEveryCluster = static_cast<std::size_t>(std::count_if(
     this->Prepared.Lights.begin(), this->Prepared.Lights.end(), &ReachesEveryCluster));
   // Report each problem once: a bad light stays reported while it stays bad, even when
@@ -451,6 +460,58 @@ void vtkClusteredLightingAssigner::PrepareLights(const vtkClusteredLightingAssig
   this->ReportedProblems.swap(problems);
   this->LightDataUploaded = false;
   this->AssignmentValid = false;
+}
+
+//------------------------------------------------------------------------------
+// The far field's options for this preparation: the pass's, with the resolution an error
+// budget chooses (vtkClusteredLightingFarFieldBudget.h). The choice is made again only
+// when what it depends on changes (the preparation key: budget, options, region; the
+// number of lights and of split lights), not when lights only move: it summarizes the
+// bound at up to 7 resolutions (0.1 to 0.25 s each at 4,096 lights on 2 threads).
+vtkClusteredLighting::FarFieldOptions vtkClusteredLightingAssigner::ChooseFarFieldOptions(
+  const vtkClusteredLightingAssignerInputs& inputs, double budget)
+{
+  vtkClusteredLighting::FarFieldOptions options = inputs.FarField;
+  vtkClusteredLightingAssignment& r = this->Result;
+  if (!(budget > 0.0) || !options.Enabled)
+  {
+    this->HaveBudgetChoice = false;
+    r.FarFieldBudgetChoice = vtkClusteredLighting::FarFieldResolutionChoice();
+    return options;
+  }
+  const std::vector<PreparedLight>& lights = this->Prepared.Lights;
+  const std::size_t split = static_cast<std::size_t>(
+    std::count_if(lights.begin(), lights.end(), &vtkClusteredLighting::IsFarFieldLight));
+  if (!this->HaveBudgetChoice || this->BudgetChoiceKey != this->LastPreparation ||
+    this->BudgetChoiceLights != lights.size() || this->BudgetChoiceSplit != split)
+  {
+    const bool warned = this->HaveBudgetChoice && !this->BudgetChoice.Met &&
+      this->BudgetChoiceKey.ErrorBudget == this->LastPreparation.ErrorBudget;
+    this->BudgetChoice = vtkClusteredLighting::ChooseFarFieldResolution(lights, this->RegionLo,
+      this->RegionHi, options, this->RegionAnchor, 255.0 * budget, &SummarizeOnThreads);
+    this->HaveBudgetChoice = true;
+    this->BudgetChoiceKey = this->LastPreparation;
+    this->BudgetChoiceLights = lights.size();
+    this->BudgetChoiceSplit = split;
+    r.FarFieldResolutionChosen = true;
+    if (!this->BudgetChoice.Met && !warned)
+    {
+      std::ostringstream os;
+      os << "ErrorBudgetInSteps " << 255.0 * inputs.ErrorBudget << ": the far field's stated bound "
+         << "is " << this->BudgetChoice.Bound << " steps (its largest value over probe points) "
+         << "at its best resolution (" << this->BudgetChoice.Nodes << " nodes), above its share "
+         << "of the budget (" << 255.0 * budget << " steps); no resolution tried ("
+         << vtkClusteredLighting::FarFieldBudgetCoarsestNodes << " to "
+         << vtkClusteredLighting::FarFieldBudgetFinestNodes << " nodes) gives less, so that "
+         << "one is used. A larger NearFieldBudget (lights per point evaluated exactly, now "
+         << options.NearBudget << ") lowers it somewhat, at more time per frame; a larger "
+         << "budget accepts it.";
+      r.NewWarnings.push_back(os.str());
+    }
+  }
+  r.FarFieldBudgetChoice = this->BudgetChoice;
+  options.TargetNodes = this->BudgetChoice.Nodes;
+  return options;
 }
 
 //------------------------------------------------------------------------------
@@ -809,6 +870,13 @@ vtkClusteredLightingAssigner::SummarizeFarFieldErrorBound() const
   const vtkClusteredLighting::FarFieldBuildInputs in{ &this->FarFieldPlan.Grid,
     &this->Prepared.Lights, &this->FarField.GetNearRadii(), &this->FarField.GetTree(),
     this->FarFieldPlan.Grouping };
+  return SummarizeOnThreads(in);
+}
+
+//------------------------------------------------------------------------------
+vtkClusteredLighting::FarFieldBoundSummary vtkClusteredLightingAssigner::SummarizeOnThreads(
+  const vtkClusteredLighting::FarFieldBuildInputs& in)
+{
   // The probes are independent: one per task, combined in probe order (the core's
   // serial summary, bit for bit).
   std::vector<double> values(

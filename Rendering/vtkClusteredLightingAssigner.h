@@ -52,6 +52,7 @@
 
 #include "vtkClusteredLightingAssignment.h"       // for ViewParameters, ShadingParameters
 #include "vtkClusteredLightingFarFieldBound.h"    // for FarFieldOptions, FarFieldPlan, the bound
+#include "vtkClusteredLightingFarFieldBudget.h"   // for FarFieldResolutionChoice
 #include "vtkClusteredLightingFarFieldTextures.h" // for vtkClusteredLightingFarFieldTextures
 #include "vtkClusteredLightingGLHelpers.h"        // for vtkClusteredLightingTextureBuffer
 #include "vtkClusteredLightingLayout.h"           // for ClusterTextureLayout
@@ -102,8 +103,10 @@ struct vtkClusteredLightingAssignerInputs
 {
   vtkClusteredLightingLightCollection* Lights = nullptr; ///< Read() is called when needed
   vtkClusteredLighting::LightPreparationOptions Preparation;
-  double ErrorBudget = 0.0; ///< > 0: choose the cutoff for it (Preparation.Cutoff ignored)
-  bool Windowed = false;    ///< windowed falloff (the error budget accounts for it)
+  /// > 0: choose the cutoff of culled lights and the far field's resolution for it
+  /// (Preparation.Cutoff and FarField.TargetNodes ignored; vtkClusteredLightingFarFieldBudget.h)
+  double ErrorBudget = 0.0;
+  bool Windowed = false; ///< windowed falloff (the error budget accounts for it)
   vtkClusteredLighting::FarFieldOptions FarField;
   /// World box of the geometry to shade (the far field's region; invalid: the lights' box).
   glm::dvec3 RegionLo = glm::dvec3(1.0), RegionHi = glm::dvec3(-1.0);
@@ -163,6 +166,10 @@ struct vtkClusteredLightingAssignment
   double FarFieldSpacing = 0.0;   ///< grid spacing h (world units)
   double NearRadiusCap = 0.0;     ///< near radius of bright and always-on lights
   int FarFieldDims[3] = { 0, 0, 0 };
+  std::int64_t FarFieldNodesTarget = 0; ///< FarFieldOptions::TargetNodes used (0: no far field)
+  /// With an error budget: the choice of the far field's resolution (Nodes 0: none made).
+  vtkClusteredLighting::FarFieldResolutionChoice FarFieldBudgetChoice;
+  bool FarFieldResolutionChosen = false; ///< this update made that choice (again)
   std::uint64_t FarFieldBytes = 0;
   /// The far-field lights share a colour: one channel in 3 textures, times FarFieldColor
   /// (FindFarFieldSharedColor); else three channels in 7.
@@ -278,6 +285,10 @@ private:
   void SetWindow(vtkOpenGLRenderWindow* rw);
   void OnWindowDeleted();
   void PrepareLights(const vtkClusteredLightingAssignerInputs& inputs);
+  vtkClusteredLighting::FarFieldOptions ChooseFarFieldOptions(
+    const vtkClusteredLightingAssignerInputs& inputs, double budget);
+  static vtkClusteredLighting::FarFieldBoundSummary SummarizeOnThreads(
+    const vtkClusteredLighting::FarFieldBuildInputs& in);
   void UpdateRegion(const vtkClusteredLightingAssignerInputs& inputs);
   bool CheckLimits(vtkOpenGLRenderWindow* rw, vtkClusteredLightingAssignerInputs& inputs);
   void CheckCulling(const vtkClusteredLightingAssignerInputs& inputs);
@@ -296,6 +307,13 @@ private:
   unsigned long long SourceMTime = 0;
   PreparationKey LastPreparation;
   vtkClusteredLighting::PreparedLights Prepared;
+  /// The far field's resolution chosen for the error budget, and what it was chosen for:
+  /// chosen again when the preparation key or the number of (split) lights changes, kept
+  /// while lights only move (ChooseFarFieldOptions).
+  vtkClusteredLighting::FarFieldResolutionChoice BudgetChoice;
+  PreparationKey BudgetChoiceKey;
+  std::size_t BudgetChoiceLights = 0, BudgetChoiceSplit = 0;
+  bool HaveBudgetChoice = false;
   double EffectiveCutoff = 1.0 / 1024.0;
   std::set<std::string> ReportedProblems;
   std::string ReportedError;

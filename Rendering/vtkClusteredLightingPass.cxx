@@ -792,6 +792,9 @@ void vtkClusteredLightingPass::ReportAssignment(const vtkClusteredLightingAssign
   {
     this->FarFieldDimensions[a] = r.FarField ? r.FarFieldDims[a] : 0;
   }
+  this->FarFieldResolutionInUse = r.FarField ? static_cast<int>(r.FarFieldNodesTarget) : 0;
+  this->FarFieldErrorBudgetMet = r.FarFieldBudgetChoice.Met;
+  this->NumberOfFarFieldResolutionChoices += r.FarFieldResolutionChosen ? 1 : 0;
   this->FarFieldTextureBytes = r.FarFieldBytes;
   this->FarFieldSharedColorUsed = r.FarField && r.FarFieldOneChannel;
   this->DepthAwareClustersUsed = r.Enabled && r.DepthAware;
@@ -1291,4 +1294,6 @@ void vtkClusteredLightingPass::PrintSelf(ostream& os, vtkIndent indent)
      << this->ShadedTranslucentFragmentsPerVisiblePixel << ")\n";
   os << next << "NearRadiusCap: " << this->NearRadiusCap << "\n";
   os << next << "FarFieldGridSpacing: " << this->FarFieldGridSpacing << "\n";
+  os << next << "FarFieldResolutionInUse: " << this->FarFieldResolutionInUse
+     << (this->FarFieldErrorBudgetMet ? "" : " (error budget not met)") << "\n";
 }

@@ -12,7 +12,8 @@ pass's defaults (far field on), with the far field off, and with brute force (ev
 light, exact); prints each frame time and the clustered images' error against brute
 force in 8-bit steps and writes the three images. Exits with status 1 if the far field
 does not bring the image closer to brute force. --pbr METALLIC (and --roughness) makes
-both actors PBR.
+both actors PBR. --budget STEPS (repeatable) also renders with that ErrorBudgetInSteps and
+prints the far field's resolution it chose and its stated bound.
 
     PYTHONPATH=build/lib/python3/dist-packages \\
       scripts/with-display.sh /usr/bin/python3 Examples/Python/user_lights.py
@@ -87,6 +88,8 @@ def main():
     parser.add_argument("--pbr", type=float, metavar="METALLIC",
                         help="PBR actors with this metallic factor (default: Phong)")
     parser.add_argument("--roughness", type=float, default=0.5, help="with --pbr")
+    parser.add_argument("--budget", type=float, metavar="STEPS", action="append", default=[],
+                        help="also render with ErrorBudgetInSteps STEPS (repeatable)")
     args = parser.parse_args()
     pbr = None if args.pbr is None else (args.pbr, args.roughness)
 
@@ -136,17 +139,37 @@ def main():
         image, pixels = grab(window)
         write_png(image, "%s-%s.png" % (args.prefix, name))
         results[name] = (ms, pixels)
+    pass_.SetFarField(True)
+    budgets = {}
+    for steps in args.budget:
+        pass_.SetErrorBudgetInSteps(steps)
+        start = time.perf_counter()
+        window.Render()  # the budget's choice of the far field's resolution
+        choice_ms = 1000.0 * (time.perf_counter() - start)
+        ms = timed_render(window, args.frames)
+        image, pixels = grab(window)
+        name = "budget-%g" % steps
+        results[name] = (ms, pixels)
+        budgets[name] = (choice_ms, pass_.GetFarFieldResolutionInUse(),
+                         pass_.ComputeFarFieldErrorBound(), pass_.GetFarFieldErrorBudgetMet(),
+                         pass_.GetLastFarFieldBuildTime())
+    pass_.SetErrorBudgetInSteps(0)
     brute_ms, brute = results["brute"]
     rmse = {}
     print("%d lights, %d clustered, attenuation (1, 0, 8), intensity %g"
           % (args.lights, pass_.GetNumberOfClusteredLights(), args.intensity))
     print("brute force: %.1f ms" % brute_ms)
-    for name in ("default", "farfield-off"):
+    for name in ["default", "farfield-off"] + list(budgets):
         ms, pixels = results[name]
         diff = numpy.abs(pixels - brute)
         rmse[name] = numpy.sqrt((diff.astype(float) ** 2).mean())
         print("%-12s %8.1f ms (%.1fx faster than brute force)  max err %d steps  RMSE %.2f"
               % (name, ms, brute_ms / ms, diff.max(), numpy.sqrt((diff.astype(float) ** 2).mean())))
+        if name in budgets:
+            choice_ms, nodes, bound, met, build_ms = budgets[name]
+            print("             far field %d nodes (build %.1f ms), stated bound %.2f steps over "
+                  "probes, %s; first frame %.0f ms" % (nodes, build_ms, bound,
+                                                      "met" if met else "NOT met", choice_ms))
     if not rmse["default"] < rmse["farfield-off"]:
         print("the far field did not bring the image closer to brute force")
         return 1

@@ -475,12 +475,15 @@ Row Context::Measure(const Step& step)
     {
       row.FarBuildMs = Median(farBuild);
       row.FarBoundSteps = this->Pass->ComputeFarFieldErrorBound(); // in steps
+      row.FarNodes = this->Pass->GetFarFieldResolutionInUse();
     }
     row.ListMiB = this->Pass->GetListTextureBytes() / 1048576.0;
     row.MasterMiB = this->Pass->GetMasterTextureBytes() / 1048576.0;
     row.LightsMiB = this->Pass->GetLightBufferBytes() / 1048576.0;
     row.Cutoff = this->Pass->GetEffectiveCutoff();
     row.Budget = this->Pass->GetErrorBudget() > 0.0 ? this->Pass->GetErrorBudget() : NAN;
+    row.BudgetMet =
+      std::isnan(row.Budget) ? NAN : (this->Pass->GetFarFieldErrorBudgetMet() ? 1 : 0);
   }
   this->SetView();
   this->Window->Render();
@@ -501,7 +504,7 @@ Row Context::Measure(const Step& step)
     "%-6s %-8s %6d %-9s %-9s %-14s %8.1f ms [%7.1f, %7.1f]  cpu %6s  instrumented %6s  assign %6s  "
     "lights %6s  "
     "eval/px %6s (in 32s %6s) reach/px %6s  max err %5s  rmse %7s  signed %7s  prepass %6s  "
-    "shaded/px %5s (opaque %5s)  far build %6s bound %5s\n",
+    "shaded/px %5s (opaque %5s)  far build %6s bound %5s nodes %6s\n",
     row.Scene.c_str(), row.Layout.c_str(), row.Lights, row.Method.c_str(), row.Sweep.c_str(),
     row.Value.c_str(), row.MsMedian, row.MsMin, row.MsMax, Num(row.CpuMs).c_str(),
     Num(row.InstrumentedMs).c_str(), Num(row.AssignMs).c_str(), Num(row.LightUpdateMs).c_str(),
@@ -509,7 +512,9 @@ Row Context::Measure(const Step& step)
     Num(row.MaxError * 255.0).c_str(), Num(row.RMSE * 255.0).c_str(),
     Num(row.SignedError * 255.0).c_str(), Num(row.PrepassMs).c_str(),
     Num(row.ShadedPerVisible).c_str(), Num(row.OpaqueShadedPerVisible).c_str(),
-    Num(row.FarBuildMs).c_str(), Num(row.FarBoundSteps).c_str());
+    Num(row.FarBuildMs).c_str(), Num(row.FarBoundSteps).c_str(),
+    (std::isnan(row.FarNodes) ? std::string() : std::to_string(std::llround(row.FarNodes)))
+      .c_str());
   std::fflush(stdout);
   return row;
 }

@@ -62,10 +62,12 @@ struct Row
   double OpaqueShadedPerVisible = NAN;            ///< the opaque draws' part of ShadedPerVisible
   double FarBuildMs = NAN;    ///< the far field's last build (every frame when lights move)
   double FarBoundSteps = NAN; ///< the far field's stated bound (ComputeFarFieldErrorBound)
+  double FarNodes = NAN;      ///< the far field's resolution in use (an error budget chooses it)
   double MaxError = NAN, RMSE = NAN, OverOneStep = NAN;
   double SignedError = NAN; ///< mean of (image - reference): negative = darker than exact
   double ListMiB = NAN, MasterMiB = NAN, LightsMiB = NAN;
   double Cutoff = NAN, Budget = NAN;
+  double BudgetMet = NAN; ///< 1: the pass met the budget (GetFarFieldErrorBudgetMet), 0: it warned
   std::string Note;
 };
 

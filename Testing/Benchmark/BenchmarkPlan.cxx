@@ -206,6 +206,14 @@ std::vector<Step> MakePlan(const PlanOptions& options)
             r.Apply = [nodes](vtkClusteredLightingPass* p) { p->SetFarFieldResolution(nodes); };
             plan.push_back(r);
           }
+          // An error budget here: it takes the finest grid (whose near field is the
+          // cheapest) and cannot meet 4 steps by the resolution (the pass warns); what
+          // that does to the error against the same reference.
+          Step b = s;
+          b.Sweep = "budget";
+          b.Value = "4/255";
+          b.Apply = [](vtkClusteredLightingPass* p) { p->SetErrorBudget(4.0 / 255.0); };
+          plan.push_back(b);
           // What the exact far sums near saturation would cost here, above their default
           // limit (FarFieldExactSumLimit): 93% of an H200's frame, for the same error
           // (docs/far-field.md, "The exact far sums on a GPU").
@@ -286,6 +294,22 @@ std::vector<Step> MakePlan(const PlanOptions& options)
         s.Reference = n <= 16384;
         s.Frames = n > 16384 ? 3 : base.Frames;
         plan.push_back(s);
+        // With an error budget, which chooses the far field's resolution (once: moving
+        // lights keep it), so what the budget costs in each frame's rebuild.
+        for (double b : { 1.0, 4.0 })
+        {
+          if (quick || n > 65536)
+          {
+            break;
+          }
+          Step budget = s;
+          budget.Sweep = "budget";
+          char value[48];
+          std::snprintf(value, sizeof(value), "%g/255 animated", b);
+          budget.Value = value;
+          budget.Apply = [b](vtkClusteredLightingPass* p) { p->SetErrorBudget(b / 255.0); };
+          plan.push_back(budget);
+        }
       }
       // The same with white lights: the far field's build sums one channel
       // (FarFieldSharedColor).

@@ -89,6 +89,7 @@ const std::vector<Column>& Columns()
     CL_NUMBER_COLUMN("opaque_shaded_per_visible_px", OpaqueShadedPerVisible),
     CL_NUMBER_COLUMN("far_build_ms", FarBuildMs),
     CL_NUMBER_COLUMN("far_bound_steps", FarBoundSteps),
+    { "far_nodes", [](const Row& r) { return Num(r.FarNodes, 9); } },
     CL_NUMBER_COLUMN("max_error", MaxError),
     CL_NUMBER_COLUMN("rmse", RMSE),
     CL_NUMBER_COLUMN("over_one_step", OverOneStep),
@@ -98,6 +99,7 @@ const std::vector<Column>& Columns()
     CL_NUMBER_COLUMN("lights_mib", LightsMiB),
     CL_NUMBER_COLUMN("cutoff", Cutoff),
     CL_NUMBER_COLUMN("budget", Budget),
+    CL_NUMBER_COLUMN("budget_met", BudgetMet),
     { "note", [](const Row& r) { return r.Note; } },
   };
   return columns;
@@ -335,9 +337,9 @@ void WriteMarkdown(const std::vector<Row>& rows, const std::string& path)
          "CPU ms | ms with timings | assign ms | evaluated/px | reaching/px | max err (steps) | "
          "RMSE (steps) | "
          "px > 1 step | signed (steps) | list MiB | prepass ms | shaded/visible px (opaque) | "
-         "far build ms | far bound (steps) |\n";
+         "far build ms | far bound (steps) | far nodes |\n";
   out << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
-         "\n";
+         "---|\n";
   for (const Row& r : rows)
   {
     out << "| " << r.Scene << " | " << r.Layout << " | " << r.Lights << " | " << r.Method << " | "
@@ -350,7 +352,8 @@ void WriteMarkdown(const std::vector<Row>& rows, const std::string& path)
         << Num(r.PrepassMs, 3) << " | " << Num(r.ShadedPerVisible, 3)
         << (std::isnan(r.OpaqueShadedPerVisible) ? std::string()
                                                  : " (" + Num(r.OpaqueShadedPerVisible, 3) + ")")
-        << " | " << Num(r.FarBuildMs, 3) << " | " << Num(r.FarBoundSteps, 3) << " |\n";
+        << " | " << Num(r.FarBuildMs, 3) << " | " << Num(r.FarBoundSteps, 3) << " | "
+        << Num(r.FarNodes, 6) << " |\n";
   }
   WriteFloors(rows, out);
 }
@@ -517,10 +520,12 @@ int CheckCSV(const std::string& path)
         std::printf("check: clustered row %d lacks error, counts or memory\n", rows);
         ++failures;
       }
-      if (!std::isnan(budget))
+      // A budget the pass said it could not meet (it warned) is not held to it.
+      if (!std::isnan(budget) && num("budget_met") != 0.0 && (referenced || !std::isnan(maxErr)))
       {
         ++budgets;
-        // The budget bounds the cut tails; the image also rounds to 8 bits (half a step).
+        // The budget bounds the cut tails and the far field's stated bound (its summary
+        // over probe points); the image also rounds to 8 bits (half a step).
         if (!(maxErr <= budget + 0.5 / 255.0 + 1e-9))
         {
           std::printf("check: row %d misses its error budget: %g > %g\n", rows, maxErr, budget);

@@ -5,6 +5,7 @@
 #include "vtkClusteredLightingDepthBounds.h"
 #include "vtkClusteredLightingFarField.h"
 #include "vtkClusteredLightingFarFieldBound.h"
+#include "vtkClusteredLightingFarFieldBudget.h"
 #include "vtkClusteredLightingFarFieldTree.h"
 #include "vtkClusteredLightingGrid.h"
 #include "vtkClusteredLightingLayout.h"

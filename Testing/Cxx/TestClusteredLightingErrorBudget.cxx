@@ -1,0 +1,145 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The error budget chooses the far field's resolution (ErrorBudgetInSteps,
+// vtkClusteredLightingFarFieldBudget.h). Lights as users write them (inverse-square,
+// attenuation (1, 0, 8), no radius) over the test scene. Checks that
+//  - without a budget the far field uses FarFieldResolution and no choice is made;
+//  - a loose budget (16 steps) takes a grid no finer than the default, its bound as the
+//    pass reports it (ComputeFarFieldErrorBound) is within the budget, and the image is
+//    within the stated bound of brute force at every pixel, with zero false negatives
+//    (CheckClusteredFrame): the coarse far field is shaded right;
+//  - moving a light keeps the choice (no new choice); adding one makes a new one;
+//  - a tight budget takes a finer grid than the loose one and meets it, or says it does
+//    not; a budget below every resolution's bound warns once, names the option, is
+//    reported by GetFarFieldErrorBudgetMet and PrintSelf, and its frame is still within
+//    the stated bound of brute force;
+//  - a budget of 0 gives FarFieldResolution back.
+#include "ClusteredLightingTestUtilities.h"
+
+#include "vtkClusteredLightSet.h"
+#include "vtkClusteredLightingPass.h"
+
+#include <cstdio>
+#include <sstream>
+#include <string>
+
+namespace
+{
+int Status = EXIT_SUCCESS;
+
+void Check(bool ok, const char* what)
+{
+  std::printf("%s: %s\n", ok ? "ok" : "FAILED", what);
+  if (!ok)
+  {
+    Status = EXIT_FAILURE;
+  }
+}
+
+void Report(vtkClusteredLightingPass* pass, const char* what)
+{
+  std::printf("%s: budget %g steps, far field %d nodes (%dx%dx%d), bound %.4f steps, %s, "
+              "%d choices\n",
+    what, pass->GetErrorBudgetInSteps(), pass->GetFarFieldResolutionInUse(),
+    pass->GetFarFieldDimensions()[0], pass->GetFarFieldDimensions()[1],
+    pass->GetFarFieldDimensions()[2], pass->ComputeFarFieldErrorBound(),
+    pass->GetFarFieldErrorBudgetMet() ? "met" : "not met",
+    pass->GetNumberOfFarFieldResolutionChoices());
+}
+}
+
+int TestClusteredLightingErrorBudget(int, char*[])
+{
+  const int n = 600;
+  vtkNew<vtkRenderWindow> rw;
+  vtkNew<vtkRenderer> ren;
+  ClusteredLightingTest::SetUpTestScene(rw, ren, 320, 240);
+  vtkNew<vtkClusteredLightSet> lights;
+  ClusteredLightingTest::MakeUserLights(lights, n, 0.02, 11);
+  vtkNew<vtkClusteredLightingPass> pass;
+  pass->AddLightSet(lights);
+  ren->SetPass(pass);
+  vtkNew<ClusteredLightingTest::MessageCollector> messages;
+  messages->Watch(pass);
+
+  // 1. No budget: the pass's FarFieldResolution.
+  rw->Render();
+  Report(pass, "no budget");
+  Check(pass->GetNumberOfFarFieldLights() == n, "every light is split (none has a radius)");
+  Check(pass->GetFarFieldResolutionInUse() == pass->GetFarFieldResolution() &&
+      pass->GetNumberOfFarFieldResolutionChoices() == 0 && pass->GetFarFieldErrorBudgetMet(),
+    "no budget: FarFieldResolution, no choice");
+  const double defaultBound = pass->ComputeFarFieldErrorBound();
+
+  // 2. A loose budget: a coarse far field, within its bound of brute force.
+  pass->SetErrorBudgetInSteps(16.0);
+  rw->Render();
+  Report(pass, "16 steps");
+  const int loose = pass->GetFarFieldResolutionInUse();
+  Check(pass->GetNumberOfFarFieldResolutionChoices() == 1, "16 steps: one choice");
+  Check(loose > 0 && loose <= pass->GetFarFieldResolution(), "16 steps: no finer than the default");
+  Check(pass->GetFarFieldErrorBudgetMet() && pass->ComputeFarFieldErrorBound() <= 16.0,
+    "16 steps: met, the reported bound within it");
+  Check(ClusteredLightingTest::CheckClusteredFrame(pass, rw, ren, 1.4, "16 steps") == 0,
+    "16 steps: within the stated bound of brute force, zero false negatives, finite");
+
+  // 3. Moving lights keep the choice; another light makes a new one.
+  lights->SetPosition(5, 0.3, 1.2, -0.4);
+  rw->Render();
+  lights->SetPosition(6, -1.0, 0.5, 0.8);
+  rw->Render();
+  Check(pass->GetNumberOfFarFieldResolutionChoices() == 1 &&
+      pass->GetFarFieldResolutionInUse() == loose,
+    "moved lights: the same choice, not made again");
+  auto addUserLight = [&lights](double x, double y, double z)
+  {
+    const vtkIdType i = lights->AddLight(x, y, z);
+    lights->SetAttenuation(i, 1.0, 0.0, 8.0);
+    lights->SetIntensity(i, 0.02);
+  };
+  addUserLight(0.5, 0.2, 0.5);
+  rw->Render();
+  Check(pass->GetNumberOfFarFieldResolutionChoices() == 2, "one more light: a new choice");
+
+  // 4. A tight budget: below the default resolution's bound.
+  const double tight = 0.9 * defaultBound;
+  pass->SetErrorBudgetInSteps(tight);
+  rw->Render();
+  Report(pass, "tight");
+  const int fine = pass->GetFarFieldResolutionInUse();
+  Check(fine > loose, "tight budget: a finer grid than the loose one");
+  Check(pass->GetFarFieldErrorBudgetMet() == (pass->ComputeFarFieldErrorBound() <= tight),
+    "tight budget: met exactly when the reported bound is within it");
+  Check(messages->Warnings.size() == (pass->GetFarFieldErrorBudgetMet() ? 0u : 1u),
+    "tight budget: a warning only if it is not met");
+  messages->Clear();
+
+  // 5. A budget no resolution meets.
+  pass->SetErrorBudgetInSteps(0.01);
+  rw->Render();
+  Report(pass, "0.01 steps");
+  Check(!pass->GetFarFieldErrorBudgetMet() && pass->ComputeFarFieldErrorBound() > 0.01,
+    "0.01 steps: not met, and reported so");
+  Check(messages->Warnings.size() == 1 &&
+      messages->Warnings[0].find("ErrorBudgetInSteps 0.01") != std::string::npos &&
+      messages->Warnings[0].find("NearFieldBudget") != std::string::npos,
+    "0.01 steps: one warning naming the budget and NearFieldBudget");
+  lights->SetPosition(7, 0.0, 1.0, 0.0);
+  rw->Render();
+  addUserLight(-0.5, 0.2, 0.5);
+  rw->Render();
+  Check(messages->Warnings.size() == 1, "the same budget, lights changed: no second warning");
+  std::ostringstream printed;
+  pass->PrintSelf(printed, vtkIndent());
+  Check(printed.str().find("(error budget not met)") != std::string::npos,
+    "PrintSelf says the budget is not met");
+  Check(ClusteredLightingTest::CheckClusteredFrame(pass, rw, ren, 1.4, "0.01 steps") == 0,
+    "0.01 steps: still within the stated bound of brute force");
+
+  // 6. No budget again.
+  pass->SetErrorBudgetInSteps(0.0);
+  rw->Render();
+  Check(pass->GetFarFieldResolutionInUse() == pass->GetFarFieldResolution() &&
+      pass->GetFarFieldErrorBudgetMet(),
+    "budget 0: FarFieldResolution again");
+  return Status;
+}

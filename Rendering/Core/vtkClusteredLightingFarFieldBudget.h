@@ -83,8 +83,8 @@ inline ErrorBudgetShares ShareErrorBudget(
 /// powers of two: one eighth to eight times FarFieldOptions' default.
 constexpr std::int64_t FarFieldBudgetCoarsestNodes = 4096;
 constexpr std::int64_t FarFieldBudgetFinestNodes = 262144;
-/// A resolution is not taken when its near lights per point exceed the finest one's by
-/// more than this fraction (the frame would pay for the cheaper build).
+/// A resolution is not taken when its near lights per point exceed the cheapest (the
+/// finest's) by more than this fraction (the frame would pay for the cheaper build).
 constexpr double FarFieldBudgetNearTolerance = 0.05;
 
 /// The resolutions an error budget chooses from, coarsest first.

@@ -466,8 +466,10 @@ void vtkClusteredLightingAssigner::PrepareLights(const vtkClusteredLightingAssig
 // The far field's options for this preparation: the pass's, with the resolution an error
 // budget chooses (vtkClusteredLightingFarFieldBudget.h). The choice is made again only
 // when what it depends on changes (the preparation key: budget, options, region; the
-// number of lights and of split lights), not when lights only move: it summarizes the
-// bound at up to 7 resolutions (0.1 to 0.25 s each at 4,096 lights on 2 threads).
+// number of lights and of split lights), not when lights move or change brightness
+// (the budget was met when chosen; ComputeFarFieldErrorBound gives the bound now): it
+// summarizes the bound at up to 7 resolutions (0.1 to 0.25 s each at 4,096 lights on 2
+// threads).
 vtkClusteredLighting::FarFieldOptions vtkClusteredLightingAssigner::ChooseFarFieldOptions(
   const vtkClusteredLightingAssignerInputs& inputs, double budget)
 {

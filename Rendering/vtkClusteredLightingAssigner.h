@@ -309,7 +309,7 @@ private:
   vtkClusteredLighting::PreparedLights Prepared;
   /// The far field's resolution chosen for the error budget, and what it was chosen for:
   /// chosen again when the preparation key or the number of (split) lights changes, kept
-  /// while lights only move (ChooseFarFieldOptions).
+  /// while lights move or change brightness (ChooseFarFieldOptions).
   vtkClusteredLighting::FarFieldResolutionChoice BudgetChoice;
   PreparationKey BudgetChoiceKey;
   std::size_t BudgetChoiceLights = 0, BudgetChoiceSplit = 0;

@@ -192,10 +192,11 @@ public:
    * near radii). When both kinds of lights are present, the cut tails and the far field
    * each get half of the budget. The choice is made when the budget, the far field's
    * options or region, or the number of lights change (0.1 to 0.25 s per resolution
-   * tried at 4,096 lights on 2 threads), not when lights only move. When no resolution
-   * meets it (the rest of the bound is the order-2 moments' own, which NearFieldBudget
-   * moves somewhat and the resolution does not), the pass takes the one with the smallest
-   * bound and warns once.
+   * tried at 4,096 lights on 2 threads), not when lights move or change brightness (the
+   * budget was met when chosen; ComputeFarFieldErrorBound gives the bound now). When no
+   * resolution meets it (the rest of the bound is the order-2 moments' own, which
+   * NearFieldBudget moves somewhat and the resolution does not), the pass takes the one
+   * with the smallest bound and warns once.
    * GetEffectiveCutoff(), GetFarFieldResolutionInUse() and GetFarFieldErrorBudgetMet()
    * report the choices. Range [0, 255]. Default is 0 (use ContributionCutoff and
    * FarFieldResolution).

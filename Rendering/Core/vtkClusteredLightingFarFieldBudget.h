@@ -37,7 +37,8 @@
  * Cost: one plan per resolution (milliseconds), then a tree and a summary per resolution
  * tried (0.1 to 0.25 s each at 4,096 lights on 2 threads, about 0.7 s at 65,536). The pass
  * chooses when the budget, the far field's options, its region or the number of lights
- * change, not when lights only move.
+ * change, not when lights move or change brightness: the budget is met when the choice
+ * is made, and the pass's ComputeFarFieldErrorBound gives the bound of the current build.
  */
 #ifndef vtkClusteredLightingFarFieldBudget_h
 #define vtkClusteredLightingFarFieldBudget_h

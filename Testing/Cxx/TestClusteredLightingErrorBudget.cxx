@@ -12,7 +12,8 @@
 //    not; a budget below every resolution's bound warns once, names the option, is
 //    reported by GetFarFieldErrorBudgetMet and PrintSelf, and its frame is still within
 //    the stated bound of brute force;
-//  - a budget of 0 gives FarFieldResolution back.
+//  - a budget of 0 gives FarFieldResolution back;
+//  - spot lights (culled) among split lights get their cutoff for half of the budget.
 #include "ClusteredLightingTestUtilities.h"
 
 #include "vtkClusteredLightSet.h"
@@ -141,5 +142,37 @@ int TestClusteredLightingErrorBudget(int, char*[])
   Check(pass->GetFarFieldResolutionInUse() == pass->GetFarFieldResolution() &&
       pass->GetFarFieldErrorBudgetMet(),
     "budget 0: FarFieldResolution again");
+
+  // 7. Spot lights (culled, never split) among the split lights: their cutoff is chosen for
+  // half of the budget, the same as for those spot lights alone at half the budget.
+  auto addSpots = [](vtkClusteredLightSet* set)
+  {
+    for (int k = 0; k < 64; ++k)
+    {
+      const vtkIdType i = set->AddLight(-2.8 + 0.8 * (k % 8), 1.2, -2.8 + 0.8 * (k / 8));
+      set->SetAttenuation(i, 1.0, 0.0, 1.0);
+      set->SetIntensity(i, 0.3);
+      set->SetSpot(i, 0.0, -1.0, 0.0, 60.0, 1.0);
+    }
+  };
+  addSpots(lights);
+  pass->SetErrorBudgetInSteps(8.0);
+  rw->Render();
+  const double mixed = pass->GetEffectiveCutoff();
+  vtkNew<vtkClusteredLightSet> spotsAlone;
+  addSpots(spotsAlone);
+  pass->RemoveLightSet(lights);
+  pass->AddLightSet(spotsAlone);
+  rw->Render();
+  const double alone8 = pass->GetEffectiveCutoff();
+  pass->SetErrorBudgetInSteps(4.0);
+  rw->Render();
+  const double alone4 = pass->GetEffectiveCutoff();
+  std::printf("spot lights' cutoff: %g among split lights at 8 steps, %g alone at 8, %g alone "
+              "at 4\n",
+    mixed, alone8, alone4);
+  Check(alone8 != alone4, "the spot lights alone: their cutoff depends on the budget");
+  Check(mixed == alone4,
+    "with split lights beside them, the spot lights' cutoff is chosen for half the budget");
   return Status;
 }

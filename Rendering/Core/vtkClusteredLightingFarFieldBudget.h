@@ -47,7 +47,6 @@
 
 #include <algorithm> // for std::any_of, std::min_element
 #include <cstdint>   // for std::int64_t
-#include <limits>    // for std::numeric_limits
 #include <vector>    // for std::vector
 
 namespace vtkClusteredLighting
@@ -144,7 +143,7 @@ FarFieldResolutionChoice ChooseFarFieldResolution(const std::vector<PreparedLigh
     near[i] = plan.NearLightsPerPoint;
   }
   const double cheapestNear = *std::min_element(near.begin(), near.end());
-  double best = std::numeric_limits<double>::infinity();
+  choice.Met = false;
   for (std::size_t i = 0; i < ladder.size(); ++i)
   {
     if (near[i] > cheapestNear * (1.0 + FarFieldBudgetNearTolerance))
@@ -158,10 +157,8 @@ FarFieldResolutionChoice ChooseFarFieldResolution(const std::vector<PreparedLigh
     const FarFieldLightTree tree = BuildFarFieldLightTree(planned, radii);
     const FarFieldBuildInputs in{ &plan.Grid, &planned, &radii, &tree, plan.Grouping };
     const double bound = summarize(in).Max;
-    ++choice.Summaries;
-    if (bound < best)
+    if (++choice.Summaries == 1 || bound < choice.Bound)
     {
-      best = bound;
       choice.Nodes = ladder[i];
       choice.Bound = bound;
       choice.NearLightsPerPoint = near[i];
@@ -172,7 +169,6 @@ FarFieldResolutionChoice ChooseFarFieldResolution(const std::vector<PreparedLigh
       return choice;
     }
   }
-  choice.Met = false;
   return choice;
 }
 

@@ -12,8 +12,8 @@ pass's defaults (far field on), with the far field off, and with brute force (ev
 light, exact); prints each frame time and the clustered images' error against brute
 force in 8-bit steps and writes the three images. Exits with status 1 if the far field
 does not bring the image closer to brute force. --pbr METALLIC (and --roughness) makes
-both actors PBR. --budget STEPS (repeatable) also renders with that ErrorBudgetInSteps and
-prints the far field's resolution it chose and its stated bound.
+both actors PBR. --budget STEPS (repeatable) also renders with that ErrorBudgetInSteps,
+writes its image and prints the far field's resolution it chose and its stated bound.
 
     PYTHONPATH=build/lib/python3/dist-packages \\
       scripts/with-display.sh /usr/bin/python3 Examples/Python/user_lights.py
@@ -149,6 +149,7 @@ def main():
         ms = timed_render(window, args.frames)
         image, pixels = grab(window)
         name = "budget-%g" % steps
+        write_png(image, "%s-%s.png" % (args.prefix, name))
         results[name] = (ms, pixels)
         budgets[name] = (choice_ms, pass_.GetFarFieldResolutionInUse(),
                          pass_.ComputeFarFieldErrorBound(), pass_.GetFarFieldErrorBudgetMet(),

@@ -11,6 +11,7 @@
 #include "vtkClusteredLightingPrepassChoice.h"
 #include "vtkClusteredLightingShaderCode.h"
 #include "vtkClusteredLightingShaderVariant.h"
+#include "vtkClusteredLightingTranslucentStep.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkObjectFactory.h"
@@ -54,31 +55,8 @@ bool IsPbr(vtkProp* prop)
   return property && property->GetInterpolation() == VTK_PBR;
 }
 
-//------------------------------------------------------------------------------
-// Translucent step that behaves like stock VTK: order-independent transparency, or
-// (dual) depth peeling when the renderer has UseDepthPeeling on.
-class vtkClusteredLightingTranslucentStep : public vtkRenderPass
-{
-public:
-  static vtkClusteredLightingTranslucentStep* New();
-  vtkTypeMacro(vtkClusteredLightingTranslucentStep, vtkRenderPass)
-  void Render(const vtkRenderState* s) override
-  {
-    this->NumberOfRenderedProps = 0;
-    vtkRenderer* ren = s->GetRenderer();
-    const int before = ren->GetNumberOfPropsRendered();
-    ren->DeviceRenderTranslucentPolygonalGeometry(s->GetFrameBuffer());
-    this->NumberOfRenderedProps = ren->GetNumberOfPropsRendered() - before;
-  }
-
-protected:
-  vtkClusteredLightingTranslucentStep() = default;
-  ~vtkClusteredLightingTranslucentStep() override = default;
-};
-vtkStandardNewMacro(vtkClusteredLightingTranslucentStep)
-
-  double Milliseconds(
-    std::chrono::steady_clock::time_point a, std::chrono::steady_clock::time_point b)
+double Milliseconds(
+  std::chrono::steady_clock::time_point a, std::chrono::steady_clock::time_point b)
 {
   return std::chrono::duration<double, std::milli>(b - a).count();
 }
@@ -272,10 +250,9 @@ struct vtkClusteredLightingPass::vtkInternals
   std::vector<vtkSmartPointer<vtkClusteredLightSet>> LightSets;
   vtkClusteredLightingAssigner* Current = nullptr; ///< during Render()
   vtkClusteredLightingShaderVariant Variant;       ///< global part for the current render
-  /// MeasureTimings: the fragment queries before and from the first translucent draw, and
-  /// which of them counts now (-1: none).
-  GLuint FragmentQueries[2] = { 0, 0 };
-  int ActiveFragmentQuery = -1;
+  /// The delegate's translucent step, which also counts the shaded fragments
+  /// (MeasureTimings).
+  vtkNew<vtkClusteredLightingTranslucentStep> TranslucentStep;
   vtkTimeStamp ShaderStageTime;
   vtkNew<vtkLight> PlaceholderLight; ///< keeps VTK's lit code when every light is clustered
   vtkNew<vtkLight> ComplexityLight;  ///< keeps VTK's lighting complexity (switched off)
@@ -312,8 +289,7 @@ vtkClusteredLightingPass::vtkClusteredLightingPass()
   : Internals(new vtkInternals)
 {
   vtkNew<vtkRenderStepsPass> steps;
-  vtkNew<vtkClusteredLightingTranslucentStep> translucent;
-  steps->SetTranslucentPass(translucent);
+  steps->SetTranslucentPass(this->Internals->TranslucentStep);
   this->SetDelegatePass(steps);
 
   // Keeps VTK's lighting code generated (complexity 1) when every light is clustered.
@@ -876,29 +852,21 @@ void vtkClusteredLightingPass::RenderDelegate(const vtkRenderState* s,
   }
   const auto s1 = std::chrono::steady_clock::now();
   // Fragments that pass the depth test per visible pixel: what a GPU with early depth
-  // tests shades (occlusion queries, MeasureTimings only). The first counts the draws
-  // before the first translucent one, the second the rest (SetShaderParameters switches).
-  GLuint* queries = this->Internals->FragmentQueries;
+  // tests shades (occlusion queries, MeasureTimings only), opaque and translucent apart
+  // (vtkClusteredLightingTranslucentStep).
+  vtkClusteredLightingTranslucentStep* step = this->Internals->TranslucentStep;
   const bool countFragments = this->MeasureTimings;
   if (countFragments)
   {
-    glGenQueries(2, queries);
-    glBeginQuery(GL_SAMPLES_PASSED, queries[0]);
-    this->Internals->ActiveFragmentQuery = 0;
+    step->BeginCounting();
   }
   this->RenderDelegateOnce(s);
   this->ShadedOpaqueFragmentsPerVisiblePixel = 0.0;
   this->ShadedTranslucentFragmentsPerVisiblePixel = 0.0;
-  GLuint64 shaded[2] = { 0, 0 };
+  vtkClusteredLightingTranslucentStep::Counts shaded;
   if (countFragments)
   {
-    glEndQuery(GL_SAMPLES_PASSED);
-    for (int q = 0; q <= this->Internals->ActiveFragmentQuery; ++q)
-    {
-      glGetQueryObjectui64v(queries[q], GL_QUERY_RESULT, shaded + q);
-    }
-    glDeleteQueries(2, queries);
-    this->Internals->ActiveFragmentQuery = -1;
+    shaded = step->EndCounting();
   }
   this->NumberOfRenderedProps += this->DelegatePass->GetNumberOfRenderedProps();
   if (counting)
@@ -915,8 +883,9 @@ void vtkClusteredLightingPass::RenderDelegate(const vtkRenderState* s,
   {
     const std::size_t visible = CountVisiblePixels(s, rw);
     const double perPixel = visible > 0 ? 1.0 / static_cast<double>(visible) : 0.0;
-    this->ShadedOpaqueFragmentsPerVisiblePixel = static_cast<double>(shaded[0]) * perPixel;
-    this->ShadedTranslucentFragmentsPerVisiblePixel = static_cast<double>(shaded[1]) * perPixel;
+    this->ShadedOpaqueFragmentsPerVisiblePixel = static_cast<double>(shaded.Opaque) * perPixel;
+    this->ShadedTranslucentFragmentsPerVisiblePixel =
+      shaded.TranslucentMeasured ? static_cast<double>(shaded.Translucent) * perPixel : -1.0;
   }
   if (enabled)
   {
@@ -1105,15 +1074,6 @@ void vtkClusteredLightingPass::InjectShadingCode(std::string& fragmentShader, vt
 bool vtkClusteredLightingPass::SetShaderParameters(
   vtkShaderProgram* program, vtkAbstractMapper*, vtkProp* prop, vtkOpenGLVertexArrayObject*)
 {
-  // MeasureTimings: fragments of translucent draws are counted apart (between draws, so
-  // no draw is split between the two queries).
-  if (this->Internals->ActiveFragmentQuery == 0 && prop &&
-    prop->IsRenderingTranslucentPolygonalGeometry())
-  {
-    glEndQuery(GL_SAMPLES_PASSED);
-    glBeginQuery(GL_SAMPLES_PASSED, this->Internals->FragmentQueries[1]);
-    this->Internals->ActiveFragmentQuery = 1;
-  }
   if (!this->Internals->Current || !program)
   {
     return true;

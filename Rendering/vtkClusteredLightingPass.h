@@ -633,19 +633,24 @@ public:
   vtkGetMacro(NonEmptyClusterFraction, double);
   /// Fragments of the last shading render that passed the depth test (so were shaded by a
   /// GPU with early depth tests), per pixel showing opaque geometry, with MeasureTimings
-  /// on (GL_SAMPLES_PASSED queries); 0 when not measured. The sum of the two parts below.
+  /// on (GL_SAMPLES_PASSED queries); 0 when not measured. The sum of the two parts below,
+  /// or -1 when the translucent part was not measured.
   double GetShadedFragmentsPerVisiblePixel()
   {
-    return this->ShadedOpaqueFragmentsPerVisiblePixel +
-      this->ShadedTranslucentFragmentsPerVisiblePixel;
+    return this->ShadedTranslucentFragmentsPerVisiblePixel < 0.0
+      ? -1.0
+      : this->ShadedOpaqueFragmentsPerVisiblePixel +
+        this->ShadedTranslucentFragmentsPerVisiblePixel;
   }
-  /// Its part from the draws before the first translucent draw (the opaque geometry):
-  /// 1.0 means no hidden opaque fragment was shaded (a face drawn twice at the same depth,
-  /// or coincident faces, count more).
+  /// Its part from the opaque draws: 1.0 means no hidden opaque fragment was shaded (a
+  /// face drawn twice at the same depth, or coincident faces, count more).
   vtkGetMacro(ShadedOpaqueFragmentsPerVisiblePixel, double);
-  /// Its part from the translucent draws and everything after them: every translucent
-  /// layer in front of the opaque surface is shaded and blended, as it must be (depth
-  /// peeling draws each layer once per peel).
+  /// Its part from the translucent draws: every translucent layer in front of the opaque
+  /// surface is shaded and blended, as it must be. Not VTK's compositing of the layers
+  /// (order-independent translucency draws one unlit full-viewport quad, which is not
+  /// counted). -1 when the renderer peels translucent geometry in depth (UseDepthPeeling):
+  /// depth peeling counts samples with the same kind of query, which cannot run twice at
+  /// once, so nothing is counted while it renders.
   vtkGetMacro(ShadedTranslucentFragmentsPerVisiblePixel, double);
   /// Number of lights split into near and far parts in the last render.
   vtkGetMacro(NumberOfFarFieldLights, int);

@@ -72,6 +72,17 @@ void SwitchSpecular(Context& ctx, bool off)
   }
 }
 
+/// Every actor forced opaque, and back (a step that changes the scene).
+void SwitchOpaque(Context& ctx, bool on)
+{
+  vtkActorCollection* actors = ctx.GetRenderer()->GetActors();
+  actors->InitTraversal();
+  while (vtkActor* a = actors->GetNextActor())
+  {
+    a->SetForceOpaque(on);
+  }
+}
+
 /// Every actor made PBR with the given metallic factor and roughness, and back to its own
 /// interpolation (a step that changes the scene).
 void SwitchPbr(Context& ctx, bool on, double metallic = 0.0, double roughness = 0.5)
@@ -478,6 +489,30 @@ std::vector<Step> MakePlan(const PlanOptions& options)
       plan.push_back(prepassOnly);
     };
     depthRows();
+    // What translucency costs (issue 12: its fragments, VTK's compositing, the clusters
+    // kept in front of the opaque surfaces): the house, whose windows are 23 translucent
+    // actors, with every actor opaque, clustered and brute force (docs/depth.md).
+    if (!quick && base.Where == &HouseScene())
+    {
+      for (const char* method : { "clustered", "brute" })
+      {
+        Step o = base;
+        o.Method = method;
+        o.Sweep = "translucency";
+        o.Value = "all opaque";
+        o.ChangesScene = "all opaque";
+        o.Setup = [](Context& ctx) { SwitchOpaque(ctx, true); };
+        o.Teardown = [](Context& ctx) { SwitchOpaque(ctx, false); };
+        if (o.Method == "brute")
+        {
+          o.Frames = 3;
+          o.Counts = false;
+          o.Apply = [](vtkClusteredLightingPass* p)
+          { p->SetShadingMode(vtkClusteredLightingPass::SHADING_BRUTE_FORCE); };
+        }
+        plan.push_back(o);
+      }
+    }
     // Finer screen tiles, on every scene: fewer lights walked per pixel, for a costlier
     // assignment (issue 12; docs/depth.md says what they buy in time).
     if (!quick)

@@ -195,6 +195,31 @@ int TestClusteredLightingMappers(int argc, char* argv[])
     status = EXIT_FAILURE;
   }
 
+  // Counting shaded fragments (MeasureTimings) draws the same image: depth peeling counts
+  // samples with the same kind of occlusion query, of which only one can run, so none of
+  // the pass's runs while it peels, and the translucent part is reported not measured.
+  renWin->Render();
+  const std::vector<float> uncounted = ClusteredLightingTest::CapturePixels(renWin);
+  pass->SetMeasureTimings(true);
+  renWin->Render();
+  pass->SetMeasureTimings(false);
+  const std::vector<float> counted = ClusteredLightingTest::CapturePixels(renWin);
+  const auto cmp = ClusteredLightingTest::CompareImages(counted, uncounted);
+  ClusteredLightingTest::PrintComparison("depth peeling, fragments counted vs not", cmp);
+  const double opaque = pass->GetShadedOpaqueFragmentsPerVisiblePixel();
+  std::printf("depth peeling: shaded fragments per visible pixel %.4f opaque, %.4f "
+              "translucent, %.4f in all\n",
+    opaque, pass->GetShadedTranslucentFragmentsPerVisiblePixel(),
+    pass->GetShadedFragmentsPerVisiblePixel());
+  if (!(ren->GetLastRenderingUsedDepthPeeling() && cmp.MaxAbsError == 0.0 && opaque > 0.999 &&
+        opaque < 1.01 && pass->GetShadedTranslucentFragmentsPerVisiblePixel() == -1.0 &&
+        pass->GetShadedFragmentsPerVisiblePixel() == -1.0))
+  {
+    std::printf("depth peeling: counting fragments changed the image, or its counts are "
+                "wrong\n");
+    status = EXIT_FAILURE;
+  }
+
   renWin->Render();
   return ClusteredLightingTest::FinishImageTest(argc, argv, renWin, status);
 }

@@ -250,8 +250,9 @@ struct vtkClusteredLightingPass::vtkInternals
   std::vector<vtkSmartPointer<vtkClusteredLightSet>> LightSets;
   vtkClusteredLightingAssigner* Current = nullptr; ///< during Render()
   vtkClusteredLightingShaderVariant Variant;       ///< global part for the current render
-  /// The delegate's translucent step, which also counts the shaded fragments
-  /// (MeasureTimings).
+  /// The pass's own delegate (VTK's render steps) and its translucent step, which also
+  /// counts the shaded fragments (MeasureTimings).
+  vtkNew<vtkRenderStepsPass> Steps;
   vtkNew<vtkClusteredLightingTranslucentStep> TranslucentStep;
   vtkTimeStamp ShaderStageTime;
   vtkNew<vtkLight> PlaceholderLight; ///< keeps VTK's lit code when every light is clustered
@@ -288,9 +289,8 @@ vtkStandardNewMacro(vtkClusteredLightingPass);
 vtkClusteredLightingPass::vtkClusteredLightingPass()
   : Internals(new vtkInternals)
 {
-  vtkNew<vtkRenderStepsPass> steps;
-  steps->SetTranslucentPass(this->Internals->TranslucentStep);
-  this->SetDelegatePass(steps);
+  this->Internals->Steps->SetTranslucentPass(this->Internals->TranslucentStep);
+  this->SetDelegatePass(this->Internals->Steps);
 
   // Keeps VTK's lighting code generated (complexity 1) when every light is clustered.
   vtkLight* placeholder = this->Internals->PlaceholderLight;
@@ -436,6 +436,11 @@ void vtkClusteredLightingPass::Render(const vtkRenderState* s)
     vtkWarningMacro("No delegate pass: nothing is rendered.");
     return;
   }
+  if (ren->GetSelector())
+  {
+    this->RenderSelection(s);
+    return;
+  }
   this->SetUpCamera(ren);
 
   // 1. Light gathering.
@@ -499,14 +504,59 @@ void vtkClusteredLightingPass::Render(const vtkRenderState* s)
 }
 
 //------------------------------------------------------------------------------
-// Whether this frame may draw the depth prepass: the options ask for it, there are
-// clustered lights and props, and it is not a selection render.
+namespace
+{
+// The renderer's own steps of a render without a pass (vtkOpenGLRenderer::DeviceRender),
+// which are protected: a pointer to a protected member formed through a derived class
+// calls it on any renderer (virtually), with no cast of the renderer.
+struct RendererSteps : public vtkOpenGLRenderer
+{
+  static void Render(vtkOpenGLRenderer* ren, vtkFrameBufferObjectBase* fbo)
+  {
+    int (vtkRenderer::*updateCamera)() = &RendererSteps::UpdateCamera;
+    vtkTypeBool (vtkRenderer::*updateLightGeometry)() = &RendererSteps::UpdateLightGeometry;
+    int (vtkOpenGLRenderer::*updateLights)() = &RendererSteps::UpdateLights;
+    int (vtkOpenGLRenderer::*updateGeometry)(vtkFrameBufferObjectBase*) =
+      &RendererSteps::UpdateGeometry;
+    (ren->*updateCamera)();
+    (ren->*updateLightGeometry)();
+    (ren->*updateLights)();
+    (ren->*updateGeometry)(fbo);
+  }
+};
+}
+
+//------------------------------------------------------------------------------
+// A hardware selection render (vtkHardwareSelector: VTK's pickers, ParaView's selections)
+// draws ids, not light: no light gathering, assignment or shader hooks. VTK's render
+// steps (the pass's own delegate) have no selection path, so the renderer's own steps
+// render it, as without a pass: its UpdateGeometry hands the props to the selector (and
+// honours a pick list). A delegate of the application's (ParaView's vtkPVDefaultPass
+// renders through the renderer's steps too) renders it as it would without this pass.
+void vtkClusteredLightingPass::RenderSelection(const vtkRenderState* s)
+{
+  vtkOpenGLRenderer* ren = static_cast<vtkOpenGLRenderer*>(s->GetRenderer()); // checked
+  if (this->DelegatePass == this->Internals->Steps.GetPointer())
+  {
+    RendererSteps::Render(ren, s->GetFrameBuffer());
+    this->NumberOfRenderedProps = ren->GetNumberOfPropsRendered();
+  }
+  else
+  {
+    this->DelegatePass->Render(s);
+    this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
+  }
+}
+
+//------------------------------------------------------------------------------
+// Whether this frame may draw the depth prepass: the options ask for it, and there are
+// clustered lights and props (a selection render does not come here).
 bool vtkClusteredLightingPass::UsesDepthPrepass(
   const vtkRenderState* s, const vtkClusteredLightingLightCollection& lights) const
 {
   const bool hasLights = !lights.ClusteredLights.empty() || !lights.LightSets.empty();
   return (this->DepthPrepass || this->DepthAwareClusters) && hasLights &&
-    !s->GetRenderer()->GetSelector() && s->GetPropArrayCount() > 0;
+    s->GetPropArrayCount() > 0;
 }
 
 //------------------------------------------------------------------------------
@@ -854,8 +904,12 @@ void vtkClusteredLightingPass::RenderDelegate(const vtkRenderState* s,
   // Fragments that pass the depth test per visible pixel: what a GPU with early depth
   // tests shades (occlusion queries, MeasureTimings only), opaque and translucent apart
   // (vtkClusteredLightingTranslucentStep).
+  // Only through the pass's own delegate, whose translucent step switches the queries
+  // (another delegate's translucency, ParaView's depth peeling say, may run queries of its
+  // own: nothing is counted, 0).
   vtkClusteredLightingTranslucentStep* step = this->Internals->TranslucentStep;
-  const bool countFragments = this->MeasureTimings;
+  const bool countFragments =
+    this->MeasureTimings && this->DelegatePass == this->Internals->Steps.GetPointer();
   if (countFragments)
   {
     step->BeginCounting();

@@ -17,17 +17,34 @@
 #include "vtkConeSource.h"
 #include "vtkGlyph3DMapper.h"
 #include "vtkMultiBlockDataSet.h"
+#include "vtkObjectFactory.h"
 #include "vtkPlaneSource.h"
 #include "vtkPointSource.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
 #include "vtkRegressionTestImage.h"
+#include "vtkRenderState.h"
+#include "vtkRenderStepsPass.h"
 #include "vtkSphereSource.h"
 
 #include <random>
 
 namespace
 {
+// The translucent step of an application's own delegate (as ParaView's view sets one):
+// the renderer's translucency, depth peeling here.
+class RendererTranslucency : public vtkRenderPass
+{
+public:
+  static RendererTranslucency* New();
+  vtkTypeMacro(RendererTranslucency, vtkRenderPass)
+  void Render(const vtkRenderState* s) override
+  {
+    s->GetRenderer()->DeviceRenderTranslucentPolygonalGeometry(s->GetFrameBuffer());
+  }
+};
+vtkStandardNewMacro(RendererTranslucency);
+
 double QuarterMean(const std::vector<float>& px, int w, int h, int qx, int qy)
 {
   double sum = 0.0;
@@ -198,6 +215,25 @@ int TestClusteredLightingMappers(int argc, char* argv[])
   // Counting shaded fragments (MeasureTimings) draws the same image: depth peeling counts
   // samples with the same kind of occlusion query, of which only one can run, so none of
   // the pass's runs while it peels, and the translucent part is reported not measured.
+  // Two more translucent spheres in the glass make layers that take more than one peel,
+  // and a high occlusion ratio makes the peeling stop by its query's count (a query that
+  // fails shows: the peeling goes on), both undone before the regression image.
+  ren->SetOcclusionRatio(0.5);
+  vtkNew<vtkActor> layers[2];
+  for (int i = 0; i < 2; ++i)
+  {
+    vtkNew<vtkSphereSource> layer;
+    layer->SetCenter(i ? 0.7 : 1.3, i ? 0.9 : 1.2, i ? 1.0 : 0.8);
+    layer->SetRadius(i ? 0.4 : 0.5);
+    layer->SetThetaResolution(32);
+    layer->SetPhiResolution(32);
+    vtkNew<vtkPolyDataMapper> layerMapper;
+    layerMapper->SetInputConnection(layer->GetOutputPort());
+    layers[i]->SetMapper(layerMapper);
+    layers[i]->GetProperty()->SetOpacity(0.5);
+    layers[i]->GetProperty()->SetColor(i ? 1.0 : 0.4, 0.5, i ? 0.3 : 1.0);
+    ren->AddActor(layers[i]);
+  }
   renWin->Render();
   const std::vector<float> uncounted = ClusteredLightingTest::CapturePixels(renWin);
   pass->SetMeasureTimings(true);
@@ -219,6 +255,40 @@ int TestClusteredLightingMappers(int argc, char* argv[])
                 "wrong\n");
     status = EXIT_FAILURE;
   }
+
+  // Through a delegate of the application's, the pass counts nothing (the delegate's
+  // translucency may run queries of its own): the counts are 0 and the image is the same.
+  vtkSmartPointer<vtkRenderPass> own = pass->GetDelegatePass();
+  vtkNew<vtkRenderStepsPass> foreign;
+  vtkNew<RendererTranslucency> foreignTranslucency;
+  foreign->SetTranslucentPass(foreignTranslucency);
+  pass->SetDelegatePass(foreign);
+  renWin->Render();
+  const std::vector<float> foreignUncounted = ClusteredLightingTest::CapturePixels(renWin);
+  pass->SetMeasureTimings(true);
+  renWin->Render();
+  pass->SetMeasureTimings(false);
+  const auto foreignCmp = ClusteredLightingTest::CompareImages(
+    ClusteredLightingTest::CapturePixels(renWin), foreignUncounted);
+  ClusteredLightingTest::PrintComparison(
+    "an application's delegate, fragments counted vs not", foreignCmp);
+  std::printf("an application's delegate: shaded fragments per visible pixel %.4f opaque, "
+              "%.4f translucent\n",
+    pass->GetShadedOpaqueFragmentsPerVisiblePixel(),
+    pass->GetShadedTranslucentFragmentsPerVisiblePixel());
+  if (!(foreignCmp.MaxAbsError == 0.0 && pass->GetShadedOpaqueFragmentsPerVisiblePixel() == 0.0 &&
+        pass->GetShadedTranslucentFragmentsPerVisiblePixel() == 0.0))
+  {
+    std::printf("an application's delegate: counting changed the image, or counted\n");
+    status = EXIT_FAILURE;
+  }
+  pass->ReleaseGraphicsResources(renWin);
+  pass->SetDelegatePass(own);
+  for (vtkActor* layer : layers)
+  {
+    ren->RemoveActor(layer);
+  }
+  ren->SetOcclusionRatio(0.0);
 
   renWin->Render();
   return ClusteredLightingTest::FinishImageTest(argc, argv, renWin, status);

@@ -2,6 +2,7 @@
 #include "vtkClusteredLightingPass.h"
 
 #include "vtkActor.h"
+#include "vtkBoundingBox.h"
 #include "vtkCamera.h"
 #include "vtkClusteredLightSet.h"
 #include "vtkClusteredLightingAssigner.h"
@@ -504,41 +505,23 @@ void vtkClusteredLightingPass::Render(const vtkRenderState* s)
 }
 
 //------------------------------------------------------------------------------
-namespace
-{
-// The renderer's own steps of a render without a pass (vtkOpenGLRenderer::DeviceRender),
-// which are protected: a pointer to a protected member formed through a derived class
-// calls it on any renderer (virtually), with no cast of the renderer.
-struct RendererSteps : public vtkOpenGLRenderer
-{
-  static void Render(vtkOpenGLRenderer* ren, vtkFrameBufferObjectBase* fbo)
-  {
-    int (vtkRenderer::*updateCamera)() = &RendererSteps::UpdateCamera;
-    vtkTypeBool (vtkRenderer::*updateLightGeometry)() = &RendererSteps::UpdateLightGeometry;
-    int (vtkOpenGLRenderer::*updateLights)() = &RendererSteps::UpdateLights;
-    int (vtkOpenGLRenderer::*updateGeometry)(vtkFrameBufferObjectBase*) =
-      &RendererSteps::UpdateGeometry;
-    (ren->*updateCamera)();
-    (ren->*updateLightGeometry)();
-    (ren->*updateLights)();
-    (ren->*updateGeometry)(fbo);
-  }
-};
-}
-
 //------------------------------------------------------------------------------
 // A hardware selection render (vtkHardwareSelector: VTK's pickers, ParaView's selections)
 // draws ids, not light: no light gathering, assignment or shader hooks. VTK's render
 // steps (the pass's own delegate) have no selection path, so the renderer's own steps
-// render it, as without a pass: its UpdateGeometry hands the props to the selector (and
-// honours a pick list). A delegate of the application's (ParaView's vtkPVDefaultPass
+// render it, as without a pass (vtkOpenGLRenderer::DeviceRender, through vtkRenderPass's
+// access to them): its UpdateGeometry hands the props to the selector (and honours a pick
+// list). A delegate of the application's (ParaView's vtkPVDefaultPass
 // renders through the renderer's steps too) renders it as it would without this pass.
 void vtkClusteredLightingPass::RenderSelection(const vtkRenderState* s)
 {
-  vtkOpenGLRenderer* ren = static_cast<vtkOpenGLRenderer*>(s->GetRenderer()); // checked
+  vtkRenderer* ren = s->GetRenderer();
   if (this->DelegatePass == this->Internals->Steps.GetPointer())
   {
-    RendererSteps::Render(ren, s->GetFrameBuffer());
+    this->UpdateCamera(ren);
+    this->UpdateLightGeometry(ren);
+    this->UpdateLights(ren);
+    this->UpdateGeometry(ren, s->GetFrameBuffer());
     this->NumberOfRenderedProps = ren->GetNumberOfPropsRendered();
   }
   else
@@ -692,8 +675,17 @@ vtkClusteredLightingAssignerInputs vtkClusteredLightingPass::MakeAssignerInputs(
   in.FarField.Grouping = this->FarFieldGrouping;
   in.FarField.NearBudget = this->NearFieldBudget;
   in.FarField.SharedColor = this->FarFieldSharedColor;
+  // The far field's region: the visible props' bounds, with FarFieldRegion when it is a
+  // box.
   double bounds[6];
   ren->ComputeVisiblePropBounds(bounds);
+  vtkBoundingBox region;
+  region.AddBounds(bounds);
+  region.AddBounds(this->FarFieldRegion);
+  if (region.IsValid())
+  {
+    region.GetBounds(bounds);
+  }
   in.RegionLo = glm::dvec3(bounds[0], bounds[2], bounds[4]);
   in.RegionHi = glm::dvec3(bounds[1], bounds[3], bounds[5]);
   vtkClusteredLightingGridOptions grid;
@@ -1265,6 +1257,16 @@ void vtkClusteredLightingPass::PrintSelf(ostream& os, vtkIndent indent)
   os << next << "FarFieldExactSumLimit: " << this->FarFieldExactSumLimit << "\n";
   os << next << "FarFieldGrouping: " << this->FarFieldGrouping << "\n";
   os << next << "FarFieldSharedColor: " << (this->FarFieldSharedColor ? "On" : "Off") << "\n";
+  const double* r = this->FarFieldRegion;
+  os << next << "FarFieldRegion: ";
+  if (vtkBoundingBox::IsValid(r))
+  {
+    os << r[0] << " " << r[1] << " " << r[2] << " " << r[3] << " " << r[4] << " " << r[5] << "\n";
+  }
+  else
+  {
+    os << "(none: the visible props' bounds)\n";
+  }
   os << next << "NearFieldBudget: " << this->NearFieldBudget << "\n";
   os << next << "MortonOrder: " << (this->MortonOrder ? "On" : "Off") << "\n";
   os << next << "PerClusterCulling: " << (this->PerClusterCulling ? "On" : "Off") << "\n";

@@ -272,6 +272,22 @@ public:
 
   //@{
   /**
+   * Advanced: a world-space box (xmin, xmax, ymin, ymax, zmin, zmax) the far field's grid
+   * covers, with the bounding box of the renderer's visible props (their union, so the
+   * geometry the pass shades is always inside). The grid follows that region, so an
+   * application that renders pieces of one data set on several processes (ParaView over
+   * MPI) sets the bounds of the whole data set here: every process then builds the same far
+   * field, with no seam where the pieces meet, whatever it renders, and a prop that comes
+   * and goes inside it (a selection's highlight) moves nothing. ParaView's Clustered
+   * Lighting view sets its geometry bounds here. An empty box (xmin > xmax) adds nothing.
+   * Default is an empty box.
+   */
+  vtkSetVector6Macro(FarFieldRegion, double);
+  vtkGetVector6Macro(FarFieldRegion, double);
+  //@}
+
+  //@{
+  /**
    * Screen tiles across (X) and down (Y), and depth slices (Z), in [1, 256]. When the grid
    * cannot hold the lights, the pass uses a smaller one (GetClusterGridInUse).
    * Defaults are 32, 16 and 32.
@@ -769,6 +785,7 @@ protected:
   bool MeasureTimings = false;
   bool FarField = true;
   int FarFieldResolution = 32768;
+  double FarFieldRegion[6] = { 1.0, -1.0, 1.0, -1.0, 1.0, -1.0 };
   double FarFieldCellsPerRadius = 2.0;
   double FarFieldTolerance = 2.0 / 255.0;
   int FarFieldExactSumLimit = 16384;

@@ -52,9 +52,27 @@ void vtkPVClusteredLightingView::SetClusteredLightingPass(vtkClusteredLightingPa
     this->ClusteredLightingPass->RemoveAllLightSets();
   }
   next->SetDelegatePass(this->DefaultPass);
+  if (this->GeometryBounds.IsValid())
+  {
+    double bounds[6];
+    this->GeometryBounds.GetBounds(bounds);
+    next->SetFarFieldRegion(bounds);
+  }
   this->ClusteredLightingPass = next;
   this->SynchronizedRenderers->SetRenderPass(next);
   this->Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkPVClusteredLightingView::Update()
+{
+  this->Superclass::Update();
+  if (this->ClusteredLightingPass && this->GeometryBounds.IsValid())
+  {
+    double bounds[6];
+    this->GeometryBounds.GetBounds(bounds);
+    this->ClusteredLightingPass->SetFarFieldRegion(bounds);
+  }
 }
 
 //------------------------------------------------------------------------------

@@ -18,6 +18,11 @@
  *  - vtkClusteredLightSets added with AddLightSet(), which is what the "Clustered Lights"
  *    representation (vtkClusteredLightsRepresentation) does with its data.
  *
+ * The far field's region: after each Update() the view gives the pass its geometry
+ * bounds, which ParaView reduces over all ranks (FarFieldRegion), so every rank builds
+ * the same far field whatever piece it renders, and a selection's highlight, which shows
+ * cells of the data inside those bounds, moves nothing.
+ *
  * The pass's options are not forwarded by this class: the server manager creates the
  * pass as a subproxy of the view proxy, whose properties the view proxy exposes, and
  * hands it to SetClusteredLightingPass(). Each rank has its own pass, so its statistics
@@ -64,6 +69,10 @@ public:
   void AddLightSet(vtkClusteredLightSet* lights);
   void RemoveLightSet(vtkClusteredLightSet* lights);
   ///@}
+
+  /// Updates the view, then gives the pass the geometry bounds of all ranks as its far
+  /// field's region.
+  void Update() override;
 
 protected:
   vtkPVClusteredLightingView();

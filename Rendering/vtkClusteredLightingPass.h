@@ -49,6 +49,10 @@
  * the master bits, then the list bits, and shade those lights with VTK's own formulas
  * (attenuation, spot cone, Phong or PBR).
  *
+ * A selection render (a vtkHardwareSelector's: VTK's pickers, ParaView's selections)
+ * draws ids, not light: the pass does no light work for it and hands it to the renderer's
+ * own steps, as without a pass, or to an application's own delegate.
+ *
  * Options come in three groups: the main options (ShadingMode, ContributionCutoff,
  * ErrorBudgetInSteps, Falloff, FarField, FarFieldResolution, the grid), advanced options
  * for tuning (their doc starts with "Advanced"), and diagnostic options for debugging and
@@ -572,9 +576,10 @@ public:
    * Diagnostic: finish the GL work around the assignment and shading stages and record
    * their times (GetLastAssignmentTime, GetLastShadingTime), and count the fragments of
    * the shading render that pass the depth test (GetShadedFragmentsPerVisiblePixel and
-   * its opaque and translucent parts: occlusion queries). Costs a pipeline stall; for
-   * benchmarks. Default is off. Changes what is measured, not what is drawn, so it does
-   * not modify the pass: turning it on does not make a new scene for
+   * its opaque and translucent parts: occlusion queries, counted only through the pass's
+   * own delegate: an application's delegate may run such queries itself, so its counts stay
+   * 0). Costs a pipeline stall; for benchmarks. Default is off. Changes what is measured, not what
+   * is drawn, so it does not modify the pass: turning it on does not make a new scene for
    * AutomaticDepthPrepass (no new trial).
    */
   void SetMeasureTimings(bool measure) { this->MeasureTimings = measure; }

@@ -505,14 +505,13 @@ void vtkClusteredLightingPass::Render(const vtkRenderState* s)
 }
 
 //------------------------------------------------------------------------------
-//------------------------------------------------------------------------------
 // A hardware selection render (vtkHardwareSelector: VTK's pickers, ParaView's selections)
 // draws ids, not light: no light gathering, assignment or shader hooks. VTK's render
 // steps (the pass's own delegate) have no selection path, so the renderer's own steps
 // render it, as without a pass (vtkOpenGLRenderer::DeviceRender, through vtkRenderPass's
 // access to them): its UpdateGeometry hands the props to the selector (and honours a pick
-// list). A delegate of the application's (ParaView's vtkPVDefaultPass
-// renders through the renderer's steps too) renders it as it would without this pass.
+// list). A delegate of the application's (ParaView's vtkPVDefaultPass renders through the
+// renderer's steps too) renders it as it would without this pass.
 void vtkClusteredLightingPass::RenderSelection(const vtkRenderState* s)
 {
   vtkRenderer* ren = s->GetRenderer();
@@ -895,10 +894,9 @@ void vtkClusteredLightingPass::RenderDelegate(const vtkRenderState* s,
   const auto s1 = std::chrono::steady_clock::now();
   // Fragments that pass the depth test per visible pixel: what a GPU with early depth
   // tests shades (occlusion queries, MeasureTimings only), opaque and translucent apart
-  // (vtkClusteredLightingTranslucentStep).
-  // Only through the pass's own delegate, whose translucent step switches the queries
-  // (another delegate's translucency, ParaView's depth peeling say, may run queries of its
-  // own: nothing is counted, 0).
+  // (vtkClusteredLightingTranslucentStep). Only through the pass's own delegate, whose
+  // translucent step switches the queries (another delegate's translucency, ParaView's
+  // depth peeling say, may run queries of its own: nothing is counted, 0).
   vtkClusteredLightingTranslucentStep* step = this->Internals->TranslucentStep;
   const bool countFragments =
     this->MeasureTimings && this->DelegatePass == this->Internals->Steps.GetPointer();

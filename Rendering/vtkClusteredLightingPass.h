@@ -577,10 +577,10 @@ public:
    * their times (GetLastAssignmentTime, GetLastShadingTime), and count the fragments of
    * the shading render that pass the depth test (GetShadedFragmentsPerVisiblePixel and
    * its opaque and translucent parts: occlusion queries, counted only through the pass's
-   * own delegate: an application's delegate may run such queries itself, so its counts stay
-   * 0). Costs a pipeline stall; for benchmarks. Default is off. Changes what is measured, not what
-   * is drawn, so it does not modify the pass: turning it on does not make a new scene for
-   * AutomaticDepthPrepass (no new trial).
+   * own delegate: an application's delegate may run such queries itself, so its counts
+   * stay 0). Costs a pipeline stall; for benchmarks. Default is off. Changes what is
+   * measured, not what is drawn, so it does not modify the pass: turning it on does not
+   * make a new scene for AutomaticDepthPrepass (no new trial).
    */
   void SetMeasureTimings(bool measure) { this->MeasureTimings = measure; }
   vtkGetMacro(MeasureTimings, bool);

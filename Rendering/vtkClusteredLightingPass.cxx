@@ -262,6 +262,7 @@ struct vtkClusteredLightingPass::vtkInternals
   std::set<std::size_t> BuiltSources; ///< hashes of the shader sources built (NumberOfShaderBuilds)
   vtkClusteredLighting::DepthImage Depths; ///< the prepass's readback, during Render()
   std::string ReportedDepthProblem;        ///< why depth-aware clusters are off, said once
+  std::string ReportedRendererOptions;     ///< renderer options the delegate ignores, said once
   bool ReportedLoopLimit = false;          ///< the llvmpipe loop limit was reported
   bool ReportedUncountedPixels = false;    ///< a debug view's counts could not be read
   bool ReportedPbrFarField = false;        ///< PBR actors sum their far light exactly
@@ -443,6 +444,7 @@ void vtkClusteredLightingPass::Render(const vtkRenderState* s)
     return;
   }
   this->SetUpCamera(ren);
+  this->ReportIgnoredRendererOptions(ren);
 
   // 1. Light gathering.
   vtkClusteredLightingLightCollection lights;
@@ -528,6 +530,53 @@ void vtkClusteredLightingPass::RenderSelection(const vtkRenderState* s)
     this->DelegatePass->Render(s);
     this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
   }
+}
+
+//------------------------------------------------------------------------------
+// Renderer options that only the renderer's own render applies (vtkOpenGLRenderer's
+// UpdateGeometry and DeviceRenderOpaqueGeometry): VTK's render steps, the pass's own
+// delegate, skip them, as they do for every render pass. Said once while the set of them
+// persists; an application's delegate (ParaView's) renders through the renderer and
+// applies them.
+void vtkClusteredLightingPass::ReportIgnoredRendererOptions(vtkRenderer* ren)
+{
+  std::string ignored;
+  if (this->DelegatePass == this->Internals->Steps.GetPointer())
+  {
+    const struct
+    {
+      bool On;
+      const char* Name;
+    } options[] = { { ren->GetUseFXAA(), "UseFXAA" }, { ren->GetUseShadows() != 0, "UseShadows" },
+      { ren->GetUseSSAO(), "UseSSAO" },
+      { ren->GetUseHiddenLineRemoval() != 0, "UseHiddenLineRemoval" } };
+    for (const auto& o : options)
+    {
+      if (o.On)
+      {
+        ignored += (ignored.empty() ? "" : ", ") + std::string(o.Name);
+      }
+    }
+  }
+  if (ignored == this->Internals->ReportedRendererOptions)
+  {
+    return;
+  }
+  this->Internals->ReportedRendererOptions = ignored;
+  if (ignored.empty())
+  {
+    return;
+  }
+  std::ostringstream msg;
+  msg << "The renderer asks for " << ignored
+      << ", which VTK's render steps (this pass's delegate) do not apply: the frame is "
+         "rendered without them.";
+  if (ren->GetUseFXAA())
+  {
+    msg << " For FXAA, put a vtkOpenGLFXAAPass around this pass "
+           "(fxaa->SetDelegatePass(pass); renderer->SetPass(fxaa)): it gives VTK's own FXAA.";
+  }
+  vtkWarningMacro(<< msg.str());
 }
 
 //------------------------------------------------------------------------------

@@ -852,6 +852,7 @@ private:
   // The steps of Render() (see the .cxx).
   void SetUpCamera(vtkRenderer* ren);
   void RenderSelection(const vtkRenderState* s);
+  void ReportIgnoredRendererOptions(vtkRenderer* ren);
   vtkClusteredLightingAssignerInputs MakeAssignerInputs(
     vtkRenderer* ren, vtkClusteredLightingLightCollection& lights) const;
   void ReportAssignment(const vtkClusteredLightingAssignment& result);

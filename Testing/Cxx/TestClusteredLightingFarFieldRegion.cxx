@@ -13,6 +13,7 @@
 //    bound of brute force at every pixel, with zero false negatives (CheckClusteredFrame);
 //  - a region smaller than the geometry still covers the geometry (the union), and an
 //    empty region is no region; PrintSelf names the region.
+#include "ClusteredLightingGLTestUtilities.h"
 #include "ClusteredLightingTestUtilities.h"
 
 #include "vtkClusteredLightSet.h"
@@ -24,16 +25,7 @@
 
 namespace
 {
-int Status = EXIT_SUCCESS;
-
-void Check(bool ok, const std::string& what)
-{
-  std::printf("%s: %s\n", ok ? "ok" : "FAILED", what.c_str());
-  if (!ok)
-  {
-    Status = EXIT_FAILURE;
-  }
-}
+using ClusteredLightingTest::Check;
 
 double MaxDifference(const std::vector<float>& a, const std::vector<float>& b)
 {
@@ -136,5 +128,5 @@ int TestClusteredLightingFarFieldRegion(int, char*[])
       printedEmpty.str().find("FarFieldRegion: (none") != std::string::npos,
     "an empty region is no region");
   Check(messages->Errors.empty() && messages->Warnings.empty(), "nothing reported");
-  return Status;
+  return ClusteredLightingTest::CheckStatus();
 }

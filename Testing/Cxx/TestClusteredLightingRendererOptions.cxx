@@ -11,6 +11,7 @@
 //  - that fix gives stock VTK's FXAA image, bit for bit, with no warning;
 //  - UseShadows gives one warning of its own, and another when it is asked for again after
 //    being turned off.
+#include "ClusteredLightingGLTestUtilities.h"
 #include "ClusteredLightingTestUtilities.h"
 
 #include "vtkClusteredLightingPass.h"
@@ -21,16 +22,7 @@
 
 namespace
 {
-int Status = EXIT_SUCCESS;
-
-void Check(bool ok, const std::string& what)
-{
-  std::printf("%s: %s\n", ok ? "ok" : "FAILED", what.c_str());
-  if (!ok)
-  {
-    Status = EXIT_FAILURE;
-  }
-}
+using ClusteredLightingTest::Check;
 
 std::vector<float> Frame(vtkRenderWindow* rw, int frames = 1)
 {
@@ -104,5 +96,5 @@ int TestClusteredLightingRendererOptions(int, char*[])
   Check(messages->Errors.empty(), "no error");
   fxaa->ReleaseGraphicsResources(rw);
   pass->ReleaseGraphicsResources(rw);
-  return Status;
+  return ClusteredLightingTest::CheckStatus();
 }

@@ -12,6 +12,7 @@
 // prop out, and vtkCellPicker's hardware-selection step (vtkRenderer::PickProp); then that
 // a frame after the selections is the same bit for bit as before them, and that nothing
 // was reported.
+#include "ClusteredLightingGLTestUtilities.h"
 #include "ClusteredLightingTestUtilities.h"
 
 #include "vtkActorCollection.h"
@@ -35,13 +36,7 @@
 
 namespace
 {
-int Failed = 0;
-
-void Check(bool ok, const std::string& what)
-{
-  std::printf("%s: %s\n", ok ? "ok" : "FAILED", what.c_str());
-  Failed += ok ? 0 : 1;
-}
+using ClusteredLightingTest::Check;
 
 /// What a selection found: the ids of each prop (by its index among the renderer's
 /// actors).
@@ -214,5 +209,5 @@ int TestClusteredLightingSelection(int, char*[])
   ClusteredLightingTest::PrintComparison("after the selections vs before", cmp);
   Check(cmp.MaxAbsError == 0.0, "a frame after the selections is the same bit for bit");
   Check(messages->Errors.empty() && messages->Warnings.empty(), "nothing reported");
-  return Failed == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return ClusteredLightingTest::CheckStatus();
 }

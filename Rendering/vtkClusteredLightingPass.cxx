@@ -9,10 +9,12 @@
 #include "vtkClusteredLightingDepthPrepass.h"
 #include "vtkClusteredLightingGLHelpers.h"
 #include "vtkClusteredLightingLightCollector.h"
+#include "vtkClusteredLightingOpaqueStep.h"
 #include "vtkClusteredLightingPrepassChoice.h"
 #include "vtkClusteredLightingShaderCode.h"
 #include "vtkClusteredLightingShaderVariant.h"
 #include "vtkClusteredLightingTranslucentStep.h"
+#include "vtkClusteredLightingVolumetricStep.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkObjectFactory.h"
@@ -251,10 +253,13 @@ struct vtkClusteredLightingPass::vtkInternals
   std::vector<vtkSmartPointer<vtkClusteredLightSet>> LightSets;
   vtkClusteredLightingAssigner* Current = nullptr; ///< during Render()
   vtkClusteredLightingShaderVariant Variant;       ///< global part for the current render
-  /// The pass's own delegate (VTK's render steps) and its translucent step, which also
-  /// counts the shaded fragments (MeasureTimings).
+  /// The pass's own delegate (VTK's render steps) and its steps: opaque (with the
+  /// renderer's SSAO and hidden-line removal), translucent (which also counts the shaded
+  /// fragments, MeasureTimings), volumetric (after the renderer's FXAA).
   vtkNew<vtkRenderStepsPass> Steps;
+  vtkNew<vtkClusteredLightingOpaqueStep> OpaqueStep;
   vtkNew<vtkClusteredLightingTranslucentStep> TranslucentStep;
+  vtkNew<vtkClusteredLightingVolumetricStep> VolumetricStep;
   vtkTimeStamp ShaderStageTime;
   vtkNew<vtkLight> PlaceholderLight; ///< keeps VTK's lit code when every light is clustered
   vtkNew<vtkLight> ComplexityLight;  ///< keeps VTK's lighting complexity (switched off)
@@ -291,7 +296,9 @@ vtkStandardNewMacro(vtkClusteredLightingPass);
 vtkClusteredLightingPass::vtkClusteredLightingPass()
   : Internals(new vtkInternals)
 {
+  this->Internals->Steps->SetOpaquePass(this->Internals->OpaqueStep);
   this->Internals->Steps->SetTranslucentPass(this->Internals->TranslucentStep);
+  this->Internals->Steps->SetVolumetricPass(this->Internals->VolumetricStep);
   this->SetDelegatePass(this->Internals->Steps);
 
   // Keeps VTK's lighting code generated (complexity 1) when every light is clustered.
@@ -534,60 +541,42 @@ void vtkClusteredLightingPass::RenderSelection(const vtkRenderState* s)
 
 //------------------------------------------------------------------------------
 // Renderer options that only the renderer's own render applies (vtkOpenGLRenderer's
-// UpdateGeometry and DeviceRenderOpaqueGeometry): VTK's render steps, the pass's own
-// delegate, skip them, as they do for every render pass. Said once while the set of them
-// persists; an application's delegate (ParaView's) renders through the renderer and
-// applies them.
+// UpdateGeometry and DeviceRenderOpaqueGeometry) and VTK's render steps skip under any
+// render pass. The pass's own steps apply UseFXAA, UseSSAO and UseHiddenLineRemoval as the
+// renderer does (vtkClusteredLightingOpaqueStep, vtkClusteredLightingVolumetricStep);
+// UseShadows stays off: VTK's shadow maps are one depth render per light and shade only
+// VTK's own lights, so the clustered lights would cast none. Said once while it is asked
+// for; an application's delegate (ParaView's) renders through the renderer and decides.
 void vtkClusteredLightingPass::ReportIgnoredRendererOptions(vtkRenderer* ren)
 {
-  std::string ignored;
-  if (this->DelegatePass == this->Internals->Steps.GetPointer())
-  {
-    const struct
-    {
-      bool On;
-      const char* Name;
-    } options[] = { { ren->GetUseFXAA(), "UseFXAA" }, { ren->GetUseShadows() != 0, "UseShadows" },
-      { ren->GetUseSSAO(), "UseSSAO" },
-      { ren->GetUseHiddenLineRemoval() != 0, "UseHiddenLineRemoval" } };
-    for (const auto& o : options)
-    {
-      if (o.On)
-      {
-        ignored += (ignored.empty() ? "" : ", ") + std::string(o.Name);
-      }
-    }
-  }
+  const bool shadows =
+    this->DelegatePass == this->Internals->Steps.GetPointer() && ren->GetUseShadows() != 0;
+  const std::string ignored = shadows ? "UseShadows" : "";
   if (ignored == this->Internals->ReportedRendererOptions)
   {
     return;
   }
   this->Internals->ReportedRendererOptions = ignored;
-  if (ignored.empty())
+  if (shadows)
   {
-    return;
+    vtkWarningMacro("The renderer asks for UseShadows, which this pass does not apply: VTK's "
+                    "shadow maps (one depth render per light) are made for the lights VTK "
+                    "shades itself, and the clustered lights would cast none. The frame is "
+                    "rendered without shadows.");
   }
-  std::ostringstream msg;
-  msg << "The renderer asks for " << ignored
-      << ", which VTK's render steps (this pass's delegate) do not apply: the frame is "
-         "rendered without them.";
-  if (ren->GetUseFXAA())
-  {
-    msg << " For FXAA, put a vtkOpenGLFXAAPass around this pass "
-           "(fxaa->SetDelegatePass(pass); renderer->SetPass(fxaa)): it gives VTK's own FXAA.";
-  }
-  vtkWarningMacro(<< msg.str());
 }
 
 //------------------------------------------------------------------------------
-// Whether this frame may draw the depth prepass: the options ask for it, and there are
-// clustered lights and props (a selection render does not come here).
+// Whether this frame may draw the depth prepass: the options ask for it, there are
+// clustered lights and props (a selection render does not come here), and the opaque
+// geometry is drawn on the prepass's depths (not so under the renderer's hidden-line
+// removal or SSAO: vtkClusteredLightingOpaqueStep::DrawsOnPrepassDepths).
 bool vtkClusteredLightingPass::UsesDepthPrepass(
   const vtkRenderState* s, const vtkClusteredLightingLightCollection& lights) const
 {
   const bool hasLights = !lights.ClusteredLights.empty() || !lights.LightSets.empty();
   return (this->DepthPrepass || this->DepthAwareClusters) && hasLights &&
-    s->GetPropArrayCount() > 0;
+    s->GetPropArrayCount() > 0 && vtkClusteredLightingOpaqueStep::DrawsOnPrepassDepths(s);
 }
 
 //------------------------------------------------------------------------------
@@ -976,7 +965,11 @@ void vtkClusteredLightingPass::RenderDelegate(const vtkRenderState* s,
   {
     const std::size_t visible = CountVisiblePixels(s, rw);
     const double perPixel = visible > 0 ? 1.0 / static_cast<double>(visible) : 0.0;
-    this->ShadedOpaqueFragmentsPerVisiblePixel = static_cast<double>(shaded.Opaque) * perPixel;
+    // VTK's SSAO draws two full-viewport quads of its own in the opaque step.
+    const bool opaqueMeasured =
+      this->Internals->OpaqueStep->GetLastMethod() != vtkClusteredLightingOpaqueStep::Method::SSAO;
+    this->ShadedOpaqueFragmentsPerVisiblePixel =
+      opaqueMeasured ? static_cast<double>(shaded.Opaque) * perPixel : -1.0;
     this->ShadedTranslucentFragmentsPerVisiblePixel =
       shaded.TranslucentMeasured ? static_cast<double>(shaded.Translucent) * perPixel : -1.0;
   }

@@ -6,9 +6,10 @@
  * Drop-in use (C++): create the pass with vtkNew, then call renderer->SetPass(pass).
  * In Python: pass = vtkClusteredLightingPass(); renderer.SetPass(pass).
  *
- * The pass wraps a delegate (by default a vtkRenderStepsPass whose translucent step
- * behaves like stock VTK: order-independent transparency, or depth peeling when the
- * renderer asks for it), so opaque, translucent and overlay props render as before.
+ * The pass wraps a delegate (by default a vtkRenderStepsPass whose steps behave like
+ * stock VTK's renderer: order-independent transparency, or depth peeling when the
+ * renderer asks for it; the renderer's SSAO, hidden-line removal and FXAA), so opaque,
+ * translucent, volume and overlay props render as before.
  *
  * Where the lights come from:
  *
@@ -110,8 +111,10 @@ public:
 
   //@{
   /**
-   * The pass that renders the scene. Default is a vtkRenderStepsPass whose translucent
-   * step matches stock VTK (OIT, or depth peeling when the renderer uses it).
+   * The pass that renders the scene. Default is a vtkRenderStepsPass whose steps apply
+   * the renderer's options as stock VTK does: translucency (OIT, or depth peeling when the
+   * renderer uses it), UseSSAO, UseHiddenLineRemoval and UseFXAA (VTK's own render steps
+   * skip those three). UseShadows is not applied (a warning says so).
    */
   vtkGetObjectMacro(DelegatePass, vtkRenderPass);
   virtual void SetDelegatePass(vtkRenderPass* delegatePass);
@@ -655,16 +658,18 @@ public:
   /// Fragments of the last shading render that passed the depth test (so were shaded by a
   /// GPU with early depth tests), per pixel showing opaque geometry, with MeasureTimings
   /// on (GL_SAMPLES_PASSED queries); 0 when not measured. The sum of the two parts below,
-  /// or -1 when the translucent part was not measured.
+  /// or -1 when either was not measured.
   double GetShadedFragmentsPerVisiblePixel()
   {
-    return this->ShadedTranslucentFragmentsPerVisiblePixel < 0.0
+    return this->ShadedOpaqueFragmentsPerVisiblePixel < 0.0 ||
+        this->ShadedTranslucentFragmentsPerVisiblePixel < 0.0
       ? -1.0
       : this->ShadedOpaqueFragmentsPerVisiblePixel +
         this->ShadedTranslucentFragmentsPerVisiblePixel;
   }
   /// Its part from the opaque draws: 1.0 means no hidden opaque fragment was shaded (a
-  /// face drawn twice at the same depth, or coincident faces, count more).
+  /// face drawn twice at the same depth, or coincident faces, count more). -1 when the
+  /// renderer's UseSSAO is on: VTK's SSAO draws full-viewport quads of its own there.
   vtkGetMacro(ShadedOpaqueFragmentsPerVisiblePixel, double);
   /// Its part from the translucent draws: every translucent layer in front of the opaque
   /// surface is shaded and blended, as it must be. Not VTK's compositing of the layers

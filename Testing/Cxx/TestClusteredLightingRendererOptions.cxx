@@ -1,22 +1,38 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Renderer options that only the renderer's own render applies (UseFXAA, UseShadows,
-// UseSSAO, UseHiddenLineRemoval: vtkOpenGLRenderer's UpdateGeometry and
-// DeviceRenderOpaqueGeometry). VTK's render steps, the pass's delegate, skip them, as they
-// do under any render pass; until 2026-11-28 the pass dropped them without a word. Checks,
-// on the test scene lit by the renderer's headlight (which the pass leaves to VTK, so its
-// image equals stock VTK's):
-//  - FXAA changes stock VTK's image here (the check below can fail);
-//  - under the pass, UseFXAA is not applied and one warning says so, names the option and
-//    the fix (a vtkOpenGLFXAAPass around the pass), however many frames follow;
-//  - that fix gives stock VTK's FXAA image, bit for bit, with no warning;
-//  - UseShadows gives one warning of its own, and another when it is asked for again after
-//    being turned off.
+// Renderer options that only the renderer's own render applies (UseFXAA, UseSSAO,
+// UseHiddenLineRemoval, UseShadows: vtkOpenGLRenderer's UpdateGeometry and
+// DeviceRenderOpaqueGeometry). VTK's render steps skip them under any render pass; the
+// pass's own steps apply the first three as the renderer does (until 2026-11-28 the pass
+// dropped all four, at first without a word). Checks:
+//  1. On the test scene lit by the renderer's headlight, which the pass leaves to VTK (so
+//     without these options its image is stock VTK's, bit for bit): each option changes
+//     stock VTK's image here (so the checks can fail), and under the pass each gives stock
+//     VTK's image with that option, bit for bit, with no message.
+//  2. With clustered lights (positional vtkLights, so the pass's shader hooks light every
+//     prop): FXAA equals a vtkOpenGLFXAAPass around the pass, bit for bit; SSAO darkens
+//     the clustered image by stock VTK's ambient-occlusion factor of the same geometry
+//     (col.rgb * ao, within the rounding of the 8-bit images the factor is read from);
+//     hidden-line removal hides the same wireframe pixels as stock VTK's.
+//  3. The shaded-fragment count (MeasureTimings) says "not measured" (-1) for the opaque
+//     part under SSAO, which draws full-viewport quads of its own.
+//  4. One pass in two windows, each with SSAO: each window keeps its own image frame
+//     after frame, and after the pass's resources are released.
+//  5. UseShadows is not applied: one warning that says why, again when asked for again.
+//  (Under SSAO or hidden-line removal the pass draws no depth prepass: the prepass hid
+//  the props behind the wireframes' back lines, and under SSAO a wireframe pixel lost
+//  its clustered light.)
+// Nothing reaches VTK's output window (a shader of VTK's that failed to build would).
 #include "ClusteredLightingGLTestUtilities.h"
 #include "ClusteredLightingTestUtilities.h"
 
 #include "vtkClusteredLightingPass.h"
+#include "vtkLight.h"
 #include "vtkOpenGLFXAAPass.h"
+#include "vtkOutputWindow.h"
+#include "vtkSphereSource.h"
+#include "vtkStringOutputWindow.h"
 
+#include <cmath>
 #include <cstdio>
 #include <string>
 
@@ -37,64 +53,268 @@ double MaxDifference(const std::vector<float>& a, const std::vector<float>& b)
 {
   return ClusteredLightingTest::CompareImages(a, b).MaxAbsError;
 }
+
+/// Pixels whose colour is not the background's (0.05, 0.05, 0.08 in 8 bits).
+std::vector<bool> Coverage(const std::vector<float>& image)
+{
+  const float background[3] = { 0.05f, 0.05f, 0.08f };
+  std::vector<bool> covered(image.size() / 3);
+  for (std::size_t p = 0; p < covered.size(); ++p)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      covered[p] = covered[p] || std::abs(image[3 * p + k] - background[k]) > 0.6f / 255.0f;
+    }
+  }
+  return covered;
+}
+
+std::size_t CountDifferent(const std::vector<bool>& a, const std::vector<bool>& b)
+{
+  std::size_t n = 0;
+  for (std::size_t p = 0; p < a.size() && p < b.size(); ++p)
+  {
+    n += a[p] != b[p] ? 1 : 0;
+  }
+  return n;
+}
+
+/// A wireframe sphere beside the test scene's ball (hidden-line removal's subject).
+void AddWireframeSphere(vtkRenderer* ren)
+{
+  vtkNew<vtkSphereSource> source;
+  source->SetThetaResolution(12);
+  source->SetPhiResolution(12);
+  source->SetCenter(2.0, 0.0, 0.5);
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(source->GetOutputPort());
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetRepresentationToWireframe();
+  actor->GetProperty()->SetColor(0.6, 0.9, 0.6);
+  ren->AddActor(actor);
+}
+
+/// Positional lights the pass clusters.
+void AddClusteredLights(vtkRenderer* ren)
+{
+  const double positions[4][3] = { { -2, 0.5, 1.5 }, { 1.5, 0.2, 1.8 }, { 0, 1.2, -1.5 },
+    { 2.5, -0.5, 0.5 } };
+  const double colors[4][3] = { { 1, 0.3, 0.2 }, { 0.2, 0.5, 1 }, { 0.9, 0.9, 0.3 },
+    { 0.3, 1, 0.4 } };
+  for (int i = 0; i < 4; ++i)
+  {
+    vtkNew<vtkLight> light;
+    light->SetPositional(true);
+    light->SetLightTypeToSceneLight();
+    light->SetPosition(positions[i]);
+    light->SetColor(colors[i]);
+    light->SetConeAngle(180.0);
+    light->SetAttenuationValues(1.0, 0.0, 0.5);
+    ren->AddLight(light);
+  }
+}
+
+/// SSAO multiplies the lit colour by the occlusion factor ao (VTK 9.1, vtkSSAOPass's
+/// combine shader: col.rgb * ao). ao depends on positions and normals only, so it is read
+/// from stock VTK's pair of images (with and without SSAO) where the plain channel is at
+/// least 0.25 and neither plain channel is clamped at 1 (VTK's SSAO renders into
+/// a float target and darkens the unclamped colour; the pass then evaluates every light);
+/// there, with every image rounded to 8 bits, the clustered SSAO image must
+/// equal the clustered plain image times ao within 5 steps (0.5 / 0.25 steps from each
+/// stock value, 0.5 from each clustered value). Returns the largest error in steps; `over`
+/// counts the channels SSAO darkened by more than 8 steps.
+double CheckOcclusionFactor(const std::vector<float>& stockPlain,
+  const std::vector<float>& stockSsao, const std::vector<float>& plain,
+  const std::vector<float>& ssao, std::size_t& over, std::size_t& compared)
+{
+  double worst = 0.0;
+  over = 0;
+  compared = 0;
+  for (std::size_t i = 0; i < plain.size(); ++i)
+  {
+    over += plain[i] - ssao[i] > 8.0f / 255.0f ? 1 : 0;
+    const float clamped = 254.5f / 255.0f;
+    if (stockPlain[i] < 0.25f || stockPlain[i] > clamped || plain[i] > clamped)
+    {
+      continue;
+    }
+    const double ao = double(stockSsao[i]) / double(stockPlain[i]);
+    worst = std::max(worst, std::abs(double(ssao[i]) - double(plain[i]) * ao) * 255.0);
+    ++compared;
+  }
+  return worst;
+}
 }
 
 int TestClusteredLightingRendererOptions(int, char*[])
 {
+  vtkNew<vtkStringOutputWindow> output;
+  vtkSmartPointer<vtkOutputWindow> previousOutput = vtkOutputWindow::GetInstance();
+  vtkOutputWindow::SetInstance(output);
+
   vtkNew<vtkRenderWindow> rw;
   vtkNew<vtkRenderer> ren;
   ClusteredLightingTest::SetUpTestScene(rw, ren, 200, 150, 8);
+  AddWireframeSphere(ren);
 
-  // Stock VTK, with and without FXAA.
+  // 1. Stock VTK, each option alone, then the same under the pass (headlight only).
+  struct Option
+  {
+    const char* Name;
+    void (*Set)(vtkRenderer*, bool);
+    std::vector<float> Stock;
+  };
+  Option options[] = {
+    { "UseFXAA", [](vtkRenderer* r, bool on) { r->SetUseFXAA(on); }, {} },
+    { "UseSSAO", [](vtkRenderer* r, bool on) { r->SetUseSSAO(on); }, {} },
+    { "UseHiddenLineRemoval", [](vtkRenderer* r, bool on) { r->SetUseHiddenLineRemoval(on); }, {} },
+  };
   const std::vector<float> stockPlain = Frame(rw);
-  ren->UseFXAAOn();
-  const std::vector<float> stockFxaa = Frame(rw);
-  Check(MaxDifference(stockFxaa, stockPlain) > 0.0, "FXAA changes stock VTK's image here");
+  for (Option& o : options)
+  {
+    o.Set(ren, true);
+    o.Stock = Frame(rw);
+    o.Set(ren, false);
+    Check(MaxDifference(o.Stock, stockPlain) > 0.0,
+      std::string(o.Name) + " changes stock VTK's image here");
+  }
 
-  // Under the pass: not applied, said once.
   vtkNew<vtkClusteredLightingPass> pass;
+  // The prepass in every frame (not chosen by timing): the wireframe's silhouette edges
+  // belong to a front and a back triangle at nearly equal depths, and which of the two
+  // shades a pixel there depends on whether the depths were laid down first.
+  pass->AutomaticDepthPrepassOff();
   vtkNew<ClusteredLightingTest::MessageCollector> messages;
   messages->Watch(pass);
   ren->SetPass(pass);
-  const std::vector<float> passFxaa = Frame(rw, 3);
-  Check(MaxDifference(passFxaa, stockPlain) == 0.0,
-    "under the pass UseFXAA is not applied (the image is stock VTK's without it)");
+  Check(MaxDifference(Frame(rw, 2), stockPlain) == 0.0,
+    "under the pass, without the options: stock VTK's image, bit for bit");
+  for (Option& o : options)
+  {
+    o.Set(ren, true);
+    const std::vector<float> image = Frame(rw, 2);
+    o.Set(ren, false);
+    const double d = MaxDifference(image, o.Stock);
+    Check(d == 0.0,
+      std::string(o.Name) + " under the pass: stock VTK's image with it, bit for bit (max " +
+        std::to_string(d * 255.0) + " steps)");
+  }
+  Check(messages->Warnings.empty() && messages->Errors.empty(), "no message for them");
+
+  // 2. Clustered lights.
+  AddClusteredLights(ren);
+  const std::vector<float> plain = Frame(rw, 2);
+  Check(pass->GetNumberOfClusteredLights() == 4, "the pass clusters the 4 positional lights");
+  Check(MaxDifference(plain, stockPlain) > 0.1, "they light the scene");
+
+  ren->UseFXAAOn();
+  const std::vector<float> fxaa = Frame(rw, 2);
+  ren->UseFXAAOff();
+  vtkNew<vtkOpenGLFXAAPass> wrapper;
+  wrapper->SetDelegatePass(pass);
+  ren->SetPass(wrapper);
+  const std::vector<float> wrapped = Frame(rw, 2);
+  ren->SetPass(pass);
+  Check(MaxDifference(fxaa, plain) > 0.0 && MaxDifference(fxaa, wrapped) == 0.0,
+    "clustered, UseFXAA: the image of a vtkOpenGLFXAAPass around the pass, bit for bit");
+
+  ren->UseSSAOOn();
+  const std::vector<float> ssao = Frame(rw, 2);
+  const bool ssaoPrepassed = pass->GetDepthPrepassUsed() || pass->GetDepthAwareClustersUsed();
+  ren->UseSSAOOff();
+  // VTK's SSAO renders the opaque step into a framebuffer of its own, without the
+  // prepass's depths, and the pass then draws no prepass: its plain counterpart is the
+  // frame without the prepass.
+  pass->DepthPrepassOff();
+  pass->DepthAwareClustersOff();
+  const std::vector<float> plainWithoutPrepass = Frame(rw);
+  pass->DepthPrepassOn();
+  pass->DepthAwareClustersOn();
+  Check(!ssaoPrepassed, "no depth prepass under SSAO");
+  std::size_t darkened = 0;
+  std::size_t compared = 0;
+  const double aoError = CheckOcclusionFactor(
+    stockPlain, options[1].Stock, plainWithoutPrepass, ssao, darkened, compared);
+  std::printf("SSAO: %zu channels compared, largest error %.2f steps, %zu darkened by more "
+              "than 8 steps\n",
+    compared, aoError, darkened);
+  Check(compared > 10000 && aoError <= 5.0,
+    "clustered, UseSSAO: the clustered image times stock VTK's occlusion factor");
+  Check(darkened > 500, "SSAO darkens the clustered image");
+
+  ren->UseHiddenLineRemovalOn();
+  const std::vector<float> hlr = Frame(rw, 2);
+  const bool prepassed = pass->GetDepthPrepassUsed() || pass->GetDepthAwareClustersUsed();
+  ren->UseHiddenLineRemovalOff();
+  const std::vector<float> after = Frame(rw);
+  const std::size_t hidden = CountDifferent(Coverage(plain), Coverage(hlr));
+  const std::size_t differ = CountDifferent(Coverage(hlr), Coverage(options[2].Stock));
+  std::printf(
+    "hidden-line removal: %zu pixels change coverage, %zu differ from stock\n", hidden, differ);
+  Check(hidden > 50 && differ == 0,
+    "clustered, UseHiddenLineRemoval: the wireframe pixels stock VTK's shows, no others "
+    "(with a depth prepass the floor behind the wireframe's back lines went missing)");
+  Check(!prepassed && pass->GetDepthPrepassUsed(),
+    "no depth prepass while hidden lines are removed; again without them");
+  Check(MaxDifference(after, plain) == 0.0, "each option off again: the plain image");
+
+  // 3. The opaque count under SSAO.
+  pass->MeasureTimingsOn();
+  Frame(rw);
+  const double opaque = pass->GetShadedOpaqueFragmentsPerVisiblePixel();
+  ren->UseSSAOOn();
+  const std::vector<float> measured = Frame(rw);
+  Check(opaque >= 1.0 && opaque < 1.2 && pass->GetShadedOpaqueFragmentsPerVisiblePixel() == -1.0 &&
+      pass->GetShadedFragmentsPerVisiblePixel() == -1.0,
+    "shaded opaque fragments per pixel " + std::to_string(opaque) +
+      " without SSAO, not measured (-1) with it");
+  Check(MaxDifference(measured, ssao) == 0.0, "counting does not change the SSAO image");
+  pass->MeasureTimingsOff();
+
+  // 4. One pass, two windows, SSAO in both; a release between frames.
+  vtkNew<vtkRenderWindow> rw2;
+  vtkNew<vtkRenderer> ren2;
+  ClusteredLightingTest::SetUpTestScene(rw2, ren2, 160, 120, 8);
+  AddWireframeSphere(ren2);
+  AddClusteredLights(ren2);
+  ren2->SetPass(pass);
+  ren2->UseSSAOOn();
+  const std::vector<float> second = Frame(rw2, 2);
+  bool same = true;
+  for (int i = 0; i < 3; ++i)
+  {
+    same =
+      same && MaxDifference(Frame(rw), ssao) == 0.0 && MaxDifference(Frame(rw2), second) == 0.0;
+  }
+  pass->ReleaseGraphicsResources(rw);
+  same = same && MaxDifference(Frame(rw), ssao) == 0.0 && MaxDifference(Frame(rw2), second) == 0.0;
+  Check(same, "one pass in two windows with SSAO: each keeps its image, also after a release");
+  ren->UseSSAOOff();
+
+  // 5. Shadows: not applied, said once, and again when asked for again.
+  ren->UseShadowsOn();
+  Check(MaxDifference(Frame(rw, 2), plain) == 0.0, "UseShadows: not applied");
   Check(messages->Warnings.size() == 1 &&
-      messages->Warnings[0].find("UseFXAA") != std::string::npos &&
-      messages->Warnings[0].find("vtkOpenGLFXAAPass") != std::string::npos,
-    "one warning in 3 frames names UseFXAA and the fix");
+      messages->Warnings[0].find("UseShadows") != std::string::npos &&
+      messages->Warnings[0].find("cast none") != std::string::npos,
+    "UseShadows: one warning in 2 frames that names it and says why");
   if (!messages->Warnings.empty())
   {
     std::printf("the warning: %s\n", messages->Warnings[0].c_str());
   }
-
-  // The fix: a vtkOpenGLFXAAPass around the pass gives stock VTK's FXAA.
-  ren->UseFXAAOff();
-  vtkNew<vtkOpenGLFXAAPass> fxaa;
-  fxaa->SetDelegatePass(pass);
-  ren->SetPass(fxaa);
-  const std::vector<float> wrapped = Frame(rw, 2);
-  Check(MaxDifference(wrapped, stockFxaa) == 0.0,
-    "a vtkOpenGLFXAAPass around the pass: stock VTK's FXAA image, bit for bit");
-  Check(messages->Warnings.size() == 1, "no warning without the option");
-
-  // Shadows: a warning of their own, and again when asked for again.
-  ren->SetPass(pass);
-  ren->UseShadowsOn();
-  Frame(rw, 2);
-  Check(messages->Warnings.size() == 2 &&
-      messages->Warnings[1].find("UseShadows") != std::string::npos &&
-      messages->Warnings[1].find("vtkOpenGLFXAAPass") == std::string::npos,
-    "UseShadows: one warning that names it");
   ren->UseShadowsOff();
   Frame(rw);
   ren->UseShadowsOn();
   Frame(rw);
-  Check(messages->Warnings.size() == 3, "asked for again: said again");
+  Check(messages->Warnings.size() == 2, "asked for again: said again");
   ren->UseShadowsOff();
   Frame(rw);
   Check(messages->Errors.empty(), "no error");
-  fxaa->ReleaseGraphicsResources(rw);
-  pass->ReleaseGraphicsResources(rw);
+
+  wrapper->ReleaseGraphicsResources(rw);
+  pass->ReleaseGraphicsResources(nullptr);
+  vtkOutputWindow::SetInstance(previousOutput);
+  Check(output->GetOutput().empty(), "nothing reached VTK's output window: " + output->GetOutput());
   return ClusteredLightingTest::CheckStatus();
 }

@@ -14,6 +14,14 @@ Checks, on every rank count:
    for clustered shading against stock VTK; float sums in another order), with the light
    kit off and with it on (its lights stay with VTK's lighting code in both views);
  - the images are lit: the three lights light more than 20% of the frame.
+ - with the small sphere drawn as an opaque wireframe in front of the large one, and the
+   views' HiddenLineRemoval on, then their UseAmbientOcclusion (UseSSAO) on (ParaView's
+   renderer applies both, through its own delegate; hidden-line removal on 1 rank only):
+   each changes the stock image, and the clustered image equals the stock one within one
+   step.
+   The pass draws its depth prepass in every frame here (AutomaticDepthPrepass off), and
+   must draw none under either option: with one, hidden-line removal hid the large
+   sphere behind the wireframe's back lines.
 """
 
 from paraview.simple import *  # noqa: F401,F403
@@ -87,5 +95,32 @@ for kit in (0, 1):
         lit = int((a.max(axis=2) > 40).sum())
         t.check(lit > 0.2 * d["pixels"], "lit pixels: %d of %d (more than 20%% expected)"
                 % (lit, d["pixels"]))
+
+# Hidden-line removal, then SSAO: the small sphere as an opaque wireframe in front of the
+# large one, the light kit off; the prepass in every frame unless an option forbids it.
+clustered.AutomaticDepthPrepass = 0
+clustered.DepthPrepass = 1
+for view in (stock, clustered):
+    view.UseLight = 0
+    display = GetDisplayProperties(glass, view=view)
+    display.Representation = "Wireframe"
+    display.Opacity = 1.0
+plain = t.save(stock, t.output("matches-stock-wireframe-stock"))
+for option in ("HiddenLineRemoval", "UseAmbientOcclusion"):
+    for view in (stock, clustered):
+        setattr(view, option, 1)
+    name = "matches-stock-%s" % option.lower()
+    a = t.save(clustered, t.output(name))
+    b = t.save(stock, t.output(name + "-stock"))
+    # ParaView turns hidden-line removal off for distributed geometry (more than 1 rank).
+    if option != "HiddenLineRemoval" or t.ranks() == 1:
+        changed = t.difference(b, plain)["pixels_differing"]
+        t.check(changed > 100, "%s changes %d pixels of the stock image" % (option, changed))
+    d = t.difference(a, b)
+    t.check(d["max"] <= 1,
+            "%s: clustered against stock: max difference %d step(s) (tolerance 1), "
+            "%d of %d pixels differ" % (option, d["max"], d["pixels_differing"], d["pixels"]))
+    for view in (stock, clustered):
+        setattr(view, option, 0)
 
 t.finish()

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkClusteredLightingDepthPrepass.h"
+
 #include "vtkClusteredLightingSampleDepths.h"
+#include "vtkClusteredLightingShaderCode.h"
 
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLFramebufferObject.h"
@@ -323,10 +325,10 @@ void vtkClusteredLightingDepthPrepass::NoteProgram(vtkShaderProgram* program)
 //------------------------------------------------------------------------------
 void vtkClusteredLightingDepthPrepass::AddInvariantPosition(std::string& vertexShader)
 {
-  const std::string line = "\ninvariant gl_Position;\n";
-  if (vertexShader.find(line) == std::string::npos)
+  const std::string line = "invariant gl_Position;\n";
+  if (vertexShader.find("\n" + line) == std::string::npos)
   {
-    vtkShaderProgram::Substitute(vertexShader, "//VTK::System::Dec", "//VTK::System::Dec" + line);
+    vtkClusteredLighting::InsertDeclarations(vertexShader, line);
   }
 }
 

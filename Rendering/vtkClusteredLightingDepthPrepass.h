@@ -86,7 +86,8 @@ public:
   bool SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop,
     vtkOpenGLVertexArrayObject* vao = nullptr) override;
 
-  /// Adds `invariant gl_Position;` after the vertex shader's //VTK::System::Dec, once.
+  /// Adds `invariant gl_Position;` once, after the vertex shader's //VTK::System::Dec or
+  /// its last #extension directive (vtkClusteredLighting::InsertDeclarations).
   static void AddInvariantPosition(std::string& vertexShader);
 
   /// Adds the pixel-centre depth output `gl_FragData[1] = (z, -z, 0, 1)` at the start of

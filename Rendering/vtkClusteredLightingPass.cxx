@@ -271,6 +271,7 @@ struct vtkClusteredLightingPass::vtkInternals
   bool ReportedLoopLimit = false;          ///< the llvmpipe loop limit was reported
   bool ReportedUncountedPixels = false;    ///< a debug view's counts could not be read
   bool ReportedPbrFarField = false;        ///< PBR actors sum their far light exactly
+  bool ReportedUnlitVolumes[2] = { false, false }; ///< by light sets, by hidden vtkLights
 
   vtkClusteredLightingAssigner* GetAssigner(vtkRenderer* ren)
   {
@@ -458,6 +459,7 @@ void vtkClusteredLightingPass::Render(const vtkRenderState* s)
   vtkClusteredLightingLightCollector::CollectRendererLights(
     ren, this->ClusterRendererLights, lights);
   vtkClusteredLightingLightCollector::CollectLightSets(this->Internals->LightSets, lights);
+  this->ReportUnlitVolumes(s, lights);
 
   // 2. Depth prepass (hidden fragments and depth-aware clusters), then assignment. With
   // AutomaticDepthPrepass the renderer's chooser says whether this frame draws it, and
@@ -563,6 +565,42 @@ void vtkClusteredLightingPass::ReportIgnoredRendererOptions(vtkRenderer* ren)
                     "shadow maps (one depth render per light) are made for the lights VTK "
                     "shades itself, and the clustered lights would cast none. The frame is "
                     "rendered without shadows.");
+  }
+}
+
+//------------------------------------------------------------------------------
+// Volumes are lit by their mappers from the renderer's vtkLights: the pass's own steps
+// give them every one (vtkClusteredLightingVolumetricStep). What cannot reach a volume is
+// said once per pass: the lights of light sets (no volume mapper reads them), and, under
+// an application's delegate (ParaView's), the clustered vtkLights, which the pass hides
+// from VTK's lighting code while that delegate renders the volumes too.
+void vtkClusteredLightingPass::ReportUnlitVolumes(
+  const vtkRenderState* s, const vtkClusteredLightingLightCollection& lights)
+{
+  const bool foreign = this->DelegatePass != this->Internals->Steps.GetPointer();
+  const bool sets = !lights.LightSets.empty() && !this->Internals->ReportedUnlitVolumes[0];
+  const bool clustered =
+    foreign && !lights.ClusteredLights.empty() && !this->Internals->ReportedUnlitVolumes[1];
+  if ((!sets && !clustered) || !vtkClusteredLightingVolumetricStep::HasVolumes(s))
+  {
+    return;
+  }
+  if (sets)
+  {
+    this->Internals->ReportedUnlitVolumes[0] = true;
+    vtkWarningMacro("The renderer shows a volume: volumes are lit by the renderer's "
+                    "vtkLights only, as VTK lights them, not by the lights of "
+                    "vtkClusteredLightSets.");
+  }
+  if (clustered)
+  {
+    this->Internals->ReportedUnlitVolumes[1] = true;
+    vtkWarningMacro("The renderer shows a volume, rendered by the application's delegate "
+                    "pass: it is not lit by the "
+      << lights.ClusteredLights.size()
+      << " positional vtkLight(s) this pass clusters (they are hidden from "
+         "VTK's lighting code meanwhile). The pass's own delegate lights "
+         "volumes with every vtkLight.");
   }
 }
 
@@ -904,6 +942,7 @@ void vtkClusteredLightingPass::RenderDelegate(const vtkRenderState* s,
   if (enabled)
   {
     this->HideClusteredLights(ren, lights);
+    this->Internals->VolumetricStep->SetVolumeLights(&lights.RendererLights);
     assigner->ActivateShading();
   }
   // A heat map scaled to the data first counts the lights evaluated per pixel: one render
@@ -976,6 +1015,7 @@ void vtkClusteredLightingPass::RenderDelegate(const vtkRenderState* s,
   if (enabled)
   {
     assigner->DeactivateShading();
+    this->Internals->VolumetricStep->SetVolumeLights(nullptr);
     this->RestoreRendererLights(ren, lights);
   }
 }
@@ -1138,8 +1178,8 @@ void vtkClusteredLightingPass::InjectShadingCode(std::string& fragmentShader, vt
     vtkShaderProgram::Substitute(fragmentShader, "//VTK::ClusteredLight::Impl", "");
     return;
   }
-  vtkShaderProgram::Substitute(fragmentShader, "//VTK::System::Dec",
-    "//VTK::System::Dec\n#extension GL_ARB_gpu_shader5 : enable\n");
+  vtkClusteredLighting::InsertDeclarations(
+    fragmentShader, "#extension GL_ARB_gpu_shader5 : enable\n");
   vtkShaderProgram::Substitute(
     fragmentShader, "//VTK::ClusteredLight::Dec", variant.GetDeclarations());
   if (variant.PBR)

@@ -858,6 +858,8 @@ private:
   void SetUpCamera(vtkRenderer* ren);
   void RenderSelection(const vtkRenderState* s);
   void ReportIgnoredRendererOptions(vtkRenderer* ren);
+  void ReportUnlitVolumes(
+    const vtkRenderState* s, const vtkClusteredLightingLightCollection& lights);
   vtkClusteredLightingAssignerInputs MakeAssignerInputs(
     vtkRenderer* ren, vtkClusteredLightingLightCollection& lights) const;
   void ReportAssignment(const vtkClusteredLightingAssignment& result);

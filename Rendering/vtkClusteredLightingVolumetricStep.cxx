@@ -2,9 +2,12 @@
 #include "vtkClusteredLightingVolumetricStep.h"
 
 #include "vtkClusteredLightingRendererObjects.h"
+#include "vtkLight.h"
+#include "vtkLightCollection.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLFXAAFilter.h"
 #include "vtkOpenGLRenderer.h"
+#include "vtkProp.h"
 #include "vtkRenderState.h"
 #include "vtkVolumetricPass.h"
 
@@ -39,8 +42,48 @@ void vtkClusteredLightingVolumetricStep::Render(const vtkRenderState* s)
     }
     filter->Execute(ren);
   }
+  // Every light of the renderer, the clustered ones too, while the volumes render.
+  vtkLightCollection* lights = s->GetRenderer()->GetLights();
+  std::vector<vtkSmartPointer<vtkLight>> hidden;
+  const bool swap = this->VolumeLights && HasVolumes(s);
+  if (swap)
+  {
+    vtkCollectionSimpleIterator it;
+    lights->InitTraversal(it);
+    while (vtkLight* light = lights->GetNextLight(it))
+    {
+      hidden.emplace_back(light);
+    }
+    lights->RemoveAllItems();
+    for (const auto& light : *this->VolumeLights)
+    {
+      lights->AddItem(light);
+    }
+  }
   this->Volumes->Render(s);
   this->NumberOfRenderedProps = this->Volumes->GetNumberOfRenderedProps();
+  if (swap)
+  {
+    lights->RemoveAllItems();
+    for (const auto& light : hidden)
+    {
+      lights->AddItem(light);
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkClusteredLightingVolumetricStep::HasVolumes(const vtkRenderState* s)
+{
+  for (int i = 0; i < s->GetPropArrayCount(); ++i)
+  {
+    vtkProp* prop = s->GetPropArray()[i];
+    if (prop->GetVisibility() && prop->IsA("vtkVolume"))
+    {
+      return true;
+    }
+  }
+  return false;
 }
 
 //------------------------------------------------------------------------------

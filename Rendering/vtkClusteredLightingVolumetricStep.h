@@ -14,6 +14,15 @@
  * follows it. The filter is kept per renderer (vtkClusteredLightingRendererObjects), as
  * the renderer keeps its own.
  *
+ * Volumes are lit by their own mappers (vtkGPUVolumeRayCastMapper, vtkSmartVolumeMapper,
+ * ...), which read the renderer's vtkLights when they render and which the pass's shader
+ * hooks do not reach. While the pass hides its clustered vtkLights from VTK's lighting
+ * code (the polydata shaders light them), it hands every light of the renderer to this
+ * step (SetVolumeLights), and the renderer's collection holds them while the volumes
+ * render: the volumes are lit as without the pass (a shaded volume had lost its
+ * positional lights, up to 217 steps darker). The lights of vtkClusteredLightSets do not
+ * light volumes.
+ *
  * @sa vtkClusteredLightingPass vtkClusteredLightingOpaqueStep
  */
 #ifndef vtkClusteredLightingVolumetricStep_h
@@ -21,9 +30,12 @@
 
 #include "vtkNew.h"
 #include "vtkRenderPass.h"
+#include "vtkSmartPointer.h" // for the volume lights
 
 #include <memory> // for std::unique_ptr
+#include <vector> // for the volume lights
 
+class vtkLight;
 class vtkOpenGLFXAAFilter;
 class vtkVolumetricPass;
 template <typename T>
@@ -41,6 +53,17 @@ public:
 
   void ReleaseGraphicsResources(vtkWindow* w) override;
 
+  /// The renderer's own lights, all of them, for the volumes of the renders until the next
+  /// call, while the pass hides some of them from VTK's lighting code; null (the default)
+  /// when it hides none. The list must outlive those renders.
+  void SetVolumeLights(const std::vector<vtkSmartPointer<vtkLight>>* lights)
+  {
+    this->VolumeLights = lights;
+  }
+
+  /// Whether the state holds a visible volume (vtkVolume, vtkMultiVolume).
+  static bool HasVolumes(const vtkRenderState* s);
+
 protected:
   vtkClusteredLightingVolumetricStep();
   ~vtkClusteredLightingVolumetricStep() override;
@@ -51,6 +74,7 @@ private:
 
   vtkNew<vtkVolumetricPass> Volumes;
   std::unique_ptr<vtkClusteredLightingRendererObjects<vtkOpenGLFXAAFilter>> FXAA;
+  const std::vector<vtkSmartPointer<vtkLight>>* VolumeLights = nullptr;
 };
 
 #endif

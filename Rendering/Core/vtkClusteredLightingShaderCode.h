@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /**
  * @file vtkClusteredLightingShaderCode.h
- * @brief GL-free selection of the optional blocks of the clustered shading sources, and
- *        a check of what a mapper's shader does after the lighting.
+ * @brief GL-free selection of the optional blocks of the clustered shading sources, a
+ *        check of what a mapper's shader does after the lighting, and where declarations
+ *        may be inserted into a mapper's shader.
  *
  * The shading sources (Rendering/glsl/vtkClusteredLightingShading{Dec,Impl}.glsl and
  * vtkClusteredLightingDebugImpl.glsl) mark optional code with lines of their own:
@@ -161,6 +162,46 @@ inline bool WritesColorAfter(const std::string& source, std::size_t from)
     }
   }
   return false;
+}
+
+/**
+ * Inserts `text` (declarations, or #extension directives) where a shader of VTK's may take
+ * it: after the line of the source's last #extension directive (GLSL allows nothing but
+ * directives before one: VTK's GPU volume ray caster declares its own in its text, and a
+ * declaration put above it failed to compile, so volumes vanished under the pass), else
+ * right after VTK's //VTK::System::Dec tag. Returns false, and leaves the source alone,
+ * when it has neither.
+ */
+inline bool InsertDeclarations(std::string& source, const std::string& text)
+{
+  std::size_t at = std::string::npos;
+  for (std::size_t line = 0; line < source.size();)
+  {
+    std::size_t end = source.find('\n', line);
+    end = end == std::string::npos ? source.size() : end;
+    std::size_t first = line;
+    while (first < end && (source[first] == ' ' || source[first] == '\t'))
+    {
+      ++first;
+    }
+    if (source.compare(first, 10, "#extension") == 0)
+    {
+      at = end;
+    }
+    line = end + 1;
+  }
+  if (at == std::string::npos)
+  {
+    const std::string tag = "//VTK::System::Dec";
+    const std::size_t tagAt = source.find(tag);
+    if (tagAt == std::string::npos)
+    {
+      return false;
+    }
+    at = tagAt + tag.size();
+  }
+  source.insert(at, "\n" + text);
+  return true;
 }
 
 } // namespace vtkClusteredLighting

@@ -94,3 +94,31 @@ TEST(ShaderCode, WritesColorAfterFindsAssignmentsNotReads)
   }
   EXPECT_TRUE(WritesColorAfter(plain, std::string::npos)); // unknown position: assume so
 }
+
+TEST(ShaderCode, InsertDeclarationsGoesAfterTheLastExtensionDirective)
+{
+  // VTK 9.1's polydata vertex template: after the System tag.
+  std::string polydata = "//VTK::System::Dec\n\nin vec4 vertexMC;\nvoid main() {}\n";
+  EXPECT_TRUE(InsertDeclarations(polydata, "invariant gl_Position;\n"));
+  EXPECT_EQ(polydata,
+    "//VTK::System::Dec\ninvariant gl_Position;\n\n\nin vec4 vertexMC;\nvoid main() {}\n");
+
+  // VTK 9.1's GPU volume ray caster (raycastervs.glsl) declares an extension of its own in
+  // its text: a declaration above it is a compile error ("#extension directive is not
+  // allowed in the middle of a shader"), so it goes after it (and after indented ones).
+  const std::string head = "//VTK::System::Dec\n/// Needed to enable inverse function\n"
+                           "#extension GL_ARB_gpu_shader5 : enable\n";
+  const std::string body = "in vec3 in_vertexPos;\nvoid main() {}\n";
+  std::string volume = head + "  #extension GL_ARB_other : enable\n" + body;
+  EXPECT_TRUE(InsertDeclarations(volume, "invariant gl_Position;\n"));
+  EXPECT_EQ(volume, head + "  #extension GL_ARB_other : enable\ninvariant gl_Position;\n\n" + body);
+  // A comment that mentions the word is not a directive.
+  std::string mentioned = head + "// see #extension above\n" + body;
+  EXPECT_TRUE(InsertDeclarations(mentioned, "X\n"));
+  EXPECT_EQ(mentioned.find("X\n"), head.size());
+
+  // Neither a tag nor a directive: left alone.
+  std::string bare = "void main() {}\n";
+  EXPECT_FALSE(InsertDeclarations(bare, "X\n"));
+  EXPECT_EQ(bare, "void main() {}\n");
+}

@@ -22,9 +22,15 @@ Checks, on every rank count:
    The pass draws its depth prepass in every frame here (AutomaticDepthPrepass off), and
    must draw none under either option: with one, hidden-line removal hid the large
    sphere behind the wireframe's back lines.
+ - a shaded volume (the Wavelet source) in a new pair of views lit by the light kit only
+   (its lights stay with VTK): it covers the image and the clustered view equals the
+   stock one within one step (the ray caster's shaders did not compile under the pass
+   before 2026-11-28, and the volume vanished).
 """
 
 from paraview.simple import *  # noqa: F401,F403
+
+import numpy
 
 import clustered_test as t
 
@@ -122,5 +128,33 @@ for option in ("HiddenLineRemoval", "UseAmbientOcclusion"):
             "%d of %d pixels differ" % (option, d["max"], d["pixels_differing"], d["pixels"]))
     for view in (stock, clustered):
         setattr(view, option, 0)
+
+# A shaded volume, light kit only.
+wavelet = Wavelet()
+volume_views = []
+for kind in ("ClusteredLightingView", "RenderView"):
+    view = CreateView(kind)
+    view.ViewSize = [320, 240]
+    view.OrientationAxesVisibility = 0
+    view.UseColorPaletteForBackground = 0
+    view.Background = [0.1, 0.1, 0.12]
+    view.UseLight = 1
+    display = Show(wavelet, view)
+    display.SetRepresentationType("Volume")
+    ColorBy(display, ("POINTS", "RTData"))
+    display.Shade = 1
+    view.CameraPosition = [30.0, -60.0, 40.0]
+    view.CameraFocalPoint = [0.0, 0.0, 0.0]
+    view.CameraViewUp = [0.0, 0.0, 1.0]
+    volume_views.append(view)
+a = t.save(volume_views[0], t.output("matches-stock-volume"))
+b = t.save(volume_views[1], t.output("matches-stock-volume-stock"))
+covered = int((numpy.abs(b.astype(int) - [26, 26, 31]).max(axis=2) > 2).sum())
+t.check(covered > 0.2 * a.shape[0] * a.shape[1],
+        "volume: the stock view shows it on %d of %d pixels" % (covered, a.shape[0] * a.shape[1]))
+d = t.difference(a, b)
+t.check(d["max"] <= 1,
+        "volume: clustered against stock: max difference %d step(s) (tolerance 1), "
+        "%d of %d pixels differ" % (d["max"], d["pixels_differing"], d["pixels"]))
 
 t.finish()

@@ -47,12 +47,18 @@ LIGHTS = (
 )
 
 
-def make_view(kind):
+def new_view(kind, size):
+    """A view of the given kind and size on the tests' dark background, without axes."""
     view = CreateView(kind)
-    view.ViewSize = [480, 360]
+    view.ViewSize = size
     view.OrientationAxesVisibility = 0
     view.UseColorPaletteForBackground = 0
     view.Background = [0.1, 0.1, 0.12]
+    return view
+
+
+def make_view(kind):
+    view = new_view(kind, [480, 360])
     view.UseFXAA = 1
     view.UseLight = 0
     body_display = Show(body, view)
@@ -133,11 +139,7 @@ for option in ("HiddenLineRemoval", "UseAmbientOcclusion"):
 wavelet = Wavelet()
 volume_views = []
 for kind in ("ClusteredLightingView", "RenderView"):
-    view = CreateView(kind)
-    view.ViewSize = [320, 240]
-    view.OrientationAxesVisibility = 0
-    view.UseColorPaletteForBackground = 0
-    view.Background = [0.1, 0.1, 0.12]
+    view = new_view(kind, [320, 240])
     view.UseLight = 1
     display = Show(wavelet, view)
     display.SetRepresentationType("Volume")

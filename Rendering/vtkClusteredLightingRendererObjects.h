@@ -20,8 +20,7 @@
 #include "vtkSmartPointer.h"
 #include "vtkWeakPointer.h"
 
-#include <iterator> // for std::next
-#include <map>      // for std::map
+#include <map> // for std::map
 
 template <typename T>
 class vtkClusteredLightingRendererObjects

@@ -6,6 +6,7 @@
 #include "vtkActor.h"
 #include "vtkActorCollection.h"
 #include "vtkProperty.h"
+#include "vtkRenderer.h"
 
 #include <array>
 #include <cstdio>
@@ -614,6 +615,28 @@ std::vector<Step> MakePlan(const PlanOptions& options)
         }
       };
       tenth->Teardown = [](Context& ctx) { ctx.MakeLights(4096, "uniform"); };
+      // The renderer's FXAA and SSAO, which the pass's own steps apply as the renderer does
+      // (docs/guide.md), beside stock VTK with 8 lights and the same option: what each costs
+      // through the pass. Under SSAO the pass draws no depth prepass.
+      for (const bool ssao : { false, true })
+      {
+        const auto set = [ssao](Context& ctx, bool on)
+        {
+          vtkRenderer* ren = ctx.GetRenderer();
+          ssao ? ren->SetUseSSAO(on) : ren->SetUseFXAA(on);
+        };
+        Step* option = knob("renderer", ssao ? "SSAO" : "FXAA", nullptr);
+        option->ChangesScene = ssao ? "SSAO" : "FXAA";
+        option->Setup = [set](Context& ctx) { set(ctx, true); };
+        option->Teardown = [set](Context& ctx) { set(ctx, false); };
+        Step stock = *option;
+        stock.Lights = 8;
+        stock.Method = "stock";
+        stock.Counts = false;
+        stock.Reference = false;
+        stock.ChangesScene.clear();
+        plan.push_back(stock);
+      }
       // White lights (VTK's default colour): the far field is one channel times the colour
       // (FarFieldSharedColor), side by side with the same lights kept in three channels.
       for (bool shared : { true, false })

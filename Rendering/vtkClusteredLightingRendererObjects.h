@@ -7,15 +7,15 @@
  * own; under a render pass they are the pass's to keep. One pass may serve several
  * renderers, in several windows (one GL context each), and these objects hold GL
  * resources sized to one viewport, so they are kept per renderer here as well: made on
- * first use, released with their window (Release), and released then dropped once their
- * renderer is deleted.
+ * first use, released with their window (Release) or with this object, and released then
+ * dropped once their renderer is deleted; always in their own window's context.
  *
  * T is a vtkObject with New(); the releaser frees its GL resources in a window.
  */
 #ifndef vtkClusteredLightingRendererObjects_h
 #define vtkClusteredLightingRendererObjects_h
 
-#include "vtkRenderWindow.h"
+#include "vtkOpenGLRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
 #include "vtkWeakPointer.h"
@@ -32,6 +32,13 @@ public:
     : ReleaseObject(release)
   {
   }
+
+  /// Releases every object's GL resources in its own window.
+  ~vtkClusteredLightingRendererObjects() { this->Release(nullptr); }
+
+  vtkClusteredLightingRendererObjects(const vtkClusteredLightingRendererObjects&) = delete;
+  vtkClusteredLightingRendererObjects& operator=(
+    const vtkClusteredLightingRendererObjects&) = delete;
 
   /// The object of `ren`, made on first use.
   T* Get(vtkRenderer* ren)
@@ -57,7 +64,7 @@ public:
       vtkWindow* own = e.second.Window;
       if (own && (!window || own == window))
       {
-        this->ReleaseObject(e.second.Object, own);
+        this->ReleaseIn(e.second.Object, own);
       }
     }
   }
@@ -83,9 +90,26 @@ private:
       }
       if (it->second.Window)
       {
-        this->ReleaseObject(it->second.Object, it->second.Window);
+        this->ReleaseIn(it->second.Object, it->second.Window);
       }
       it = this->Entries.erase(it);
+    }
+  }
+
+  /// Releases in the window's own context: VTK's quad helpers and vertex arrays delete
+  /// their names in whatever context is current, which may be another window's (with
+  /// names of its own).
+  void ReleaseIn(T* object, vtkWindow* window)
+  {
+    vtkOpenGLRenderWindow* w = vtkOpenGLRenderWindow::SafeDownCast(window);
+    if (w)
+    {
+      w->PushContext();
+    }
+    this->ReleaseObject(object, window);
+    if (w)
+    {
+      w->PopContext();
     }
   }
 

@@ -18,6 +18,9 @@
 //  4. One pass in two windows, each with SSAO: each window keeps its own image frame
 //     after frame, and after the pass's resources are released.
 //  5. UseShadows is not applied: one warning that says why, again when asked for again.
+//  6. The GL objects of the SSAO pass and FXAA filter the pass keeps for a renderer go
+//     when the pass releases their window and when the pass is deleted, in their own
+//     context while another window's is current.
 //  (Under SSAO or hidden-line removal the pass draws no depth prepass: the prepass hid
 //  the props behind the wireframes' back lines, and under SSAO a wireframe pixel lost
 //  its clustered light.)
@@ -32,6 +35,7 @@
 #include "vtkSphereSource.h"
 #include "vtkStringOutputWindow.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -311,6 +315,68 @@ int TestClusteredLightingRendererOptions(int, char*[])
   ren->UseShadowsOff();
   Frame(rw);
   Check(messages->Errors.empty(), "no error");
+
+  // 6. The SSAO pass and FXAA filter the pass keeps for a renderer hold GL objects; they
+  // go in their own window's context, when the pass releases that window and when the
+  // pass is deleted, whatever context is current then (another window's here: VTK deletes
+  // vertex arrays in the current context). Counted against the GL objects after a first
+  // round and a release, so that what the window itself makes on first use is there
+  // already; vertex arrays by number only, as VTK's mappers change theirs with every
+  // switch between the prepass's program and the shading program.
+  for (const bool deleteThePass : { false, true })
+  {
+    vtkNew<vtkRenderWindow> rw3;
+    vtkNew<vtkRenderer> ren3;
+    ClusteredLightingTest::SetUpTestScene(rw3, ren3, 120, 90, 8);
+    AddClusteredLights(ren3);
+    vtkSmartPointer<vtkClusteredLightingPass> pass3 =
+      vtkSmartPointer<vtkClusteredLightingPass>::New();
+    ren3->SetPass(pass3);
+    ren3->UseFXAAOn();
+    ren3->UseSSAOOn();
+    Frame(rw3, 2);
+    pass3->ReleaseGraphicsResources(rw3);
+    const ClusteredLightingTest::GLNames before = ClusteredLightingTest::TakeGLNameCensus(rw3);
+    Frame(rw3, 2);
+    const std::size_t made =
+      ClusteredLightingTest::Minus(ClusteredLightingTest::TakeGLNameCensus(rw3), before).size();
+    ren3->UseFXAAOff();
+    ren3->UseSSAOOff();
+    if (deleteThePass)
+    {
+      // VTK's mappers keep the render passes of their last draw: one stock frame first.
+      ren3->SetPass(nullptr);
+      Frame(rw3);
+      rw->MakeCurrent(); // another window's context
+      pass3 = nullptr;
+    }
+    else
+    {
+      rw->MakeCurrent();
+      pass3->ReleaseGraphicsResources(rw3);
+    }
+    const ClusteredLightingTest::GLNames after = ClusteredLightingTest::TakeGLNameCensus(rw3);
+    const auto arrays = [](const ClusteredLightingTest::GLNames& names)
+    {
+      return std::count_if(names.begin(), names.end(),
+        [](const std::pair<unsigned int, unsigned int>& n) { return n.first == GL_VERTEX_ARRAY; });
+    };
+    ClusteredLightingTest::GLNames left;
+    for (const auto& n : ClusteredLightingTest::Minus(after, before))
+    {
+      if (n.first != GL_VERTEX_ARRAY)
+      {
+        left.insert(n);
+      }
+    }
+    Check(made > 10 && left.empty() && arrays(after) <= arrays(before),
+      std::string(deleteThePass ? "the pass deleted" : "the pass's window released") +
+        " with another context current: the " + std::to_string(made) +
+        " GL objects of its SSAO pass, FXAA filter and assignment go (" +
+        std::to_string(left.size()) + " left: " + ClusteredLightingTest::Describe(left) +
+        "; vertex arrays " + std::to_string(arrays(after)) + " after, " +
+        std::to_string(arrays(before)) + " before)");
+  }
 
   wrapper->ReleaseGraphicsResources(rw);
   pass->ReleaseGraphicsResources(nullptr);

@@ -34,6 +34,33 @@ std::string vtkClusteredLightingLightCollection::NameOf(std::size_t i) const
 }
 
 //------------------------------------------------------------------------------
+std::vector<vtkSmartPointer<vtkLight>> vtkClusteredLightingLightCollector::GetRendererLights(
+  vtkRenderer* renderer)
+{
+  std::vector<vtkSmartPointer<vtkLight>> out;
+  vtkLightCollection* lights = renderer->GetLights();
+  vtkCollectionSimpleIterator it;
+  vtkLight* light;
+  for (lights->InitTraversal(it); (light = lights->GetNextLight(it));)
+  {
+    out.emplace_back(light);
+  }
+  return out;
+}
+
+//------------------------------------------------------------------------------
+void vtkClusteredLightingLightCollector::SetRendererLights(
+  vtkRenderer* renderer, const std::vector<vtkSmartPointer<vtkLight>>& lights)
+{
+  vtkLightCollection* collection = renderer->GetLights();
+  collection->RemoveAllItems();
+  for (const auto& light : lights)
+  {
+    collection->AddItem(light);
+  }
+}
+
+//------------------------------------------------------------------------------
 void vtkClusteredLightingLightCollector::CollectRendererLights(
   vtkRenderer* renderer, bool cluster, vtkClusteredLightingLightCollection& c)
 {

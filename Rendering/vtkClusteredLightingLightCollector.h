@@ -97,6 +97,14 @@ public:
   static void CollectLightSets(const std::vector<vtkSmartPointer<vtkClusteredLightSet>>& sets,
     vtkClusteredLightingLightCollection& c);
 
+  /// The renderer's light collection, in order.
+  static std::vector<vtkSmartPointer<vtkLight>> GetRendererLights(vtkRenderer* renderer);
+
+  /// Makes the renderer's light collection hold exactly `lights`, in order (the pass hides
+  /// its clustered lights from VTK's lighting code this way, and gives them back).
+  static void SetRendererLights(
+    vtkRenderer* renderer, const std::vector<vtkSmartPointer<vtkLight>>& lights);
+
   /// Fills c.Sources from everything collected, in collection order.
   static void Read(vtkClusteredLightingLightCollection& c);
 

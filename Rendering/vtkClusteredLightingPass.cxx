@@ -265,12 +265,12 @@ struct vtkClusteredLightingPass::vtkInternals
   vtkNew<vtkLight> ComplexityLight;  ///< keeps VTK's lighting complexity (switched off)
   vtkNew<vtkClusteredLightingDepthPrepass> Prepass;
   std::set<std::size_t> BuiltSources; ///< hashes of the shader sources built (NumberOfShaderBuilds)
-  vtkClusteredLighting::DepthImage Depths; ///< the prepass's readback, during Render()
-  std::string ReportedDepthProblem;        ///< why depth-aware clusters are off, said once
-  std::string ReportedRendererOptions;     ///< renderer options the delegate ignores, said once
-  bool ReportedLoopLimit = false;          ///< the llvmpipe loop limit was reported
-  bool ReportedUncountedPixels = false;    ///< a debug view's counts could not be read
-  bool ReportedPbrFarField = false;        ///< PBR actors sum their far light exactly
+  vtkClusteredLighting::DepthImage Depths;         ///< the prepass's readback, during Render()
+  std::string ReportedDepthProblem;                ///< why depth-aware clusters are off, said once
+  bool ReportedShadows = false;                    ///< UseShadows, which the pass does not apply
+  bool ReportedLoopLimit = false;                  ///< the llvmpipe loop limit was reported
+  bool ReportedUncountedPixels = false;            ///< a debug view's counts could not be read
+  bool ReportedPbrFarField = false;                ///< PBR actors sum their far light exactly
   bool ReportedUnlitVolumes[2] = { false, false }; ///< by light sets, by hidden vtkLights
 
   vtkClusteredLightingAssigner* GetAssigner(vtkRenderer* ren)
@@ -553,13 +553,9 @@ void vtkClusteredLightingPass::ReportIgnoredRendererOptions(vtkRenderer* ren)
 {
   const bool shadows =
     this->DelegatePass == this->Internals->Steps.GetPointer() && ren->GetUseShadows() != 0;
-  const std::string ignored = shadows ? "UseShadows" : "";
-  if (ignored == this->Internals->ReportedRendererOptions)
-  {
-    return;
-  }
-  this->Internals->ReportedRendererOptions = ignored;
-  if (shadows)
+  const bool report = shadows && !this->Internals->ReportedShadows;
+  this->Internals->ReportedShadows = shadows;
+  if (report)
   {
     vtkWarningMacro("The renderer asks for UseShadows, which this pass does not apply: VTK's "
                     "shadow maps (one depth render per light) are made for the lights VTK "
@@ -1053,12 +1049,7 @@ void vtkClusteredLightingPass::HideClusteredLights(
 void vtkClusteredLightingPass::RestoreRendererLights(
   vtkRenderer* ren, const vtkClusteredLightingLightCollection& lights)
 {
-  vtkLightCollection* rendererLights = ren->GetLights();
-  rendererLights->RemoveAllItems();
-  for (const auto& l : lights.RendererLights)
-  {
-    rendererLights->AddItem(l);
-  }
+  vtkClusteredLightingLightCollector::SetRendererLights(ren, lights.RendererLights);
 }
 
 //------------------------------------------------------------------------------

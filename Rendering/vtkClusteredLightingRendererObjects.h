@@ -96,9 +96,9 @@ private:
     }
   }
 
-  /// Releases in the window's own context: VTK's quad helpers and vertex arrays delete
-  /// their names in whatever context is current, which may be another window's (with
-  /// names of its own).
+  /// Releases in the window's own context: some of VTK's objects delete their GL names in
+  /// whatever context is current (vtkOpenGLFXAAFilter's timer queries, for one), which
+  /// may be another window's, with names of its own.
   void ReleaseIn(T* object, vtkWindow* window)
   {
     vtkOpenGLRenderWindow* w = vtkOpenGLRenderWindow::SafeDownCast(window);

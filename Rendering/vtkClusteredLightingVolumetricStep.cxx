@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkClusteredLightingVolumetricStep.h"
 
+#include "vtkClusteredLightingLightCollector.h"
 #include "vtkClusteredLightingRendererObjects.h"
 #include "vtkLight.h"
-#include "vtkLightCollection.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLFXAAFilter.h"
 #include "vtkOpenGLRenderer.h"
@@ -43,32 +43,19 @@ void vtkClusteredLightingVolumetricStep::Render(const vtkRenderState* s)
     filter->Execute(ren);
   }
   // Every light of the renderer, the clustered ones too, while the volumes render.
-  vtkLightCollection* lights = s->GetRenderer()->GetLights();
-  std::vector<vtkSmartPointer<vtkLight>> hidden;
+  vtkRenderer* renderer = s->GetRenderer();
   const bool swap = this->VolumeLights && HasVolumes(s);
+  std::vector<vtkSmartPointer<vtkLight>> shading;
   if (swap)
   {
-    vtkCollectionSimpleIterator it;
-    lights->InitTraversal(it);
-    while (vtkLight* light = lights->GetNextLight(it))
-    {
-      hidden.emplace_back(light);
-    }
-    lights->RemoveAllItems();
-    for (const auto& light : *this->VolumeLights)
-    {
-      lights->AddItem(light);
-    }
+    shading = vtkClusteredLightingLightCollector::GetRendererLights(renderer);
+    vtkClusteredLightingLightCollector::SetRendererLights(renderer, *this->VolumeLights);
   }
   this->Volumes->Render(s);
   this->NumberOfRenderedProps = this->Volumes->GetNumberOfRenderedProps();
   if (swap)
   {
-    lights->RemoveAllItems();
-    for (const auto& light : hidden)
-    {
-      lights->AddItem(light);
-    }
+    vtkClusteredLightingLightCollector::SetRendererLights(renderer, shading);
   }
 }
 

@@ -15,6 +15,7 @@
 #include "vtkCamera.h"
 #include "vtkCommand.h"
 #include "vtkNew.h"
+#include "vtkOutputWindow.h"
 #include "vtkPlaneSource.h"
 #include "vtkPointData.h"
 #include "vtkPolyDataMapper.h"
@@ -28,6 +29,7 @@
 #include "vtkShaderProgram.h"
 #include "vtkSmartPointer.h"
 #include "vtkSphereSource.h"
+#include "vtkStringOutputWindow.h"
 
 #include <algorithm>
 #include <cctype>
@@ -64,6 +66,35 @@ public:
   }
   std::vector<std::string> Errors;
   std::vector<std::string> Warnings;
+};
+
+/// Everything VTK prints to its output window while this lives (errors of shaders that fail
+/// to build, for one): Finish() puts the previous output window back and returns the text.
+class OutputCapture
+{
+public:
+  OutputCapture()
+    : Previous(vtkOutputWindow::GetInstance())
+  {
+    vtkOutputWindow::SetInstance(this->Output);
+  }
+  ~OutputCapture() { this->Finish(); }
+  OutputCapture(const OutputCapture&) = delete;
+  OutputCapture& operator=(const OutputCapture&) = delete;
+
+  std::string Finish()
+  {
+    if (this->Previous)
+    {
+      vtkOutputWindow::SetInstance(this->Previous);
+      this->Previous = nullptr;
+    }
+    return this->Output->GetOutput();
+  }
+
+private:
+  vtkNew<vtkStringOutputWindow> Output;
+  vtkSmartPointer<vtkOutputWindow> Previous;
 };
 
 /// Records the fragment shader source of every program a mapper draws with

@@ -31,9 +31,7 @@
 #include "vtkClusteredLightingPass.h"
 #include "vtkLight.h"
 #include "vtkOpenGLFXAAPass.h"
-#include "vtkOutputWindow.h"
 #include "vtkSphereSource.h"
-#include "vtkStringOutputWindow.h"
 
 #include <algorithm>
 #include <cmath>
@@ -153,9 +151,7 @@ double CheckOcclusionFactor(const std::vector<float>& stockPlain,
 
 int TestClusteredLightingRendererOptions(int, char*[])
 {
-  vtkNew<vtkStringOutputWindow> output;
-  vtkSmartPointer<vtkOutputWindow> previousOutput = vtkOutputWindow::GetInstance();
-  vtkOutputWindow::SetInstance(output);
+  ClusteredLightingTest::OutputCapture output;
 
   vtkNew<vtkRenderWindow> rw;
   vtkNew<vtkRenderer> ren;
@@ -380,7 +376,7 @@ int TestClusteredLightingRendererOptions(int, char*[])
 
   wrapper->ReleaseGraphicsResources(rw);
   pass->ReleaseGraphicsResources(nullptr);
-  vtkOutputWindow::SetInstance(previousOutput);
-  Check(output->GetOutput().empty(), "nothing reached VTK's output window: " + output->GetOutput());
+  const std::string printed = output.Finish();
+  Check(printed.empty(), "nothing reached VTK's output window: " + printed);
   return ClusteredLightingTest::CheckStatus();
 }

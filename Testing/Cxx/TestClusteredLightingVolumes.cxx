@@ -26,13 +26,11 @@
 #include "vtkColorTransferFunction.h"
 #include "vtkGPUVolumeRayCastMapper.h"
 #include "vtkLight.h"
-#include "vtkOutputWindow.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkRTAnalyticSource.h"
 #include "vtkRenderStepsPass.h"
 #include "vtkSmartVolumeMapper.h"
 #include "vtkSphereSource.h"
-#include "vtkStringOutputWindow.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
 
@@ -179,9 +177,7 @@ int Covered(const std::vector<float>& image, int x0, int x1)
 
 int TestClusteredLightingVolumes(int, char*[])
 {
-  vtkNew<vtkStringOutputWindow> output;
-  vtkSmartPointer<vtkOutputWindow> previousOutput = vtkOutputWindow::GetInstance();
-  vtkOutputWindow::SetInstance(output);
+  ClusteredLightingTest::OutputCapture output;
 
   vtkNew<vtkClusteredLightingPass> pass;
   vtkNew<ClusteredLightingTest::MessageCollector> messages;
@@ -262,7 +258,7 @@ int TestClusteredLightingVolumes(int, char*[])
     std::printf("the warning: %s\n", messages->Warnings[0].c_str());
   }
 
-  vtkOutputWindow::SetInstance(previousOutput);
-  Check(output->GetOutput().empty(), "nothing reached VTK's output window: " + output->GetOutput());
+  const std::string printed = output.Finish();
+  Check(printed.empty(), "nothing reached VTK's output window: " + printed);
   return ClusteredLightingTest::CheckStatus();
 }

@@ -38,6 +38,7 @@
 #include <map>       // for std::map
 #include <set>       // for std::set
 #include <sstream>   // for std::ostringstream
+#include <string>    // for std::to_string
 
 using namespace vtkClusteredLighting;
 
@@ -780,7 +781,8 @@ vtkClusteredLightingAssignerInputs vtkClusteredLightingPass::MakeAssignerInputs(
 
 //------------------------------------------------------------------------------
 // Mesa's llvmpipe ends a fragment shader after 65,535 loop iterations in all, silently.
-// A cluster's walk takes one light per iteration, the loops over every light 16; where a
+// A cluster's walk takes one light per iteration, brute force 16, the exact far sums one
+// up to 16,384 lights and 16 above (ComputeFarPartsPerIteration); where a
 // fragment could need more iterations (a cluster that lists about 60,000 lights, brute
 // force or the exact far sums past about a million), say so once while it lasts
 // (docs/guide.md, "Limits").
@@ -796,7 +798,7 @@ void vtkClusteredLightingPass::ReportLoopLimit(const vtkClusteredLightingAssignm
   else if (r.Enabled && r.Clustered)
   {
     iterations = ComputeWalkIterations(r.MostLightsInACluster, r.NumberOfLights, r.MasterTexels) +
-      (r.FarField ? ComputeEveryLightIterations(r.NumberOfLights) : 0);
+      (r.FarField ? ComputeFarSumIterations(r.NumberOfLights) : 0);
   }
   if (iterations <= ShaderLoopLimit)
   {
@@ -818,7 +820,9 @@ void vtkClusteredLightingPass::ReportLoopLimit(const vtkClusteredLightingAssignm
     else
     {
       what << "a cluster lists up to " << r.MostLightsInACluster << " lights, one per iteration"
-           << (r.FarField ? ", and the exact far sums take 16 per iteration" : "");
+           << (r.FarField ? ", and the exact far sums take " +
+                    std::to_string(ComputeFarPartsPerIteration(r.NumberOfLights)) + " per iteration"
+                          : "");
     }
     vtkWarningMacro(<< r.NumberOfLights
                     << " lights: llvmpipe ends a fragment shader after 65,535 loop iterations, "
@@ -916,6 +920,13 @@ void vtkClusteredLightingPass::UpdateShaderVariant(const vtkClusteredLightingAss
   variant.Explicit = r.NumberOfExplicitRadius > 0;
   variant.FarField = r.FarField;
   variant.FarFieldOneChannel = r.FarField && r.FarFieldOneChannel;
+  // The exact far sums' code is compiled only where a fragment may take them (FarFieldTolerance,
+  // FarFieldExactSumLimit; the same choice as the clFarFieldTolerance uniform).
+  const bool sums = r.FarField && this->FarFieldTolerance < 1.0;
+  variant.PhongExactFarSums = sums && r.NumberOfLights <= this->FarFieldExactSumLimit;
+  variant.PbrExactFarSums = sums;
+  variant.FarSumBlocks =
+    sums && vtkClusteredLighting::ComputeFarPartsPerIteration(r.NumberOfLights) > 1;
   variant.LinearSlices = r.Linear;
   variant.MasterTexels = r.MasterTexels;
   variant.DebugView = ToVariantDebug(this->DebugView);

@@ -40,7 +40,9 @@ bool vtkClusteredLightingShaderVariant::SameGlobalPart(
 {
   return this->Enabled == o.Enabled && this->Clustered == o.Clustered && this->Spot == o.Spot &&
     this->Window == o.Window && this->Explicit == o.Explicit && this->FarField == o.FarField &&
-    this->FarFieldOneChannel == o.FarFieldOneChannel && this->LinearSlices == o.LinearSlices &&
+    this->FarFieldOneChannel == o.FarFieldOneChannel &&
+    this->PhongExactFarSums == o.PhongExactFarSums && this->PbrExactFarSums == o.PbrExactFarSums &&
+    this->FarSumBlocks == o.FarSumBlocks && this->LinearSlices == o.LinearSlices &&
     this->MasterTexels == o.MasterTexels && this->DebugView == o.DebugView;
 }
 
@@ -62,6 +64,14 @@ std::set<std::string> vtkClusteredLightingShaderVariant::GetFlags() const
       if (this->FarFieldOneChannel)
       {
         f.insert("FAR_SHARED_COLOR");
+      }
+      if (this->PBR ? this->PbrExactFarSums : this->PhongExactFarSums)
+      {
+        f.insert("FAR_EXACT_SUMS");
+        if (this->FarSumBlocks)
+        {
+          f.insert("FAR_SUM_BLOCKS");
+        }
       }
     }
   }

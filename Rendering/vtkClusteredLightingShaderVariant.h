@@ -15,7 +15,10 @@
  * windows end there), VIEW1 (the second view texel is read: spot axis, explicit radius),
  * FAR_FIELD (clustered only: split lights' near parts are windowed and the far field is
  * added), FAR_SHARED_COLOR (with FAR_FIELD: the far-field lights share a colour, so the
- * far field is one channel in 3 textures times clFarFieldColor), PHONG or PBR, SPECULAR, SPOT,
+ * far field is one channel in 3 textures times clFarFieldColor), FAR_EXACT_SUMS (with
+ * FAR_FIELD: fragments the moments leave uncertain sum the far parts exactly; without it
+ * the code is not there at all, which on llvmpipe is cheaper than a test that fails),
+ * FAR_SUM_BLOCKS (those sums take 16 lights per loop iteration), PHONG or PBR, SPECULAR, SPOT,
  * WINDOW, LINEAR_SLICES, SATURATION (clustered Phong whose colour nothing rescales after the
  * lighting: a fragment stops at saturation where the uniform clClampsAtOne says the target clamps),
  * COUNT, CLUSTER_INDEX, HEAT_MAP, EVALUATED_COUNT, REACHED_COUNT, NON_FINITE, NORMAL.
@@ -41,6 +44,13 @@ public:
   bool Explicit = false; ///< some light has an explicit radius (its model's range)
   bool FarField = false; ///< lights have far parts: window their near parts, add the far field
   bool FarFieldOneChannel = false; ///< the far-field lights share a colour: 3 textures, not 7
+  /// the far parts may be summed exactly (FarFieldTolerance) for Phong actors (up to
+  /// FarFieldExactSumLimit lights) and for PBR actors: FAR_EXACT_SUMS
+  bool PhongExactFarSums = false;
+  bool PbrExactFarSums = false;
+  /// the exact far sums take 16 lights per loop iteration (ComputeFarPartsPerIteration):
+  /// FAR_SUM_BLOCKS
+  bool FarSumBlocks = false;
   bool LinearSlices = false;
   int MasterTexels = 1;
 

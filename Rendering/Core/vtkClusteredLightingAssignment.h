@@ -288,8 +288,13 @@ inline int ComputeMostLightsInACluster(
  * iterations of a cluster's walk (vtkClusteredLightingShadingImpl.glsl) that lists `listed`
  * of `lights` lights: one per master texel, one per non-empty batch of 32 (at most
  * min(listed, batches)) and one per light; plus one per loop entered, in case the driver
- * counts the exit too. ComputeEveryLightIterations is the loop over every light (brute
- * force, the exact far sums), 16 lights per iteration.
+ * counts the exit too. ComputeEveryLightIterations is brute force's loop over every
+ * light, 16 lights per iteration. ComputeFarSumIterations is the exact far sums' loop,
+ * which takes ComputeFarPartsPerIteration lights per iteration: one up to
+ * FarSumSingleLightLimit lights, where a fragment whose cluster lists every light and
+ * sums every far part stays within the limit, and 16 above. One is cheaper on llvmpipe,
+ * which runs a first iteration of the loop for every group of fragments, masked, even
+ * where no fragment needs the sums (vtkClusteredLightingShadingDec.glsl).
  */
 constexpr long long ShaderLoopLimit = 65535;
 
@@ -304,6 +309,19 @@ inline long long ComputeWalkIterations(long long listed, long long lights, int m
 inline long long ComputeEveryLightIterations(long long lights)
 {
   return (std::max(lights, 0LL) + 15) / 16;
+}
+
+constexpr long long FarSumSingleLightLimit = 16384;
+
+inline int ComputeFarPartsPerIteration(long long lights)
+{
+  return lights <= FarSumSingleLightLimit ? 1 : 16;
+}
+
+inline long long ComputeFarSumIterations(long long lights)
+{
+  const long long perIteration = ComputeFarPartsPerIteration(lights);
+  return (std::max(lights, 0LL) + perIteration - 1) / perIteration;
 }
 
 /// ComputeViewDataRange over every light, in one thread.

@@ -290,11 +290,15 @@ bool clShadeLight(int i, vec3 P, vec3 N, vec3 V, float NdV, vec3 albedo, float r
 
 // The loops over every light. Mesa's llvmpipe ends a fragment shader after 65,535 loop
 // iterations in all (one counter shared by every loop of the shader), silently, so brute
-// force and the exact far sums take 16 lights per iteration, one call each. A cluster's
-// walk takes one light per iteration: its lists are short, and several per iteration made
-// the bunny with 4,096 lights 40% slower on llvmpipe (each SIMD group of fragments runs
-// the rounded-up count); the pass reports a list too long for the limit (docs/guide.md,
-// "Limits").
+// force takes 16 lights per iteration, one call each, and so do the exact far sums past
+// 16,384 lights (FAR_SUM_BLOCKS; ComputeFarPartsPerIteration). Below, the sums take one:
+// llvmpipe never skips the body of an if (its lanes are masked) and tests a loop's exit
+// at the end of an iteration, so every group of fragments runs a first iteration of the
+// sums even where no fragment needs them, and 16 far parts there cost the bunny with
+// 4,096 lights a tenth of its frame. A cluster's walk takes one light per iteration: its
+// lists are short, and several per iteration made the bunny with 4,096 lights 40% slower
+// on llvmpipe (each SIMD group of fragments runs the rounded-up count); the pass reports
+// a list too long for the limit (docs/guide.md, "Limits").
 //CL_IF(BRUTE_FORCE)
 //CL_IF(PHONG)
 // Brute force's light i, if there is one; counts (evaluated, reached).

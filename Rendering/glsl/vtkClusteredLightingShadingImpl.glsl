@@ -83,7 +83,7 @@
   clBase += clDiffuseLow * diffuseColor + clSpecularLow * specularColor;
 //CL_ENDIF
 //CL_ENDIF
-//CL_IF(FAR_FIELD)
+//CL_IF(FAR_EXACT_SUMS)
   int clFirst = -1; // the first near light walked: where the exact far sum starts
 //CL_ENDIF
 //CL_IF(BRUTE_FORCE)
@@ -161,7 +161,7 @@
         ++clEvaluated;
         clReached += clHit ? 1 : 0;
 //CL_ENDIF
-//CL_IF(FAR_FIELD)
+//CL_IF(FAR_EXACT_SUMS)
         clFirst = clFirst < 0 ? clLight : clFirst;
 //CL_ENDIF
 //CL_IF(SATURATION)
@@ -216,6 +216,7 @@
     clLowest = vec3(0.0);
     clHighest = vec3(2.0);
 //CL_ENDIF
+//CL_IF(FAR_EXACT_SUMS)
     // Where the moments cannot tell whether the fragment saturates (its lowest value is
     // below 1, its highest above) and leave it uncertain by more than the tolerance, the
     // far parts are summed exactly, light by light: bright far fields need it on a few
@@ -231,15 +232,20 @@
     {
       // Lights are stored in Morton order: from a near light of the fragment on, the
       // nearest (brightest) far parts come first, and a saturating sum stops sooner.
-      // 16 lights per iteration (see clAddFarPart).
+      // One light per iteration, or 16 with many lights (FAR_SUM_BLOCKS, see clAddFarPart).
       int clStart = max(clFirst, 0);
       int clFarCount = 0;
       bool clStop = false;
 //CL_IF(PBR)
       clFarLo = vec3(0.0);
+//CL_IF(FAR_SUM_BLOCKS)
       for (int clK = 0; clK < clLightCount; clK += 16)
+//CL_ELSE
+      for (int clK = 0; clK < clLightCount; ++clK)
+//CL_ENDIF
       {
         clAddFarPart(clK, clStart, clP, clN, V, NdV, albedo, roughness, metallic, F0, F90, clFarLo, clFarCount);
+//CL_IF(FAR_SUM_BLOCKS)
         clAddFarPart(clK + 1, clStart, clP, clN, V, NdV, albedo, roughness, metallic, F0, F90, clFarLo, clFarCount);
         clAddFarPart(clK + 2, clStart, clP, clN, V, NdV, albedo, roughness, metallic, F0, F90, clFarLo, clFarCount);
         clAddFarPart(clK + 3, clStart, clP, clN, V, NdV, albedo, roughness, metallic, F0, F90, clFarLo, clFarCount);
@@ -255,15 +261,21 @@
         clAddFarPart(clK + 13, clStart, clP, clN, V, NdV, albedo, roughness, metallic, F0, F90, clFarLo, clFarCount);
         clAddFarPart(clK + 14, clStart, clP, clN, V, NdV, albedo, roughness, metallic, F0, F90, clFarLo, clFarCount);
         clAddFarPart(clK + 15, clStart, clP, clN, V, NdV, albedo, roughness, metallic, F0, F90, clFarLo, clFarCount);
+//CL_ENDIF
       }
 //CL_ENDIF
 //CL_IF(PHONG)
       float clPower = specularPower;
       clFarDiffuse = vec3(0.0);
       clFarSpecular = vec3(0.0);
+//CL_IF(FAR_SUM_BLOCKS)
       for (int clK = 0; clK < clLightCount && !clStop; clK += 16)
+//CL_ELSE
+      for (int clK = 0; clK < clLightCount && !clStop; ++clK)
+//CL_ENDIF
       {
         clAddFarPart(clK, clStart, clP, clN, clV, clPower, clFarDiffuse, clFarSpecular, clFarCount);
+//CL_IF(FAR_SUM_BLOCKS)
         clAddFarPart(clK + 1, clStart, clP, clN, clV, clPower, clFarDiffuse, clFarSpecular, clFarCount);
         clAddFarPart(clK + 2, clStart, clP, clN, clV, clPower, clFarDiffuse, clFarSpecular, clFarCount);
         clAddFarPart(clK + 3, clStart, clP, clN, clV, clPower, clFarDiffuse, clFarSpecular, clFarCount);
@@ -279,6 +291,7 @@
         clAddFarPart(clK + 13, clStart, clP, clN, clV, clPower, clFarDiffuse, clFarSpecular, clFarCount);
         clAddFarPart(clK + 14, clStart, clP, clN, clV, clPower, clFarDiffuse, clFarSpecular, clFarCount);
         clAddFarPart(clK + 15, clStart, clP, clN, clV, clPower, clFarDiffuse, clFarSpecular, clFarCount);
+//CL_ENDIF
 //CL_IF(SATURATION)
         // Every far part adds light too, so the near sum plus the far parts so far is a
         // lower bound: once it saturates every channel, the rest cannot change the pixel.
@@ -292,6 +305,7 @@
       clEvaluated += clFarCount;
 //CL_ENDIF
     }
+//CL_ENDIF
 //CL_IF(PHONG)
     clDiffuse += clFarDiffuse;
     clSpecular += clFarSpecular;

@@ -15,7 +15,9 @@
 //    fields (at most 5 steps, RMSE under one step): the derived bound alone, up to 458
 //    steps at intensity 1, could not catch a regression;
 //  - with more lights than FarFieldExactSumLimit the exact sums are off (fewer lights
-//    evaluated per pixel) and every pixel is still within its derived bound.
+//    evaluated per pixel) and every pixel is still within its derived bound;
+//  - with more lights than FarSumSingleLightLimit (16 far parts per loop iteration
+//    instead of one) the exact sums still run and keep the image within 5 steps.
 #include "ClusteredLightingTestUtilities.h"
 
 #include "vtkActorCollection.h"
@@ -129,6 +131,35 @@ int TestClusteredLightingSaturation(int, char*[])
         "above the exact sum limit: within the derived bound of brute force");
       pass->SetFarFieldExactSumLimit(limit);
     }
+  }
+
+  // Past FarSumSingleLightLimit (16,384) lights the exact sums take 16 lights per loop
+  // iteration (FAR_SUM_BLOCKS), below it one. 20,000 such lights, each 1/25 of the 800's
+  // intensity, at the scale where the sums run on many fragments, the sums allowed
+  // (FarFieldExactSumLimit): the same checks as above, and the sums must run.
+  {
+    const int many = 20000;
+    const int limit = pass->GetFarFieldExactSumLimit();
+    ClusteredLightingTest::MakeUserLights(lights, many, 1.0, 5);
+    lights->SetIntensityScale(0.125 * n / many);
+    pass->SetFarFieldExactSumLimit(many);
+    rw->Render();
+    ClusteredLightingTest::BruteForceCheck comparison;
+    Check(ClusteredLightingTest::CheckClusteredFrame(
+            pass, rw, ren, 1.4, "20,000 lights, exact sums", 0, &comparison) == 0,
+      "20,000 lights, 16 far parts per iteration: within the derived bound of brute force");
+    Check(255.0 * comparison.Image.MaxAbsError <= 5.0 + 1e-3 && 255.0 * comparison.Image.RMSE < 1.0,
+      "20,000 lights, 16 far parts per iteration: at most 5 steps from brute force, RMSE under "
+      "one step");
+    const double with = MeanEvaluated(pass, rw);
+    pass->SetFarFieldExactSumLimit(many - 1);
+    const double without = MeanEvaluated(pass, rw);
+    std::printf("20,000 lights: lights evaluated per pixel %.1f with the exact sums, %.1f "
+                "without\n",
+      with, without);
+    Check(with > 2.0 * without + 1.0, "20,000 lights: the exact sums run");
+    pass->SetFarFieldExactSumLimit(limit);
+    ClusteredLightingTest::MakeUserLights(lights, n, 1.0, 5);
   }
 
   // VTK's default specular power is 1. Below power 2 a Phong lobe can exceed R^T T R (the

@@ -196,3 +196,34 @@ TEST(ShaderLoopLimit, WalkIterationsBoundTheShadersLoops)
   EXPECT_LE(ComputeEveryLightIterations(16 * ShaderLoopLimit), ShaderLoopLimit);
   EXPECT_GT(ComputeEveryLightIterations(16 * ShaderLoopLimit + 1), ShaderLoopLimit);
 }
+
+// The exact far sums take one light per iteration where that cannot pass the limit, even
+// for a fragment whose cluster lists every light and that sums every far part, and 16
+// above, as far as brute force.
+TEST(ShaderLoopLimit, FarSumsTakeOneLightPerIterationWhileTheWalkAndSumsFit)
+{
+  using namespace vtkClusteredLighting;
+  EXPECT_EQ(ComputeFarPartsPerIteration(0), 1);
+  EXPECT_EQ(ComputeFarPartsPerIteration(FarSumSingleLightLimit), 1);
+  EXPECT_EQ(ComputeFarPartsPerIteration(FarSumSingleLightLimit + 1), 16);
+  EXPECT_EQ(ComputeFarSumIterations(4096), 4096);
+  EXPECT_EQ(
+    ComputeFarSumIterations(FarSumSingleLightLimit + 1), (FarSumSingleLightLimit + 16) / 16);
+  for (long long lights : { 1LL, 4096LL, FarSumSingleLightLimit, FarSumSingleLightLimit + 1,
+         60000LL, 16 * ShaderLoopLimit })
+  {
+    const long long batches = (lights + 31) / 32;
+    const int master = static_cast<int>((batches + 31) / 32);
+    if (lights <= FarSumSingleLightLimit + 1)
+    {
+      EXPECT_LE(ComputeWalkIterations(lights, lights, master) + ComputeFarSumIterations(lights),
+        ShaderLoopLimit)
+        << lights;
+    }
+    EXPECT_LE(ComputeFarSumIterations(lights), ShaderLoopLimit) << lights;
+  }
+  // One light per iteration up to twice the limit would not fit.
+  const long long twice = 2 * FarSumSingleLightLimit;
+  EXPECT_GT(ComputeWalkIterations(twice, twice, static_cast<int>((twice / 32 + 31) / 32)) + twice,
+    ShaderLoopLimit);
+}

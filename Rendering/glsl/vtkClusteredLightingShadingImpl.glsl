@@ -136,46 +136,61 @@
 //CL_ENDIF
 //CL_ENDIF
 //CL_IF(CLUSTERED)
+  // Four master texels at a time, then one loop over their set bits (batches) and one
+  // over each batch's lights, both do-whiles: llvmpipe tests a loop's exit at the end of
+  // an iteration, so a while loop ends with one masked iteration for every fragment group,
+  // and an empty master texel cost a list read and a masked light (docs/depth.md). A set
+  // master bit means a non-empty list texel, so each inner first iteration has a light.
   ivec3 clCluster = clComputeCluster(vertexVC);
-  for (int clM = 0; clM < clMasterTexels; ++clM)
+  int clG = 0;
+  do
   {
-    uint clMask = texelFetch(clMaster, clMasterTexel(clCluster, clM), 0).r;
-    while (clMask != 0u)
+    uvec4 clWords = uvec4(texelFetch(clMaster, clMasterTexel(clCluster, clG), 0).r,
+      clG + 1 < clMasterTexels ? texelFetch(clMaster, clMasterTexel(clCluster, clG + 1), 0).r : 0u,
+      clG + 2 < clMasterTexels ? texelFetch(clMaster, clMasterTexel(clCluster, clG + 2), 0).r : 0u,
+      clG + 3 < clMasterTexels ? texelFetch(clMaster, clMasterTexel(clCluster, clG + 3), 0).r : 0u);
+    if (any(notEqual(clWords, uvec4(0u))))
     {
-      int clB = 32 * clM + clFindLSB(clMask);
-      clMask &= clMask - 1u;
-      uint clBits = texelFetch(clList, clListTexel(clCluster, clB), 0).r;
-      while (clBits != 0u)
+      do
       {
-        int clLight = 32 * clB + clFindLSB(clBits);
-        clBits &= clBits - 1u;
+        int clW = clWords.x != 0u ? 0 : (clWords.y != 0u ? 1 : (clWords.z != 0u ? 2 : 3));
+        uint clWord = clWords[clW];
+        int clB = 32 * (clG + clW) + clFindLSB(clWord);
+        clWords[clW] = clWord & (clWord - 1u);
+        uint clBits = texelFetch(clList, clListTexel(clCluster, clB), 0).r;
+        do
+        {
+          int clLight = 32 * clB + clFindLSB(clBits);
+          clBits &= clBits - 1u;
 //CL_IF(PHONG)
-        bool clHit =
-          clShadeLight(clLight, clP, normalVCVSOutput, clV, specularPower, clDiffuse, clSpecular);
+          bool clHit =
+            clShadeLight(clLight, clP, normalVCVSOutput, clV, specularPower, clDiffuse, clSpecular);
 //CL_ENDIF
 //CL_IF(PBR)
-        bool clHit =
-          clShadeLight(clLight, clP, N, V, NdV, albedo, roughness, metallic, F0, F90, clLo);
+          bool clHit =
+            clShadeLight(clLight, clP, N, V, NdV, albedo, roughness, metallic, F0, F90, clLo);
 //CL_ENDIF
 //CL_IF(COUNT)
-        ++clEvaluated;
-        clReached += clHit ? 1 : 0;
+          ++clEvaluated;
+          clReached += clHit ? 1 : 0;
 //CL_ENDIF
 //CL_IF(FAR_EXACT_SUMS)
-        clFirst = clFirst < 0 ? clLight : clFirst;
+          clFirst = clFirst < 0 ? clLight : clFirst;
 //CL_ENDIF
 //CL_IF(SATURATION)
-        if (clClampsAtOne && all(greaterThanEqual(
-              clBase + clDiffuse * diffuseColor + clSpecular * specularColor, vec3(1.0))))
-        {
-          clM = clMasterTexels; // leave all three loops
-          clMask = 0u;
-          break;
-        }
+          if (clClampsAtOne && all(greaterThanEqual(
+                clBase + clDiffuse * diffuseColor + clSpecular * specularColor, vec3(1.0))))
+          {
+            clBits = 0u; // leave all three loops
+            clWords = uvec4(0u);
+            clG = clMasterTexels;
+          }
 //CL_ENDIF
-      }
+        } while (clBits != 0u);
+      } while (any(notEqual(clWords, uvec4(0u))));
     }
-  }
+    clG += 4;
+  } while (clG < clMasterTexels);
 //CL_ENDIF
 //CL_IF(FAR_FIELD)
   {

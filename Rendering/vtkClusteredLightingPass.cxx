@@ -1261,10 +1261,9 @@ bool vtkClusteredLightingPass::SetShaderParameters(
     }
     if (program->IsUniformUsed("clFarFieldTolerance"))
     {
-      // 1 turns the exact far sums off (FarFieldExactSumLimit).
-      const bool exact = IsPbr(prop) || r.NumberOfLights <= this->FarFieldExactSumLimit;
-      program->SetUniformf(
-        "clFarFieldTolerance", exact ? static_cast<float>(this->FarFieldTolerance) : 1.0f);
+      // Only programs with the exact far sums use it (FAR_EXACT_SUMS: the variant already
+      // left them out past FarFieldExactSumLimit, see UpdateShaderVariant).
+      program->SetUniformf("clFarFieldTolerance", static_cast<float>(this->FarFieldTolerance));
     }
   }
   if (program->IsUniformUsed("clLightCount"))

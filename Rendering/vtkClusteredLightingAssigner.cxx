@@ -196,6 +196,7 @@ void vtkClusteredLightingAssigner::ReleaseGraphicsResources(vtkWindow* win)
     w->PopContext();
   }
   this->SampleDepths.Release(w); // in its own context
+  this->SavedDepth.Release(w);
   this->LightDataUploaded = false;
   this->AssignmentValid = false;
 }
@@ -205,7 +206,7 @@ int vtkClusteredLightingAssigner::GetNumberOfGLObjects() const
 {
   return this->LightData.GetNumberOfGLObjects() + this->LightView.GetNumberOfGLObjects() +
     this->FarField.GetNumberOfGLObjects() + this->Backend->GetNumberOfGLObjects() +
-    this->SampleDepths.GetNumberOfGLObjects();
+    this->SampleDepths.GetNumberOfGLObjects() + this->SavedDepth.GetNumberOfGLObjects();
 }
 
 void vtkClusteredLightingAssigner::GetGLObjectNames(
@@ -216,6 +217,7 @@ void vtkClusteredLightingAssigner::GetGLObjectNames(
   this->FarField.GetGLObjectNames(names);
   this->Backend->GetGLObjectNames(names);
   this->SampleDepths.GetGLObjectNames(names);
+  this->SavedDepth.GetGLObjectNames(names);
 }
 
 //------------------------------------------------------------------------------

@@ -38,8 +38,10 @@
  *   clLightView  texture buffer, RGBA32F, 2 texels per light (changes with the view)
  *   + whatever the back end owns (raster back end: quads, list, master, FBO, VAO)
  *   + in a multisampled framebuffer with depth-aware clusters, the depth prepass's
- *     recording targets (vtkClusteredLightingSampleDepths, GetSampleDepths()), which
- *     the assigner owns for the renderer so that they share its lifetime
+ *     recording targets (vtkClusteredLightingSampleDepths, GetSampleDepths()), and
+ *     with ReuseDepthPrepass the copy of its last depths (vtkClusteredLightingSavedDepth,
+ *     GetSavedDepth()), which the assigner owns for the renderer so that they share its
+ *     lifetime
  *
  * For tests (vtkClusteredLightingInspector, Testing/Cxx), GetSnapshot() copies what the
  * last assignment used (grid, matrices, layout, prepared lights) when asked; nothing is
@@ -59,6 +61,7 @@
 #include "vtkClusteredLightingLights.h"           // for PreparedLights
 #include "vtkClusteredLightingMessages.h"         // for ProblemGroup
 #include "vtkClusteredLightingSampleDepths.h"     // for vtkClusteredLightingSampleDepths
+#include "vtkClusteredLightingSavedDepth.h"       // for vtkClusteredLightingSavedDepth
 #include "vtkOpenGLRenderWindow.h"                // for vtkWeakPointer<vtkOpenGLRenderWindow>
 #include "vtkWeakPointer.h"                       // for vtkWeakPointer
 
@@ -242,6 +245,8 @@ public:
 
   /// The depth prepass's recording targets for this renderer (multisampled framebuffers).
   vtkClusteredLightingSampleDepths* GetSampleDepths() { return &this->SampleDepths; }
+  /// The copy of this renderer's last prepass depths (ReuseDepthPrepass).
+  vtkClusteredLightingSavedDepth* GetSavedDepth() { return &this->SavedDepth; }
 
   /// The window whose context holds the GL objects (null after it was deleted).
   vtkOpenGLRenderWindow* GetWindow() const { return this->Window; }
@@ -333,6 +338,7 @@ private:
   vtkClusteredLighting::FarFieldPlan FarFieldPlan;
   vtkClusteredLightingFarFieldTextures FarField;
   vtkClusteredLightingSampleDepths SampleDepths;
+  vtkClusteredLightingSavedDepth SavedDepth;
   glm::dvec3 RegionLo = glm::dvec3(1.0), RegionHi = glm::dvec3(-1.0); ///< the far field's region
   glm::dvec3 RegionAnchor = glm::dvec3(0.0); ///< its node planes (see UpdateRegion)
   std::unique_ptr<vtkClusteredLightingAssignmentBackend> Backend;

@@ -2,22 +2,34 @@
 #include "vtkClusteredLightingDepthPrepass.h"
 
 #include "vtkClusteredLightingSampleDepths.h"
+#include "vtkClusteredLightingSavedDepth.h"
 #include "vtkClusteredLightingShaderCode.h"
 
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkCommand.h"
+#include "vtkDataObject.h"
+#include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
+#include "vtkPlane.h"
+#include "vtkPlaneCollection.h"
+#include "vtkPolyDataMapper.h"
 #include "vtkProp.h"
 #include "vtkRenderState.h"
 #include "vtkRenderer.h"
 #include "vtkShader.h"
 #include "vtkShaderProgram.h"
+#include "vtkShaderProperty.h"
 #include "vtk_glew.h" // for GL calls
 
 #include <algorithm> // for std::max
 #include <chrono>    // for the render time
 #include <cmath>     // for std::abs
+#include <cstdint>   // for std::uintptr_t
+#include <cstring>   // for std::memcpy, std::strcmp
 #include <vector>    // for std::vector
 
 namespace
@@ -35,6 +47,49 @@ std::size_t Count(const std::string& text, const std::string& what)
   }
   return n;
 }
+
+/// The viewport and scissor as vtkCameraPass sets them.
+void GetViewport(const vtkRenderState* s, int origin[2], int size[2])
+{
+  origin[0] = origin[1] = size[0] = size[1] = 0;
+  if (auto* fbo = vtkOpenGLFramebufferObject::SafeDownCast(s->GetFrameBuffer()))
+  {
+    fbo->GetLastSize(size);
+  }
+  else
+  {
+    s->GetRenderer()->GetTiledSizeAndOrigin(size, size + 1, origin, origin + 1);
+  }
+}
+
+/// 64-bit FNV-1a over the values mixed in.
+class SignatureHash
+{
+public:
+  void Mix(std::uint64_t v)
+  {
+    for (int i = 0; i < 8; ++i)
+    {
+      this->Value ^= (v >> (8 * i)) & 0xFFu;
+      this->Value *= 1099511628211ULL;
+    }
+  }
+  void Mix(const void* p)
+  {
+    this->Mix(static_cast<std::uint64_t>(reinterpret_cast<std::uintptr_t>(p)));
+  }
+  void Mix(double d)
+  {
+    std::uint64_t bits = 0;
+    std::memcpy(&bits, &d, sizeof(bits));
+    this->Mix(bits);
+  }
+  /// Never 0 (which means "no reuse").
+  std::uint64_t Get() const { return this->Value == 0 ? 1 : this->Value; }
+
+private:
+  std::uint64_t Value = 1469598103934665603ULL;
+};
 }
 
 vtkStandardNewMacro(vtkClusteredLightingDepthPrepass);
@@ -54,7 +109,8 @@ void vtkClusteredLightingDepthPrepass::Render(const vtkRenderState* s)
 
 //------------------------------------------------------------------------------
 int vtkClusteredLightingDepthPrepass::RenderDepth(const vtkRenderState* s,
-  vtkOpenGLRenderWindow* rw, bool finish, vtkClusteredLightingSampleDepths* sampleDepths)
+  vtkOpenGLRenderWindow* rw, bool finish, vtkClusteredLightingSampleDepths* sampleDepths,
+  vtkClusteredLightingSavedDepth* saved, std::uint64_t reuse)
 {
   if (finish)
   {
@@ -63,27 +119,39 @@ int vtkClusteredLightingDepthPrepass::RenderDepth(const vtkRenderState* s,
   const auto t0 = std::chrono::steady_clock::now();
   vtkRenderer* ren = s->GetRenderer();
   vtkOpenGLState* state = rw->GetState();
+
+  // The viewport and scissor as vtkCameraPass sets them.
+  int size[2] = { 0, 0 };
+  int origin[2] = { 0, 0 };
+  GetViewport(s, origin, size);
+  this->Size[0] = size[0];
+  this->Size[1] = size[1];
+  this->Origin[0] = origin[0];
+  this->Origin[1] = origin[1];
+
+  // The last frame's depths, when nothing they depend on changed (ComputeReuseSignature);
+  // what that frame noted about its programs and read back stays valid with them.
+  if (!saved)
+  {
+    reuse = 0;
+  }
+  this->FrameSignature = reuse;
+  this->Reused = reuse != 0 && reuse == this->SavedSignature && saved->Restore(rw, origin, size);
+  if (this->Reused)
+  {
+    if (finish)
+    {
+      glFinish();
+    }
+    this->RenderTime =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    return this->SavedRendered;
+  }
   this->MaxCoincidentOffset = 0.0;
   this->UnknownDepthWrites = false;
   this->UnrecordedDepths = false;
   this->Recorded = false;
   this->SampleProblem.clear();
-
-  // The viewport and scissor as vtkCameraPass sets them.
-  int size[2] = { 0, 0 };
-  int origin[2] = { 0, 0 };
-  if (auto* fbo = vtkOpenGLFramebufferObject::SafeDownCast(s->GetFrameBuffer()))
-  {
-    fbo->GetLastSize(size);
-  }
-  else
-  {
-    ren->GetTiledSizeAndOrigin(size, size + 1, origin, origin + 1);
-  }
-  this->Size[0] = size[0];
-  this->Size[1] = size[1];
-  this->Origin[0] = origin[0];
-  this->Origin[1] = origin[1];
 
   // vtkOpenGLState does not track the vertex array binding (the mappers' VAOs bind 0 when
   // they release): restore the application's.
@@ -158,6 +226,13 @@ int vtkClusteredLightingDepthPrepass::RenderDepth(const vtkRenderState* s,
     }
   }
   glBindVertexArray(static_cast<GLuint>(vertexArray));
+  // Kept for the next frames with the same signature.
+  this->SavedSignature = 0;
+  if (reuse != 0 && saved->Save(rw, origin, size))
+  {
+    this->SavedSignature = reuse;
+    this->SavedRendered = rendered;
+  }
   if (finish)
   {
     glFinish();
@@ -172,6 +247,11 @@ bool vtkClusteredLightingDepthPrepass::ReadDepth(vtkOpenGLRenderWindow* rw)
 {
   const auto t0 = std::chrono::steady_clock::now();
   this->Problem.clear();
+  if (this->Reused && this->DepthSignature != 0 && this->DepthSignature == this->SavedSignature)
+  {
+    return true; // the depths read with the saved ones
+  }
+  this->DepthSignature = 0;
   if (this->Recorded)
   {
     // Recorded by RenderDepth (a multisampled framebuffer).
@@ -183,6 +263,7 @@ bool vtkClusteredLightingDepthPrepass::ReadDepth(vtkOpenGLRenderWindow* rw)
       this->DepthMax.clear();
       return false;
     }
+    this->DepthSignature = this->FrameSignature;
     return true;
   }
   this->Depth.clear();
@@ -241,9 +322,148 @@ bool vtkClusteredLightingDepthPrepass::ReadDepth(vtkOpenGLRenderWindow* rw)
     this->Problem = "reading the depth buffer failed";
     this->Depth.clear();
   }
+  else
+  {
+    this->DepthSignature = this->FrameSignature;
+  }
   this->RenderTime +=
     std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   return ok;
+}
+
+//------------------------------------------------------------------------------
+// Everything the prepass's depths depend on, hashed: where it draws (renderer, window,
+// framebuffer, samples, viewport), the camera's matrices, VTK's global coincident-topology
+// settings, and every visible prop with its mapper, clipping planes and input. Props are
+// accepted only where these modification times cover everything that moves their depths.
+std::uint64_t vtkClusteredLightingDepthPrepass::ComputeReuseSignature(
+  const vtkRenderState* s, vtkOpenGLRenderWindow* rw, bool record, std::string* why)
+{
+  auto refuse = [why](const std::string& reason)
+  {
+    if (why)
+    {
+      *why = reason;
+    }
+    return std::uint64_t(0);
+  };
+  vtkRenderer* ren = s->GetRenderer();
+  if (!(rw->GetErase() && ren->GetErase() && !ren->GetPreserveDepthBuffer()))
+  {
+    return refuse("the prepass draws on depths it does not clear");
+  }
+  SignatureHash h;
+  h.Mix(ren);
+  h.Mix(rw);
+  h.Mix(s->GetFrameBuffer());
+  unsigned int binding = 0, buffer = 0;
+  rw->GetState()->GetCurrentDrawFramebufferState(binding, buffer);
+  h.Mix(static_cast<std::uint64_t>(binding));
+  GLint samples = 0;
+  glGetIntegerv(GL_SAMPLES, &samples);
+  h.Mix(static_cast<std::uint64_t>(samples));
+  h.Mix(static_cast<std::uint64_t>(record ? 1 : 0));
+  int origin[2], size[2];
+  GetViewport(s, origin, size);
+  for (int v : { origin[0], origin[1], size[0], size[1] })
+  {
+    h.Mix(static_cast<std::uint64_t>(static_cast<std::uint32_t>(v)));
+  }
+  // The camera: its matrices (the aspect, eye and tile included) and its own time.
+  vtkCamera* camera = ren->GetActiveCamera();
+  h.Mix(camera);
+  h.Mix(static_cast<std::uint64_t>(camera->GetMTime()));
+  h.Mix(static_cast<std::uint64_t>(camera->GetLeftEye()));
+  h.Mix(static_cast<std::uint64_t>(rw->GetStereoRender()));
+  const double* tile = rw->GetTileViewport();
+  for (int i = 0; i < 4; ++i)
+  {
+    h.Mix(tile[i]);
+  }
+  const double aspect = ren->GetTiledAspectRatio();
+  h.Mix(aspect);
+  vtkMatrix4x4* projection = camera->GetCompositeProjectionTransformMatrix(aspect, -1, 1);
+  for (int i = 0; i < 16; ++i)
+  {
+    h.Mix(projection->GetElement(i / 4, i % 4));
+  }
+  // VTK's global coincident-topology settings (no modification time).
+  h.Mix(static_cast<std::uint64_t>(vtkMapper::GetResolveCoincidentTopology()));
+  double factor = 0.0, units = 0.0;
+  vtkMapper::GetResolveCoincidentTopologyPolygonOffsetParameters(factor, units);
+  h.Mix(factor);
+  h.Mix(units);
+  vtkMapper::GetResolveCoincidentTopologyLineOffsetParameters(factor, units);
+  h.Mix(factor);
+  h.Mix(units);
+  vtkMapper::GetResolveCoincidentTopologyPointOffsetParameter(units);
+  h.Mix(units);
+  h.Mix(vtkMapper::GetResolveCoincidentTopologyZShift());
+
+  h.Mix(static_cast<std::uint64_t>(s->GetPropArrayCount()));
+  for (int i = 0; i < s->GetPropArrayCount(); ++i)
+  {
+    vtkProp* prop = s->GetPropArray()[i];
+    h.Mix(prop);
+    h.Mix(static_cast<std::uint64_t>(prop->GetVisibility()));
+    if (!prop->GetVisibility())
+    {
+      continue;
+    }
+    auto* actor = vtkActor::SafeDownCast(prop);
+    if (!actor || std::strcmp(prop->GetClassName(), "vtkOpenGLActor") != 0)
+    {
+      return refuse(std::string("a ") + prop->GetClassName() + " is drawn");
+    }
+    vtkMapper* mapper = actor->GetMapper();
+    h.Mix(mapper);
+    if (!mapper)
+    {
+      continue; // draws nothing
+    }
+    auto* polyMapper = vtkPolyDataMapper::SafeDownCast(mapper);
+    if (!polyMapper || std::strcmp(mapper->GetClassName(), "vtkOpenGLPolyDataMapper") != 0)
+    {
+      return refuse(std::string("a ") + mapper->GetClassName() + " draws");
+    }
+    if (polyMapper->GetNumberOfSubPieces() != 1)
+    {
+      return refuse("a mapper draws several pieces");
+    }
+    if (polyMapper->HasObserver(vtkCommand::UpdateShaderEvent))
+    {
+      return refuse("a mapper has an UpdateShaderEvent observer");
+    }
+    vtkShaderProperty* shaders = actor->GetShaderProperty();
+    if (shaders &&
+      (shaders->GetNumberOfShaderReplacements() > 0 || shaders->HasVertexShaderCode() ||
+        shaders->HasFragmentShaderCode() || shaders->HasGeometryShaderCode()))
+    {
+      return refuse("an actor has shader replacements");
+    }
+    // The actor's time covers its transform, property, backface property and texture;
+    // the mapper's its own settings and its clipping planes' collection, not the planes.
+    h.Mix(static_cast<std::uint64_t>(actor->GetMTime()));
+    h.Mix(static_cast<std::uint64_t>(mapper->GetMTime()));
+    if (vtkPlaneCollection* planes = mapper->GetClippingPlanes())
+    {
+      for (int k = 0; k < planes->GetNumberOfItems(); ++k)
+      {
+        vtkPlane* plane = planes->GetItem(k);
+        h.Mix(static_cast<std::uint64_t>(plane ? plane->GetMTime() : 0));
+      }
+    }
+    // Its input brought up to date as the renderer does for the clipping range (the
+    // mapper's own piece; a static mapper promises its input does not change).
+    if (!polyMapper->GetStatic())
+    {
+      polyMapper->GetBounds();
+    }
+    vtkDataObject* input = polyMapper->GetInputDataObject(0, 0);
+    h.Mix(input);
+    h.Mix(static_cast<std::uint64_t>(input ? input->GetMTime() : 0));
+  }
+  return h.Get();
 }
 
 //------------------------------------------------------------------------------
@@ -380,4 +600,5 @@ void vtkClusteredLightingDepthPrepass::PrintSelf(ostream& os, vtkIndent indent)
      << (this->SampleProblem.empty() ? "" : " (") << this->SampleProblem
      << (this->SampleProblem.empty() ? "" : ")") << "\n";
   os << indent << "RenderTime: " << this->RenderTime << " ms\n";
+  os << indent << "Reused: " << (this->Reused ? "yes" : "no") << "\n";
 }

@@ -27,6 +27,16 @@
  * hook), so the same vertex shader code gives the same depth in both, as the equal depth
  * test needs.
  *
+ * A frame whose prepass would draw what the last one drew (ComputeReuseSignature: the
+ * same renderer, framebuffer, viewport, camera and props, none of whose data, transforms
+ * or properties changed) copies the last depths back instead
+ * (vtkClusteredLightingSavedDepth, one per renderer) and keeps the last readback: a still camera
+ * over moving lights, or a re-render of an unchanged scene, pays one depth copy instead of a second
+ * geometry pass. Props whose depths could change without a modification time showing it make the
+ * signature 0 (no reuse): anything but a plain vtkActor with a vtkPolyDataMapper drawing one piece,
+ * shader replacements or UpdateShaderEvent observers (uniforms set per draw), and a depth buffer
+ * the prepass does not clear.
+ *
  * While rendering it notes what each program writes to depth (NoteProgram): VTK's
  * coincident-topology offset (gl_FragDepth = gl_FragCoord.z + cOffset / 65000) widens
  * the readback's margin by the largest |cOffset|; any other gl_FragDepth write (impostor
@@ -42,11 +52,13 @@
 
 #include "vtkOpenGLRenderPass.h"
 
-#include <map>    // for the programs' facts
-#include <string> // for std::string
-#include <vector> // for std::vector
+#include <cstdint> // for std::uint64_t
+#include <map>     // for the programs' facts
+#include <string>  // for std::string
+#include <vector>  // for std::vector
 
 class vtkClusteredLightingSampleDepths;
+class vtkClusteredLightingSavedDepth;
 class vtkOpenGLRenderWindow;
 class vtkRenderState;
 class vtkShaderProgram;
@@ -65,9 +77,28 @@ public:
   /// the render time is the prepass's own (a deferred renderer would otherwise bill it to
   /// the next GL work). With `sampleDepths` and a multisampled framebuffer, records the
   /// depths of the fragments through it (for ReadDepth). Returns the number of props
-  /// rendered.
+  /// rendered. With `saved` (the renderer's) and a non-zero `reuse`
+  /// (ComputeReuseSignature): equal to the last frame's, copies that frame's depths back
+  /// instead of drawing when it can (GetReused); a frame that draws saves its depths.
   int RenderDepth(const vtkRenderState* s, vtkOpenGLRenderWindow* rw, bool finish,
-    vtkClusteredLightingSampleDepths* sampleDepths = nullptr);
+    vtkClusteredLightingSampleDepths* sampleDepths = nullptr,
+    vtkClusteredLightingSavedDepth* saved = nullptr, std::uint64_t reuse = 0);
+
+  /// A hash of what the prepass's depths depend on, for RenderDepth's `reuse`; 0 when
+  /// they may depend on something it cannot see (see above). `record`: the depths are to
+  /// be recorded through vtkClusteredLightingSampleDepths. Brings the props' inputs up to
+  /// date (as their mappers would when drawn). `why` (optional) says what made it 0.
+  static std::uint64_t ComputeReuseSignature(
+    const vtkRenderState* s, vtkOpenGLRenderWindow* rw, bool record, std::string* why = nullptr);
+
+  /// Whether the last RenderDepth copied the depths back instead of drawing.
+  bool GetReused() const { return this->Reused; }
+  /// Whether the depths of the last RenderDepth are kept for the next frame (saved or
+  /// reused, with a non-zero `reuse`).
+  bool GetKept() const
+  {
+    return this->FrameSignature != 0 && this->SavedSignature == this->FrameSignature;
+  }
 
   /// Reads the viewport's depth back (from the framebuffer RenderDepth drew into), or
   /// takes the multisampled record of RenderDepth.
@@ -136,6 +167,13 @@ private:
   int Origin[2] = { 0, 0 };
   std::string Problem;
   double RenderTime = 0.0;
+
+  // Reuse (RenderDepth's `reuse`).
+  std::uint64_t SavedSignature = 0; ///< of the frame whose depths were last saved (0: none)
+  std::uint64_t FrameSignature = 0; ///< this frame's `reuse`
+  std::uint64_t DepthSignature = 0; ///< of the frame whose readback Depth holds (0: none)
+  int SavedRendered = 0;            ///< props that frame rendered
+  bool Reused = false;
 };
 
 #endif

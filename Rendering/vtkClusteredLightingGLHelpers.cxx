@@ -55,6 +55,62 @@ bool vtkClusteredLightingDrawTargetClampsAtOne()
 }
 
 //------------------------------------------------------------------------------
+unsigned int vtkClusteredLightingQueryDepthFormat(unsigned int binding)
+{
+  const GLenum depth = binding == 0 ? GL_DEPTH : GL_DEPTH_ATTACHMENT;
+  const GLenum stencil = binding == 0 ? GL_STENCIL : GL_STENCIL_ATTACHMENT;
+  GLint depthBits = 0, stencilBits = 0, type = 0, stencilType = GL_NONE;
+  glGetFramebufferAttachmentParameteriv(
+    GL_DRAW_FRAMEBUFFER, depth, GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE, &depthBits);
+  glGetFramebufferAttachmentParameteriv(
+    GL_DRAW_FRAMEBUFFER, depth, GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE, &type);
+  glGetFramebufferAttachmentParameteriv(
+    GL_DRAW_FRAMEBUFFER, stencil, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &stencilType);
+  if (stencilType != GL_NONE)
+  {
+    glGetFramebufferAttachmentParameteriv(
+      GL_DRAW_FRAMEBUFFER, stencil, GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE, &stencilBits);
+  }
+  bool failed = false;
+  while (glGetError() != GL_NO_ERROR)
+  {
+    failed = true;
+  }
+  if (failed)
+  {
+    return 0;
+  }
+  if (depthBits == 24 && type == GL_UNSIGNED_NORMALIZED)
+  {
+    return stencilBits == 8 ? GL_DEPTH24_STENCIL8 : stencilBits == 0 ? GL_DEPTH_COMPONENT24 : 0;
+  }
+  if (depthBits == 32 && type == GL_UNSIGNED_NORMALIZED && stencilBits == 0)
+  {
+    return GL_DEPTH_COMPONENT32; // VTK 9.1's own render framebuffer
+  }
+  if (depthBits == 32 && type == GL_FLOAT)
+  {
+    return stencilBits == 8 ? GL_DEPTH32F_STENCIL8 : stencilBits == 0 ? GL_DEPTH_COMPONENT32F : 0;
+  }
+  if (depthBits == 16 && type == GL_UNSIGNED_NORMALIZED && stencilBits == 0)
+  {
+    return GL_DEPTH_COMPONENT16;
+  }
+  return 0;
+}
+
+//------------------------------------------------------------------------------
+std::vector<float> vtkClusteredLightingQuerySamplePositions(int samples)
+{
+  std::vector<float> positions(2 * static_cast<std::size_t>(samples));
+  for (int i = 0; i < samples; ++i)
+  {
+    glGetMultisamplefv(GL_SAMPLE_POSITION, static_cast<GLuint>(i), &positions[2 * i]);
+  }
+  return positions;
+}
+
+//------------------------------------------------------------------------------
 bool vtkClusteredLightingSetUniform4i(vtkShaderProgram* program, const char* name, const int v[4])
 {
   const int location = program->FindUniform(name);

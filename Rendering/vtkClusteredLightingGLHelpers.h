@@ -16,7 +16,9 @@
  *    covers (no blending, depth, scissor or culling, every colour channel), restored
  *    when it goes out of scope;
  *  - vtkClusteredLightingSetUniform4i: vtkShaderProgram has no ivec4 setter in VTK 9.1;
- *  - vtkClusteredLightingDrawTargetClampsAtOne: whether the colour being drawn clamps.
+ *  - vtkClusteredLightingDrawTargetClampsAtOne: whether the colour being drawn clamps;
+ *  - vtkClusteredLightingQueryDepthFormat, vtkClusteredLightingQuerySamplePositions: what
+ *    a copy of the draw framebuffer's depth must match (its format, its samples).
  *
  * None of them makes a context current: callers do (see vtkClusteredLightingAssigner).
  */
@@ -41,6 +43,15 @@ class vtkWindow;
 /// vtkToneMappingPass around the pass, for one), for no draw buffer, and if the query
 /// fails. Needs a current context.
 bool vtkClusteredLightingDrawTargetClampsAtOne();
+
+/// The internal format of the current draw framebuffer's depth buffer (`binding` is its
+/// name, 0 for the window's own), or 0 when it is not one whose depth can be copied
+/// exactly: 24-bit or 32-bit float, each with or without 8 stencil bits; 32-bit fixed
+/// point (VTK 9.1's own render framebuffer) or 16-bit without.
+unsigned int vtkClusteredLightingQueryDepthFormat(unsigned int binding);
+
+/// The positions of the current draw framebuffer's `samples` samples (x, y each).
+std::vector<float> vtkClusteredLightingQuerySamplePositions(int samples);
 
 /// ivec4 uniform setter (the program must be bound). Returns false if the program does
 /// not use the uniform.

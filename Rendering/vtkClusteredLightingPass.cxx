@@ -268,6 +268,7 @@ struct vtkClusteredLightingPass::vtkInternals
   std::set<std::size_t> BuiltSources; ///< hashes of the shader sources built (NumberOfShaderBuilds)
   vtkClusteredLighting::DepthImage Depths;         ///< the prepass's readback, during Render()
   std::string ReportedDepthProblem;                ///< why depth-aware clusters are off, said once
+  std::string DepthReuseProblem;                   ///< why the last depths were not kept
   bool ReportedShadows = false;                    ///< UseShadows, which the pass does not apply
   bool ReportedLoopLimit = false;                  ///< the llvmpipe loop limit was reported
   bool ReportedUncountedPixels = false;            ///< a debug view's counts could not be read
@@ -384,6 +385,12 @@ vtkTypeInt64 vtkClusteredLightingPass::GetMaximumNumberOfLights(
 }
 
 //------------------------------------------------------------------------------
+const char* vtkClusteredLightingPass::GetDepthPrepassReuseProblem() const
+{
+  return this->Internals->DepthReuseProblem.c_str();
+}
+
+//------------------------------------------------------------------------------
 int vtkClusteredLightingPass::GetNumberOfGLObjects() const
 {
   int n = 0;
@@ -468,6 +475,9 @@ void vtkClusteredLightingPass::Render(const vtkRenderState* s)
   vtkClusteredLightingAssigner* assigner = this->Internals->GetAssigner(ren);
   vtkClusteredLightingAssignerInputs inputs = this->MakeAssignerInputs(ren, lights);
   this->DepthPrepassUsed = false;
+  this->DepthPrepassReused = false;
+  this->DepthPrepassKept = false;
+  this->Internals->DepthReuseProblem.clear();
   this->DepthAwareClustersUsed = false;
   this->LastDepthPrepassTime = 0.0;
   const bool eligible = this->UsesDepthPrepass(s, lights);
@@ -485,6 +495,10 @@ void vtkClusteredLightingPass::Render(const vtkRenderState* s)
   if (prepassed)
   {
     this->RenderDepthPrepass(s, rw, inputs);
+  }
+  if (!this->DepthPrepassKept)
+  {
+    assigner->GetSavedDepth()->Release(rw); // no memory held for depths no frame reuses
   }
   const vtkClusteredLightingAssignment& result = assigner->Update(rw, inputs);
   this->Internals->Depths = vtkClusteredLighting::DepthImage();
@@ -668,10 +682,22 @@ void vtkClusteredLightingPass::RenderDepthPrepass(
   // In a multisampled framebuffer depth-aware clusters need the fragments' own depths,
   // which the prepass then records (vtkClusteredLightingSampleDepths).
   const bool depthAware = this->DepthAwareClusters && inputs.Clustered;
+  // The last frame's depths where they still hold (ReuseDepthPrepass).
+  const std::uint64_t reuse = this->ReuseDepthPrepass
+    ? vtkClusteredLightingDepthPrepass::ComputeReuseSignature(
+        s, rw, depthAware, &this->Internals->DepthReuseProblem)
+    : 0;
+  vtkClusteredLightingAssigner* assigner = this->Internals->GetAssigner(ren);
   prepass->RenderDepth(s, rw, this->MeasureTimings,
-    depthAware ? this->Internals->GetAssigner(ren)->GetSampleDepths() : nullptr);
+    depthAware ? assigner->GetSampleDepths() : nullptr, assigner->GetSavedDepth(), reuse);
   this->RestoreRendererLights(ren, *inputs.Lights);
   this->DepthPrepassUsed = true;
+  this->DepthPrepassReused = prepass->GetReused();
+  this->DepthPrepassKept = prepass->GetKept();
+  if (reuse != 0 && !this->DepthPrepassKept)
+  {
+    this->Internals->DepthReuseProblem = "its depths could not be copied";
+  }
   if (depthAware)
   {
     bool translucent = false;
@@ -1353,6 +1379,7 @@ void vtkClusteredLightingPass::PrintSelf(ostream& os, vtkIndent indent)
   os << next << "PerClusterCulling: " << (this->PerClusterCulling ? "On" : "Off") << "\n";
   os << next << "DepthPrepass: " << (this->DepthPrepass ? "On" : "Off") << "\n";
   os << next << "AutomaticDepthPrepass: " << (this->AutomaticDepthPrepass ? "On" : "Off") << "\n";
+  os << next << "ReuseDepthPrepass: " << (this->ReuseDepthPrepass ? "On" : "Off") << "\n";
   os << next << "DepthAwareClusters: " << (this->DepthAwareClusters ? "On" : "Off") << "\n";
   os << next << "MaximumTextureSize: " << this->MaximumTextureSize << "\n";
   os << indent << "Diagnostic:\n";
@@ -1378,6 +1405,11 @@ void vtkClusteredLightingPass::PrintSelf(ostream& os, vtkIndent indent)
   os << next << "MeanLightsEvaluatedPerPixel: " << this->MeanLightsEvaluatedPerPixel << " (maximum "
      << this->MaximumLightsEvaluatedPerPixel << ", over " << this->NumberOfCountedPixels
      << " pixels)\n";
+  os << next << "DepthPrepassReused: " << (this->DepthPrepassReused ? "yes" : "no")
+     << ", kept: " << (this->DepthPrepassKept ? "yes" : "no")
+     << (this->Internals->DepthReuseProblem.empty() ? "" : " (")
+     << this->Internals->DepthReuseProblem
+     << (this->Internals->DepthReuseProblem.empty() ? "" : ")") << "\n";
   os << next << "DepthPrepassUsed: " << (this->DepthPrepassUsed ? "yes" : "no") << " ("
      << this->LastDepthPrepassTime << " ms)\n";
   os << next << "NumberOfDepthPrepassTrials: " << this->NumberOfDepthPrepassTrials

@@ -503,6 +503,27 @@ public:
 
   //@{
   /**
+   * Reuse the depth prepass of the last frame when it would draw the same depths: the
+   * same renderer, framebuffer, viewport and camera, and no visible prop, mapper,
+   * clipping plane or input modified since (a still camera over moving lights, or a
+   * re-render of an unchanged scene). The frame copies the saved depth buffer back (and
+   * keeps its readback) instead of drawing the opaque geometry again; the image is the
+   * same bit for bit. Only props whose modification times cover everything that moves
+   * their depths take part: plain vtkActors with a vtkPolyDataMapper drawing one piece,
+   * without shader replacements or UpdateShaderEvent observers; any other visible prop
+   * (an LOD actor, a glyph or composite mapper, a 2D actor, a volume) makes every frame
+   * draw its prepass, as does a renderer that keeps the depth buffer of an earlier one.
+   * Costs one depth copy per prepass frame and a depth buffer's memory
+   * (GetDepthPrepassReused says whether the last frame reused; docs/depth.md).
+   * Default is on.
+   */
+  vtkSetMacro(ReuseDepthPrepass, bool);
+  vtkGetMacro(ReuseDepthPrepass, bool);
+  vtkBooleanMacro(ReuseDepthPrepass, bool);
+  //@}
+
+  //@{
+  /**
    * Advanced: largest texture side, in texels, the pass allocates for its list and master
    * textures; 0 means the context's GL_MAX_TEXTURE_SIZE. A smaller value bounds GPU memory
    * (the list texture is at most MaximumTextureSize squared times 4 bytes) and lowers the
@@ -638,6 +659,16 @@ public:
   vtkGetMacro(DepthPrepassUsed, bool);
   /// Time in ms of the last depth prepass, its depth readback included.
   vtkGetMacro(LastDepthPrepassTime, double);
+  /// Whether the last render's prepass copied the frame before's depths back
+  /// (ReuseDepthPrepass) instead of drawing.
+  vtkGetMacro(DepthPrepassReused, bool);
+  /// Whether the last render kept its prepass's depths for the next frame
+  /// (ReuseDepthPrepass); if not, GetDepthPrepassReuseProblem says why.
+  vtkGetMacro(DepthPrepassKept, bool);
+  /// Why the last render did not keep its prepass's depths for the next frame, for example
+  /// "a vtkFollower is drawn" (docs/depth.md); "" when it kept them, when
+  /// ReuseDepthPrepass is off, or when the frame drew no prepass.
+  const char* GetDepthPrepassReuseProblem() const;
   /// AutomaticDepthPrepass: trials completed for the last rendered renderer since its
   /// scene last changed or began. Whether the last frame drew the prepass is
   /// GetDepthPrepassUsed.
@@ -791,6 +822,7 @@ protected:
   bool DepthPrepass = true;
   bool DepthAwareClusters = true;
   bool AutomaticDepthPrepass = true;
+  bool ReuseDepthPrepass = true;
   int MaximumTextureSize = 0;
   bool MeasureTimings = false;
   bool FarField = true;
@@ -830,6 +862,8 @@ protected:
   bool FarFieldSharedColorUsed = false;
   double LastShadingTime = 0.0;
   bool DepthPrepassUsed = false;
+  bool DepthPrepassReused = false;
+  bool DepthPrepassKept = false;
   double LastDepthPrepassTime = 0.0;
   int NumberOfDepthPrepassTrials = 0;
   double DepthPrepassTrialRatio = 0.0;

@@ -14,67 +14,6 @@
 
 #include <cstddef> // for std::size_t
 
-namespace
-{
-/// The internal format of the current draw framebuffer's depth buffer, or 0 when it is
-/// not one this class copies (24-bit or 32-bit float, each with or without 8 stencil
-/// bits; 32-bit fixed point or 16-bit without).
-GLenum QueryDepthFormat(unsigned int binding)
-{
-  const GLenum depth = binding == 0 ? GL_DEPTH : GL_DEPTH_ATTACHMENT;
-  const GLenum stencil = binding == 0 ? GL_STENCIL : GL_STENCIL_ATTACHMENT;
-  GLint depthBits = 0, stencilBits = 0, type = 0, stencilType = GL_NONE;
-  glGetFramebufferAttachmentParameteriv(
-    GL_DRAW_FRAMEBUFFER, depth, GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE, &depthBits);
-  glGetFramebufferAttachmentParameteriv(
-    GL_DRAW_FRAMEBUFFER, depth, GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE, &type);
-  glGetFramebufferAttachmentParameteriv(
-    GL_DRAW_FRAMEBUFFER, stencil, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &stencilType);
-  if (stencilType != GL_NONE)
-  {
-    glGetFramebufferAttachmentParameteriv(
-      GL_DRAW_FRAMEBUFFER, stencil, GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE, &stencilBits);
-  }
-  bool failed = false;
-  while (glGetError() != GL_NO_ERROR)
-  {
-    failed = true;
-  }
-  if (failed)
-  {
-    return 0;
-  }
-  if (depthBits == 24 && type == GL_UNSIGNED_NORMALIZED)
-  {
-    return stencilBits == 8 ? GL_DEPTH24_STENCIL8 : stencilBits == 0 ? GL_DEPTH_COMPONENT24 : 0;
-  }
-  if (depthBits == 32 && type == GL_UNSIGNED_NORMALIZED && stencilBits == 0)
-  {
-    return GL_DEPTH_COMPONENT32; // VTK 9.1's own render framebuffer
-  }
-  if (depthBits == 32 && type == GL_FLOAT)
-  {
-    return stencilBits == 8 ? GL_DEPTH32F_STENCIL8 : stencilBits == 0 ? GL_DEPTH_COMPONENT32F : 0;
-  }
-  if (depthBits == 16 && type == GL_UNSIGNED_NORMALIZED && stencilBits == 0)
-  {
-    return GL_DEPTH_COMPONENT16;
-  }
-  return 0;
-}
-
-/// The sample positions of the current draw framebuffer.
-std::vector<float> QuerySamplePositions(int samples)
-{
-  std::vector<float> positions(2 * static_cast<std::size_t>(samples));
-  for (int i = 0; i < samples; ++i)
-  {
-    glGetMultisamplefv(GL_SAMPLE_POSITION, static_cast<GLuint>(i), &positions[2 * i]);
-  }
-  return positions;
-}
-}
-
 //------------------------------------------------------------------------------
 vtkClusteredLightingSampleDepths::~vtkClusteredLightingSampleDepths()
 {
@@ -218,13 +157,13 @@ bool vtkClusteredLightingSampleDepths::Begin(
   state->GetCurrentDrawFramebufferState(binding, buffer);
   GLint samples = 0;
   glGetIntegerv(GL_SAMPLES, &samples);
-  const GLenum depthFormat = QueryDepthFormat(binding);
+  const GLenum depthFormat = vtkClusteredLightingQueryDepthFormat(binding);
   if (depthFormat == 0)
   {
     this->Problem = "its depth buffer has a format the sample depths cannot be copied to";
     return false;
   }
-  const std::vector<float> positions = QuerySamplePositions(samples);
+  const std::vector<float> positions = vtkClusteredLightingQuerySamplePositions(samples);
   if (!this->Allocate(
         rw, origin[0] + size[0], origin[1] + size[1], samples, static_cast<int>(depthFormat)))
   {
@@ -254,7 +193,8 @@ bool vtkClusteredLightingSampleDepths::Begin(
   {
     this->Problem = "the framebuffer for its sample depths is incomplete";
   }
-  else if (targetSamples != samples || QuerySamplePositions(samples) != positions)
+  else if (targetSamples != samples ||
+    vtkClusteredLightingQuerySamplePositions(samples) != positions)
   {
     ok = false;
     this->Problem = "its samples (their number or positions) differ from a multisampled "

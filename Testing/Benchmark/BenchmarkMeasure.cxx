@@ -216,6 +216,7 @@ void Context::ResetPassDefaults()
   p->SetDepthPrepass(true);
   p->SetDepthAwareClusters(true);
   p->SetAutomaticDepthPrepass(false); // rows time the options as set; "automatic" rows turn it on
+  p->SetReuseDepthPrepass(true);
   p->SetShadingMode(vtkClusteredLightingPass::SHADING_CLUSTERED);
   p->SetDebugView(vtkClusteredLightingPass::DEBUG_NONE);
 }

@@ -306,6 +306,15 @@ std::vector<Step> MakePlan(const PlanOptions& options)
         s.Reference = n <= 16384;
         s.Frames = n > 16384 ? 3 : base.Frames;
         plan.push_back(s);
+        // Lights moving under a still camera: the prepass's depths are copied back
+        // (ReuseDepthPrepass), and only the lights are assigned again.
+        if (!quick && k == 0)
+        {
+          Step still = s;
+          still.Value = "animated, camera static";
+          still.Moving = false;
+          plan.push_back(still);
+        }
         // With an error budget, which chooses the far field's resolution (once: moving
         // lights keep it), so what the budget costs in each frame's rebuild.
         for (double b : { 1.0, 4.0 })
@@ -593,6 +602,13 @@ std::vector<Step> MakePlan(const PlanOptions& options)
       knob("culling", "per-cluster off",
         [](vtkClusteredLightingPass* p) { p->SetPerClusterCulling(false); });
       knob("camera", "static", nullptr)->Moving = false;
+      // The depth prepass copied back on still frames (ReuseDepthPrepass), and what saving
+      // its depths costs the frames that draw it: both rows with the reuse off.
+      knob("camera", "static, prepass reuse off",
+        [](vtkClusteredLightingPass* p) { p->SetReuseDepthPrepass(false); })
+        ->Moving = false;
+      knob("prepass reuse", "off",
+        [](vtkClusteredLightingPass* p) { p->SetReuseDepthPrepass(false); });
       // Effects a scene calls for: specular off, spot lights present (each with the exact
       // reference of its own scene).
       Step* specular = knob("specular", "off", nullptr);

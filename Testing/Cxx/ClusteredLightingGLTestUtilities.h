@@ -29,7 +29,8 @@
 namespace ClusteredLightingTest
 {
 
-/// (kind, name) pairs; kind is GL_TEXTURE, GL_BUFFER, GL_FRAMEBUFFER or GL_VERTEX_ARRAY.
+/// (kind, name) pairs; kind is GL_TEXTURE, GL_BUFFER, GL_FRAMEBUFFER, GL_RENDERBUFFER or
+/// GL_VERTEX_ARRAY.
 using GLNames = std::set<std::pair<unsigned int, unsigned int>>;
 
 inline const char* GLKindName(unsigned int kind)
@@ -42,6 +43,8 @@ inline const char* GLKindName(unsigned int kind)
       return "buffer";
     case GL_FRAMEBUFFER:
       return "framebuffer";
+    case GL_RENDERBUFFER:
+      return "renderbuffer";
     case GL_VERTEX_ARRAY:
       return "vertex array";
     default:
@@ -60,6 +63,8 @@ inline bool IsLiveGLName(unsigned int kind, unsigned int name)
       return glIsBuffer(name) == GL_TRUE;
     case GL_FRAMEBUFFER:
       return glIsFramebuffer(name) == GL_TRUE;
+    case GL_RENDERBUFFER:
+      return glIsRenderbuffer(name) == GL_TRUE;
     case GL_VERTEX_ARRAY:
       return glIsVertexArray(name) == GL_TRUE;
     default:
@@ -69,13 +74,14 @@ inline bool IsLiveGLName(unsigned int kind, unsigned int name)
 
 constexpr unsigned int CensusMaxName = 1u << 16;
 
-/// Every live texture, buffer, framebuffer and vertex-array name in [1, CensusMaxName] of
-/// the window's context, found by asking GL about each name.
+/// Every live texture, buffer, framebuffer, renderbuffer and vertex-array name in
+/// [1, CensusMaxName] of the window's context, found by asking GL about each name.
 inline GLNames TakeGLNameCensus(vtkRenderWindow* rw)
 {
   rw->MakeCurrent();
   GLNames live;
-  for (unsigned int kind : { GL_TEXTURE, GL_BUFFER, GL_FRAMEBUFFER, GL_VERTEX_ARRAY })
+  for (unsigned int kind :
+    { GL_TEXTURE, GL_BUFFER, GL_FRAMEBUFFER, GL_RENDERBUFFER, GL_VERTEX_ARRAY })
   {
     for (unsigned int name = 1; name <= CensusMaxName; ++name)
     {
@@ -91,16 +97,19 @@ inline GLNames TakeGLNameCensus(vtkRenderWindow* rw)
 /// GL objects one renderer's assignment holds: 10 (light data and view textures and
 /// buffers, the list and master textures, framebuffers, vertex array), plus the far field's
 /// 7 moment textures while the renderer's lights have a far field, plus the cluster-depth
-/// texture while its clusters are depth-aware.
+/// texture while its clusters are depth-aware, plus the copy of the prepass's depths (a
+/// framebuffer and a renderbuffer) while they are kept for the next frame.
 constexpr int AssignmentGLObjects = 10;
 constexpr int FarFieldGLObjects = 7;
 constexpr int DepthAwareGLObjects = 1;
+constexpr int SavedDepthGLObjects = 2;
 
 /// GL objects per renderer for the lights the pass last rendered.
 inline int GLObjectsPerRenderer(vtkClusteredLightingPass* pass)
 {
   return AssignmentGLObjects + (pass->GetNumberOfFarFieldLights() > 0 ? FarFieldGLObjects : 0) +
-    (pass->GetDepthAwareClustersUsed() ? DepthAwareGLObjects : 0);
+    (pass->GetDepthAwareClustersUsed() ? DepthAwareGLObjects : 0) +
+    (pass->GetDepthPrepassKept() ? SavedDepthGLObjects : 0);
 }
 
 /// The pass's own list of its GL objects (all renderers).

@@ -66,11 +66,12 @@ int TestClusteredLightingResources(int, char*[])
   const GLNames own = PassGLNames(pass);
   Check(pass->GetNumberOfClusteredLights() == 303, "303 clustered lights");
   // LightData, LightView, Quads (texture + buffer each), list, master, FBO, VAO, and the
-  // far field's moment textures (the scene's lights are inverse-square), and the cluster
-  // depths (depth-aware clusters are on by default).
+  // far field's moment textures (the scene's lights are inverse-square), the cluster
+  // depths (depth-aware clusters are on by default), and the copy of the prepass's depths
+  // for the next frame (ReuseDepthPrepass, on by default).
   const int per = GLObjectsPerRenderer(pass);
-  Check(per == AssignmentGLObjects + FarFieldGLObjects + DepthAwareGLObjects,
-    "the lights have a far field, the clusters are depth-aware");
+  Check(per == AssignmentGLObjects + FarFieldGLObjects + DepthAwareGLObjects + SavedDepthGLObjects,
+    "the lights have a far field, the clusters are depth-aware, the prepass's depths are kept");
   Check(pass->GetNumberOfGLObjects() == per && own.size() == static_cast<std::size_t>(per),
     "the pass holds " + std::to_string(per) + " GL objects: count " +
       std::to_string(pass->GetNumberOfGLObjects()) + ", names " + Describe(own));

@@ -6,9 +6,11 @@
 #include "vtkClusteredLightingShaderCode.h"
 
 #include "vtkActor.h"
+#include "vtkActor2D.h"
 #include "vtkCamera.h"
 #include "vtkCommand.h"
 #include "vtkDataObject.h"
+#include "vtkMapper2D.h"
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLFramebufferObject.h"
@@ -60,6 +62,30 @@ void GetViewport(const vtkRenderState* s, int origin[2], int size[2])
   {
     s->GetRenderer()->GetTiledSizeAndOrigin(size, size + 1, origin, origin + 1);
   }
+}
+
+/// Props whose opaque render writes no depth, so that nothing about them moves the
+/// prepass's depths: VTK's 2D actors whose mapper draws in the overlay only
+/// (vtkMapper2D::RenderOpaqueGeometry does nothing, and vtkOpenGLPolyDataMapper2D keeps
+/// it; label mappers override it and are not listed), and text, scalar bars and corner
+/// annotations, whose parts are such 2D actors.
+bool DrawsNoOpaqueDepth(vtkProp* prop)
+{
+  const char* name = prop->GetClassName();
+  if (std::strcmp(name, "vtkActor2D") == 0)
+  {
+    vtkMapper2D* mapper = static_cast<vtkActor2D*>(prop)->GetMapper();
+    return !mapper || std::strcmp(mapper->GetClassName(), "vtkOpenGLPolyDataMapper2D") == 0;
+  }
+  for (const char* overlay :
+    { "vtkTextActor", "vtkOpenGLTextActor", "vtkScalarBarActor", "vtkCornerAnnotation" })
+  {
+    if (std::strcmp(name, overlay) == 0)
+    {
+      return true;
+    }
+  }
+  return false;
 }
 
 /// 64-bit FNV-1a over the values mixed in.
@@ -407,6 +433,10 @@ std::uint64_t vtkClusteredLightingDepthPrepass::ComputeReuseSignature(
     h.Mix(prop);
     h.Mix(static_cast<std::uint64_t>(prop->GetVisibility()));
     if (!prop->GetVisibility())
+    {
+      continue;
+    }
+    if (DrawsNoOpaqueDepth(prop))
     {
       continue;
     }

@@ -30,12 +30,14 @@
  * A frame whose prepass would draw what the last one drew (ComputeReuseSignature: the
  * same renderer, framebuffer, viewport, camera and props, none of whose data, transforms
  * or properties changed) copies the last depths back instead
- * (vtkClusteredLightingSavedDepth, one per renderer) and keeps the last readback: a still camera
- * over moving lights, or a re-render of an unchanged scene, pays one depth copy instead of a second
- * geometry pass. Props whose depths could change without a modification time showing it make the
- * signature 0 (no reuse): anything but a plain vtkActor with a vtkPolyDataMapper drawing one piece,
- * shader replacements or UpdateShaderEvent observers (uniforms set per draw), and a depth buffer
- * the prepass does not clear.
+ * (vtkClusteredLightingSavedDepth, one per renderer) and keeps the last readback: a still
+ * camera over moving lights, or a re-render of an unchanged scene, pays one depth copy
+ * instead of a second geometry pass. Props whose depths could change without a
+ * modification time showing it make the signature 0 (no reuse): anything but a plain
+ * vtkActor with a vtkPolyDataMapper drawing one piece, or an overlay that writes no depth
+ * (2D actors with VTK's polydata mapper, text, scalar bars, corner annotations); shader
+ * replacements or UpdateShaderEvent observers (uniforms set per draw); and a depth
+ * buffer the prepass does not clear.
  *
  * While rendering it notes what each program writes to depth (NoteProgram): VTK's
  * coincident-topology offset (gl_FragDepth = gl_FragCoord.z + cOffset / 65000) widens

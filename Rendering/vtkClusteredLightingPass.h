@@ -510,9 +510,11 @@ public:
    * keeps its readback) instead of drawing the opaque geometry again; the image is the
    * same bit for bit. Only props whose modification times cover everything that moves
    * their depths take part: plain vtkActors with a vtkPolyDataMapper drawing one piece,
-   * without shader replacements or UpdateShaderEvent observers; any other visible prop
-   * (an LOD actor, a glyph or composite mapper, a 2D actor, a volume) makes every frame
-   * draw its prepass, as does a renderer that keeps the depth buffer of an earlier one.
+   * without shader replacements or UpdateShaderEvent observers, and overlays that write
+   * no depth (2D actors with VTK's polydata mapper, text, scalar bars, corner
+   * annotations); any other visible prop (an LOD actor, a follower, a glyph or composite
+   * mapper, cube axes, a volume) makes every frame draw its prepass, as does a renderer
+   * that keeps the depth buffer of an earlier one (GetDepthPrepassReuseProblem names it).
    * Costs one depth copy per prepass frame and a depth buffer's memory
    * (GetDepthPrepassReused says whether the last frame reused; docs/depth.md).
    * Default is on.

@@ -13,7 +13,11 @@ texture-mapped and colour-mapped surfaces, text, a scalar bar and cube axes. Che
  2. the pass clusters the 2 positional lights;
  3. nothing reaches VTK's output window as an error (a shader that fails to build there
     would; VTK's GPU volume ray caster did until 2026-11-28, see
-    TestClusteredLightingVolumes).
+    TestClusteredLightingVolumes);
+ 4. the third, still frame copies the depth prepass back (ReuseDepthPrepass) where every
+    prop allows it: plain surfaces, textured or colour-mapped, and beside them overlays
+    that write no depth (text, a scalar bar, a corner annotation, a 2D actor), the image
+    the same as with the reuse off; cube axes make the frame draw and are named.
 Exits with status 1 when a check failed.
 """
 
@@ -26,19 +30,26 @@ from vtkmodules.vtkCommonCore import vtkStringOutputWindow
 from vtkmodules.vtkFiltersCore import vtkElevationFilter
 from vtkmodules.vtkFiltersExtraction import vtkExtractEdges
 from vtkmodules.vtkFiltersSources import (
+    vtkPlaneSource,
     vtkPointSource,
     vtkSphereSource,
     vtkTexturedSphereSource,
 )
 from vtkmodules.vtkImagingCore import vtkRTAnalyticSource
 from vtkmodules.vtkImagingSources import vtkImageCanvasSource2D
-from vtkmodules.vtkRenderingAnnotation import vtkCubeAxesActor, vtkScalarBarActor
+from vtkmodules.vtkRenderingAnnotation import (
+    vtkCornerAnnotation,
+    vtkCubeAxesActor,
+    vtkScalarBarActor,
+)
 from vtkmodules.vtkRenderingCore import (
     vtkActor,
+    vtkActor2D,
     vtkImageActor,
     vtkLight,
     vtkPointGaussianMapper,
     vtkPolyDataMapper,
+    vtkPolyDataMapper2D,
     vtkRenderer,
     vtkRenderWindow,
     vtkTextActor,
@@ -159,8 +170,33 @@ def annotations(ren):
     ren.AddActor(axes)
 
 
-def render(build, use_pass, positional):
-    """The scene's pixels (rows x columns x RGB) and the pass's clustered light count."""
+def overlays(ren):
+    surface(ren, sphere())
+    text = vtkTextActor()
+    text.SetInput("clustered")
+    ren.AddActor2D(text)
+    lut = vtkLookupTable()
+    lut.Build()
+    bar = vtkScalarBarActor()
+    bar.SetLookupTable(lut)
+    ren.AddActor2D(bar)
+    corner = vtkCornerAnnotation()
+    corner.SetText(2, "still")
+    ren.AddViewProp(corner)
+    rectangle = vtkPlaneSource()  # in viewport pixels (no transform coordinate)
+    rectangle.SetOrigin(10, 10, 0)
+    rectangle.SetPoint1(50, 10, 0)
+    rectangle.SetPoint2(10, 30, 0)
+    mapper = vtkPolyDataMapper2D()
+    mapper.SetInputConnection(rectangle.GetOutputPort())
+    box = vtkActor2D()
+    box.SetMapper(mapper)
+    ren.AddActor2D(box)
+
+
+def render(build, use_pass, positional, reuse=True):
+    """The scene's pixels (rows x columns x RGB), the pass's clustered light count, and
+    whether its second frame reused the depth prepass, with the reason if not."""
     vtkMath.RandomSeed(7)  # the same random points in every window
     window = vtkRenderWindow()
     window.SetSize(WIDTH, HEIGHT)
@@ -181,9 +217,16 @@ def render(build, use_pass, positional):
             ren.AddLight(light)
     clustered_pass = vtkClusteredLightingPass() if use_pass else None
     if clustered_pass:
+        clustered_pass.SetReuseDepthPrepass(reuse)
         ren.SetPass(clustered_pass)
-    window.Render()
-    window.Render()
+    # The first frame creates what VTK makes on demand (a mapper's lookup table, say),
+    # which modifies the props: the third is the first whose prepass may be the second's.
+    for _ in range(3):
+        window.Render()
+    reused = None
+    if clustered_pass:  # before the grab, which renders again
+        reused = (clustered_pass.GetDepthPrepassReused(),
+                  clustered_pass.GetDepthPrepassReuseProblem())
     grab = vtkWindowToImageFilter()
     grab.SetInput(window)
     grab.ReadFrontBufferOff()
@@ -193,20 +236,20 @@ def render(build, use_pass, positional):
     count = clustered_pass.GetNumberOfClusteredLights() if clustered_pass else None
     if clustered_pass:
         clustered_pass.ReleaseGraphicsResources(window)
-    return pixels, count
+    return pixels, count, reused
 
 
 def main():
     output = vtkStringOutputWindow()
     vtkOutputWindow.SetInstance(output)
     scenes = [points_as_spheres, lines_as_tubes, point_gaussian, image_actor, textured,
-              colour_mapped, annotations]
+              colour_mapped, annotations, overlays]
     for build in scenes:
         name = build.__name__
-        stock_head, _ = render(build, False, False)
+        stock_head, _, _ = render(build, False, False)
         for positional in (False, True):
-            stock, _ = render(build, False, positional)
-            clustered, count = render(build, True, positional)
+            stock, _, _ = render(build, False, positional)
+            clustered, count, (reused, problem) = render(build, True, positional)
             worst = int(abs(stock - clustered).max())
             lights = "two positional lights" if positional else "headlight"
             check(worst <= 1, "%s, %s: within 1 step of stock VTK (max %d)" % (name, lights, worst))
@@ -215,6 +258,16 @@ def main():
                 lit = int((abs(stock - stock_head).max(axis=2) > 8).sum())
                 if name not in ("image_actor", "point_gaussian"):  # unlit in VTK too
                     check(lit > 500, "%s: the positional lights change %d pixels" % (name, lit))
+                if name in ("textured", "colour_mapped", "overlays"):
+                    check(reused, "%s: the still frame reuses the depth prepass (%s)"
+                          % (name, problem))
+                    drawn, _, (again, _) = render(build, True, positional, reuse=False)
+                    same = int(abs(clustered - drawn).max())
+                    check(not again and same == 0,
+                          "%s: the same image with the prepass drawn (max %d)" % (name, same))
+                if name == "annotations":
+                    check(not reused and "vtkCubeAxesActor" in problem,
+                          "%s: cube axes make the frame draw its prepass (%s)" % (name, problem))
     errors = [line for line in output.GetOutput().splitlines() if "ERROR" in line]
     check(not errors, "no error in VTK's output window: %s" % (errors[:3],))
     if FAILURES:

@@ -154,8 +154,7 @@ def colour_mapped(ren):
     surface(ren, elevation, lambda actor, mapper: mapper.InterpolateScalarsBeforeMappingOn())
 
 
-def annotations(ren):
-    actor = surface(ren, sphere())
+def text_and_scalar_bar(ren):
     text = vtkTextActor()
     text.SetInput("clustered")
     ren.AddActor2D(text)
@@ -164,6 +163,11 @@ def annotations(ren):
     bar = vtkScalarBarActor()
     bar.SetLookupTable(lut)
     ren.AddActor2D(bar)
+
+
+def annotations(ren):
+    actor = surface(ren, sphere())
+    text_and_scalar_bar(ren)
     axes = vtkCubeAxesActor()
     axes.SetBounds(actor.GetBounds())
     axes.SetCamera(ren.GetActiveCamera())
@@ -172,14 +176,7 @@ def annotations(ren):
 
 def overlays(ren):
     surface(ren, sphere())
-    text = vtkTextActor()
-    text.SetInput("clustered")
-    ren.AddActor2D(text)
-    lut = vtkLookupTable()
-    lut.Build()
-    bar = vtkScalarBarActor()
-    bar.SetLookupTable(lut)
-    ren.AddActor2D(bar)
+    text_and_scalar_bar(ren)
     corner = vtkCornerAnnotation()
     corner.SetText(2, "still")
     ren.AddViewProp(corner)

@@ -134,6 +134,41 @@ void vtkClusteredLightingDepthPrepass::Render(const vtkRenderState* s)
 }
 
 //------------------------------------------------------------------------------
+// The last frame's depths, when nothing they depend on changed (ComputeReuseSignature);
+// what that frame noted about its programs and read back stays valid with them.
+bool vtkClusteredLightingDepthPrepass::RestoreDepth(const vtkRenderState* s,
+  vtkOpenGLRenderWindow* rw, bool finish, vtkClusteredLightingSavedDepth* saved,
+  std::uint64_t reuse)
+{
+  this->Reused = false;
+  if (!saved || reuse == 0 || reuse != this->SavedSignature)
+  {
+    return false;
+  }
+  if (finish)
+  {
+    glFinish();
+  }
+  const auto t0 = std::chrono::steady_clock::now();
+  int size[2] = { 0, 0 };
+  int origin[2] = { 0, 0 };
+  GetViewport(s, origin, size);
+  if (!saved->Restore(rw, origin, size))
+  {
+    return false;
+  }
+  this->FrameSignature = reuse;
+  this->Reused = true;
+  if (finish)
+  {
+    glFinish();
+  }
+  this->RenderTime =
+    std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  return true;
+}
+
+//------------------------------------------------------------------------------
 int vtkClusteredLightingDepthPrepass::RenderDepth(const vtkRenderState* s,
   vtkOpenGLRenderWindow* rw, bool finish, vtkClusteredLightingSampleDepths* sampleDepths,
   vtkClusteredLightingSavedDepth* saved, std::uint64_t reuse)
@@ -154,25 +189,8 @@ int vtkClusteredLightingDepthPrepass::RenderDepth(const vtkRenderState* s,
   this->Size[1] = size[1];
   this->Origin[0] = origin[0];
   this->Origin[1] = origin[1];
-
-  // The last frame's depths, when nothing they depend on changed (ComputeReuseSignature);
-  // what that frame noted about its programs and read back stays valid with them.
-  if (!saved)
-  {
-    reuse = 0;
-  }
-  this->FrameSignature = reuse;
-  this->Reused = reuse != 0 && reuse == this->SavedSignature && saved->Restore(rw, origin, size);
-  if (this->Reused)
-  {
-    if (finish)
-    {
-      glFinish();
-    }
-    this->RenderTime =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-    return this->SavedRendered;
-  }
+  this->FrameSignature = saved ? reuse : 0;
+  this->Reused = false;
   this->MaxCoincidentOffset = 0.0;
   this->UnknownDepthWrites = false;
   this->UnrecordedDepths = false;
@@ -254,10 +272,9 @@ int vtkClusteredLightingDepthPrepass::RenderDepth(const vtkRenderState* s,
   glBindVertexArray(static_cast<GLuint>(vertexArray));
   // Kept for the next frames with the same signature.
   this->SavedSignature = 0;
-  if (reuse != 0 && saved->Save(rw, origin, size))
+  if (this->FrameSignature != 0 && saved->Save(rw, origin, size))
   {
-    this->SavedSignature = reuse;
-    this->SavedRendered = rendered;
+    this->SavedSignature = this->FrameSignature;
   }
   if (finish)
   {

@@ -80,11 +80,17 @@ public:
   /// the next GL work). With `sampleDepths` and a multisampled framebuffer, records the
   /// depths of the fragments through it (for ReadDepth). Returns the number of props
   /// rendered. With `saved` (the renderer's) and a non-zero `reuse`
-  /// (ComputeReuseSignature): equal to the last frame's, copies that frame's depths back
-  /// instead of drawing when it can (GetReused); a frame that draws saves its depths.
+  /// (ComputeReuseSignature), saves the depths for RestoreDepth in a later frame.
   int RenderDepth(const vtkRenderState* s, vtkOpenGLRenderWindow* rw, bool finish,
     vtkClusteredLightingSampleDepths* sampleDepths = nullptr,
     vtkClusteredLightingSavedDepth* saved = nullptr, std::uint64_t reuse = 0);
+
+  /// Instead of RenderDepth: copies the depths RenderDepth last saved back into the
+  /// framebuffer when `reuse` (non-zero, ComputeReuseSignature) equals that frame's and
+  /// the copy can be exact. False (nothing done; RenderDepth draws) otherwise. `finish`
+  /// as for RenderDepth. The last readback (ReadDepth) stays valid.
+  bool RestoreDepth(const vtkRenderState* s, vtkOpenGLRenderWindow* rw, bool finish,
+    vtkClusteredLightingSavedDepth* saved, std::uint64_t reuse);
 
   /// A hash of what the prepass's depths depend on, for RenderDepth's `reuse`; 0 when
   /// they may depend on something it cannot see (see above). `record`: the depths are to
@@ -93,10 +99,10 @@ public:
   static std::uint64_t ComputeReuseSignature(
     const vtkRenderState* s, vtkOpenGLRenderWindow* rw, bool record, std::string* why = nullptr);
 
-  /// Whether the last RenderDepth copied the depths back instead of drawing.
+  /// Whether the last RestoreDepth copied the depths back (RenderDepth clears it).
   bool GetReused() const { return this->Reused; }
-  /// Whether the depths of the last RenderDepth are kept for the next frame (saved or
-  /// reused, with a non-zero `reuse`).
+  /// Whether this frame's depths are kept for the next (saved by RenderDepth, or
+  /// restored by RestoreDepth).
   bool GetKept() const
   {
     return this->FrameSignature != 0 && this->SavedSignature == this->FrameSignature;
@@ -172,9 +178,8 @@ private:
 
   // Reuse (RenderDepth's `reuse`).
   std::uint64_t SavedSignature = 0; ///< of the frame whose depths were last saved (0: none)
-  std::uint64_t FrameSignature = 0; ///< this frame's `reuse`
+  std::uint64_t FrameSignature = 0; ///< this frame's `reuse` (0 without a saved depth)
   std::uint64_t DepthSignature = 0; ///< of the frame whose readback Depth holds (0: none)
-  int SavedRendered = 0;            ///< props that frame rendered
   bool Reused = false;
 };
 

@@ -674,23 +674,26 @@ void vtkClusteredLightingPass::RenderDepthPrepass(
 {
   vtkRenderer* ren = s->GetRenderer();
   vtkClusteredLightingDepthPrepass* prepass = this->Internals->Prepass;
-  // VTK's lighting code in the prepass's programs follows the renderer's lights: the same
-  // as in the shading render (the clustered lights hidden), so that each mapper keeps
-  // the same two programs from the first frame on.
-  this->HideClusteredLights(ren, *inputs.Lights);
-  this->UpdateLights(ren);
+  vtkClusteredLightingAssigner* assigner = this->Internals->GetAssigner(ren);
   // In a multisampled framebuffer depth-aware clusters need the fragments' own depths,
   // which the prepass then records (vtkClusteredLightingSampleDepths).
   const bool depthAware = this->DepthAwareClusters && inputs.Clustered;
-  // The last frame's depths where they still hold (ReuseDepthPrepass).
+  // The last frame's depths where they still hold (ReuseDepthPrepass), else a draw.
   const std::uint64_t reuse = this->ReuseDepthPrepass
     ? vtkClusteredLightingDepthPrepass::ComputeReuseSignature(
         s, rw, depthAware, &this->Internals->DepthReuseProblem)
     : 0;
-  vtkClusteredLightingAssigner* assigner = this->Internals->GetAssigner(ren);
-  prepass->RenderDepth(s, rw, this->MeasureTimings,
-    depthAware ? assigner->GetSampleDepths() : nullptr, assigner->GetSavedDepth(), reuse);
-  this->RestoreRendererLights(ren, *inputs.Lights);
+  if (!prepass->RestoreDepth(s, rw, this->MeasureTimings, assigner->GetSavedDepth(), reuse))
+  {
+    // VTK's lighting code in the prepass's programs follows the renderer's lights: the
+    // same as in the shading render (the clustered lights hidden), so that each mapper
+    // keeps the same two programs from the first frame on.
+    this->HideClusteredLights(ren, *inputs.Lights);
+    this->UpdateLights(ren);
+    prepass->RenderDepth(s, rw, this->MeasureTimings,
+      depthAware ? assigner->GetSampleDepths() : nullptr, assigner->GetSavedDepth(), reuse);
+    this->RestoreRendererLights(ren, *inputs.Lights);
+  }
   this->DepthPrepassUsed = true;
   this->DepthPrepassReused = prepass->GetReused();
   this->DepthPrepassKept = prepass->GetKept();

@@ -10,8 +10,10 @@
 #include "vtkCamera.h"
 #include "vtkCommand.h"
 #include "vtkDataObject.h"
+#include "vtkInformation.h"
 #include "vtkMapper2D.h"
 #include "vtkMatrix4x4.h"
+#include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -490,6 +492,16 @@ std::uint64_t vtkClusteredLightingDepthPrepass::ComputeReuseSignature(
     }
     // The actor's time covers its transform, property, backface property and texture;
     // the mapper's its own settings and its clipping planes' collection, not the planes.
+    // At an actor's first render under a pass, vtkOpenGLRenderPass::PreRender gives it
+    // information keys and vtkActor makes its property (GetProperty): both change its
+    // time after this frame's signature, and the next frame would draw again. Make
+    // them now, as that render will.
+    if (!actor->GetPropertyKeys())
+    {
+      vtkNew<vtkInformation> keys;
+      actor->SetPropertyKeys(keys);
+    }
+    actor->GetProperty();
     h.Mix(static_cast<std::uint64_t>(actor->GetMTime()));
     h.Mix(static_cast<std::uint64_t>(mapper->GetMTime()));
     if (vtkPlaneCollection* planes = mapper->GetClippingPlanes())

@@ -4,7 +4,8 @@
 // moves the depths makes it draw again. Each case changes one thing, renders with the
 // reuse on (and checks whether it reused), then renders the same scene with the reuse off
 // and compares the two images exactly:
-//  - still frames, and a moved light (lights do not change depths): reused;
+//  - still frames, and a moved light (lights do not change depths): reused, from the
+//    second frame of an actor whose property its first render made;
 //  - the camera, an actor's transform, its property (wireframe), an upstream source, the
 //    points of an input changed in place, a clipping plane moved in place, the window's
 //    size: drawn again;
@@ -183,6 +184,21 @@ int RunCases(int samples)
     "the follower is named as the reason");
   failed += scene.Check("follower removed", false, [&] { scene.Renderer->RemoveActor(follower); });
   failed += scene.Check("still without it", true, [] {});
+  // An actor whose property nobody asked for: vtkActor makes it at the actor's first
+  // render, which changes the actor's time. The frame after that first one reuses.
+  vtkNew<vtkActor> plain;
+  vtkNew<vtkPolyDataMapper> plainMapper;
+  vtkNew<vtkCubeSource> plainCube;
+  plainCube->SetCenter(-1.8, -0.5, 1.2);
+  plainMapper->SetInputConnection(plainCube->GetOutputPort());
+  plain->SetMapper(plainMapper);
+  scene.Renderer->AddActor(plain);
+  scene.Window->Render();
+  failed += Expect(!pass->GetDepthPrepassReused(), "an actor added: the prepass draws");
+  scene.Window->Render();
+  failed += Expect(pass->GetDepthPrepassReused(),
+    "the frame after the added actor's first render (which made its property) reuses");
+  failed += scene.Check("still with the added actor", true, [] {});
   return failed;
 }
 }

@@ -17,7 +17,8 @@ texture-mapped and colour-mapped surfaces, text, a scalar bar and cube axes. Che
  4. the third, still frame copies the depth prepass back (ReuseDepthPrepass) where every
     prop allows it: plain surfaces, textured or colour-mapped, and beside them overlays
     that write no depth (text, a scalar bar, a corner annotation, a 2D actor), the image
-    the same as with the reuse off; cube axes make the frame draw and are named.
+    the same as with the reuse off; the second frame too, but where a mapper made its
+    default lookup table in the first; cube axes make the frame draw and are named.
 Exits with status 1 when a check failed.
 """
 
@@ -193,7 +194,8 @@ def overlays(ren):
 
 def render(build, use_pass, positional, reuse=True):
     """The scene's pixels (rows x columns x RGB), the pass's clustered light count, and
-    whether its second frame reused the depth prepass, with the reason if not."""
+    whether its second and third frames reused the depth prepass, each with the reason
+    if not."""
     vtkMath.RandomSeed(7)  # the same random points in every window
     window = vtkRenderWindow()
     window.SetSize(WIDTH, HEIGHT)
@@ -216,14 +218,15 @@ def render(build, use_pass, positional, reuse=True):
     if clustered_pass:
         clustered_pass.SetReuseDepthPrepass(reuse)
         ren.SetPass(clustered_pass)
-    # The first frame creates what VTK makes on demand (a mapper's lookup table, say),
-    # which modifies the props: the third is the first whose prepass may be the second's.
+    # Three frames; whether the second and the third reused (read before the grab, which
+    # renders again).
+    reused = []
     for _ in range(3):
         window.Render()
-    reused = None
-    if clustered_pass:  # before the grab, which renders again
-        reused = (clustered_pass.GetDepthPrepassReused(),
-                  clustered_pass.GetDepthPrepassReuseProblem())
+        if clustered_pass:
+            reused.append((clustered_pass.GetDepthPrepassReused(),
+                           clustered_pass.GetDepthPrepassReuseProblem()))
+    reused = reused[1:] if clustered_pass else None
     grab = vtkWindowToImageFilter()
     grab.SetInput(window)
     grab.ReadFrontBufferOff()
@@ -246,7 +249,7 @@ def main():
         stock_head, _, _ = render(build, False, False)
         for positional in (False, True):
             stock, _, _ = render(build, False, positional)
-            clustered, count, (reused, problem) = render(build, True, positional)
+            clustered, count, ((second, _), (reused, problem)) = render(build, True, positional)
             worst = int(abs(stock - clustered).max())
             lights = "two positional lights" if positional else "headlight"
             check(worst <= 1, "%s, %s: within 1 step of stock VTK (max %d)" % (name, lights, worst))
@@ -256,9 +259,15 @@ def main():
                 if name not in ("image_actor", "point_gaussian"):  # unlit in VTK too
                     check(lit > 500, "%s: the positional lights change %d pixels" % (name, lit))
                 if name in ("textured", "colour_mapped", "overlays"):
-                    check(reused, "%s: the still frame reuses the depth prepass (%s)"
+                    check(reused, "%s: the third, still frame reuses the depth prepass (%s)"
                           % (name, problem))
-                    drawn, _, (again, _) = render(build, True, positional, reuse=False)
+                    # The first frame makes the property (and keys) every actor gets then,
+                    # which the signature makes beforehand, so the second reuses; not so
+                    # a mapper's default lookup table, made when it first maps scalars.
+                    check(second == (name != "colour_mapped"),
+                          "%s: the second frame %s" % (name, "draws (the mapper's lookup "
+                          "table is new)" if name == "colour_mapped" else "reuses too"))
+                    drawn, _, (_, (again, _)) = render(build, True, positional, reuse=False)
                     same = int(abs(clustered - drawn).max())
                     check(not again and same == 0,
                           "%s: the same image with the prepass drawn (max %d)" % (name, same))

@@ -96,12 +96,10 @@ struct PixelCounts
   bool Read = true; ///< false when the framebuffer could not be read (multisampled)
 };
 
-/// Reads the renderer's viewport back from the framebuffer the delegate drew into: its
-/// window depths and (when asked) its RGBA bytes. False when it cannot be read.
-bool ReadViewport(const vtkRenderState* s, vtkOpenGLRenderWindow* rw, std::vector<float>& depth,
-  std::vector<unsigned char>* rgba)
+/// Where the renderer's viewport lies in the framebuffer the delegate drew into: the whole
+/// of a framebuffer object the render state names, else the renderer's tiled viewport.
+void GetReadRectangle(const vtkRenderState* s, int& width, int& height, int& x0, int& y0)
 {
-  int width = 0, height = 0, x0 = 0, y0 = 0;
   if (auto* fbo = vtkOpenGLFramebufferObject::SafeDownCast(s->GetFrameBuffer()))
   {
     int size[2] = { 0, 0 };
@@ -113,6 +111,15 @@ bool ReadViewport(const vtkRenderState* s, vtkOpenGLRenderWindow* rw, std::vecto
   {
     s->GetRenderer()->GetTiledSizeAndOrigin(&width, &height, &x0, &y0);
   }
+}
+
+/// Reads the renderer's viewport back from the framebuffer the delegate drew into: its
+/// window depths and (when asked) its RGBA bytes. False when it cannot be read.
+bool ReadViewport(const vtkRenderState* s, vtkOpenGLRenderWindow* rw, std::vector<float>& depth,
+  std::vector<unsigned char>* rgba)
+{
+  int width = 0, height = 0, x0 = 0, y0 = 0;
+  GetReadRectangle(s, width, height, x0, y0);
   if (width <= 0 || height <= 0)
   {
     return false;
@@ -137,11 +144,69 @@ bool ReadViewport(const vtkRenderState* s, vtkOpenGLRenderWindow* rw, std::vecto
   return ok;
 }
 
-/// Pixels of the renderer's viewport whose depth is below the far plane.
+/// The depths of the renderer's viewport in a multisampled draw framebuffer, which cannot
+/// be read: glBlitFramebuffer resolves them into a single-sampled copy (one of each pixel's
+/// samples), which is read. False when the copy cannot be made.
+bool ReadResolvedDepth(
+  const vtkRenderState* s, vtkOpenGLRenderWindow* rw, std::vector<float>& depth)
+{
+  int width = 0, height = 0, x0 = 0, y0 = 0;
+  GetReadRectangle(s, width, height, x0, y0);
+  vtkOpenGLState* state = rw->GetState();
+  unsigned int drawBinding = 0, drawBuffer = 0;
+  state->GetCurrentDrawFramebufferState(drawBinding, drawBuffer);
+  const unsigned int format = vtkClusteredLightingQueryDepthFormat(drawBinding);
+  if (width <= 0 || height <= 0 || format == 0)
+  {
+    return false;
+  }
+  GLuint renderbuffer = 0, framebuffer = 0;
+  GLint boundRenderbuffer = 0;
+  glGetIntegerv(GL_RENDERBUFFER_BINDING, &boundRenderbuffer);
+  glGenRenderbuffers(1, &renderbuffer);
+  glBindRenderbuffer(GL_RENDERBUFFER, renderbuffer);
+  glRenderbufferStorage(GL_RENDERBUFFER, format, width, height);
+  glBindRenderbuffer(GL_RENDERBUFFER, static_cast<GLuint>(boundRenderbuffer));
+  glGenFramebuffers(1, &framebuffer);
+  state->PushFramebufferBindings();
+  state->vtkglBindFramebuffer(GL_READ_FRAMEBUFFER, drawBinding);
+  state->vtkglBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer);
+  glFramebufferRenderbuffer(
+    GL_DRAW_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, renderbuffer);
+  bool ok = glCheckFramebufferStatus(GL_DRAW_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
+  if (ok)
+  {
+    // A blit writes through the scissor test and the depth mask: neither may clip it.
+    vtkOpenGLState::ScopedglEnableDisable savedScissorTest(state, GL_SCISSOR_TEST);
+    vtkOpenGLState::ScopedglDepthMask savedDepthMask(state);
+    state->vtkglDisable(GL_SCISSOR_TEST);
+    state->vtkglDepthMask(GL_TRUE);
+    state->vtkglBlitFramebuffer(
+      x0, y0, x0 + width, y0 + height, 0, 0, width, height, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+    state->vtkglBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer);
+    state->vtkglPixelStorei(GL_PACK_ALIGNMENT, 1);
+    depth.resize(static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
+    glReadPixels(0, 0, width, height, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
+  }
+  state->PopFramebufferBindings();
+  glDeleteFramebuffers(1, &framebuffer);
+  glDeleteRenderbuffers(1, &renderbuffer);
+  while (glGetError() != GL_NO_ERROR)
+  {
+    ok = false;
+  }
+  return ok;
+}
+
+/// Pixels of the renderer's viewport whose depth is below the far plane (in a
+/// multisampled framebuffer, one sample of each pixel: ReadResolvedDepth). 0 when the
+/// depths cannot be read.
 std::size_t CountVisiblePixels(const vtkRenderState* s, vtkOpenGLRenderWindow* rw)
 {
   std::vector<float> depth;
-  if (!ReadViewport(s, rw, depth, nullptr))
+  GLint samples = 0;
+  glGetIntegerv(GL_SAMPLES, &samples);
+  if (!(samples > 0 ? ReadResolvedDepth(s, rw, depth) : ReadViewport(s, rw, depth, nullptr)))
   {
     return 0;
   }
@@ -1038,8 +1103,14 @@ void vtkClusteredLightingPass::RenderDelegate(const vtkRenderState* s,
   this->LastShadingTime = this->MeasureTimings ? Milliseconds(s1, s2) : Milliseconds(s0, s2);
   if (countFragments)
   {
+    // The queries count samples: a multisampled framebuffer's fully covered fragment
+    // passes all of its samples.
+    GLint samples = 0;
+    glGetIntegerv(GL_SAMPLES, &samples);
     const std::size_t visible = CountVisiblePixels(s, rw);
-    const double perPixel = visible > 0 ? 1.0 / static_cast<double>(visible) : 0.0;
+    const double perPixel = visible > 0
+      ? 1.0 / (static_cast<double>(visible) * static_cast<double>(std::max(samples, 1)))
+      : 0.0;
     // VTK's SSAO draws two full-viewport quads of its own in the opaque step.
     const bool opaqueMeasured =
       this->Internals->OpaqueStep->GetLastMethod() != vtkClusteredLightingOpaqueStep::Method::SSAO;

@@ -690,8 +690,9 @@ public:
   vtkGetMacro(NonEmptyClusterFraction, double);
   /// Fragments of the last shading render that passed the depth test (so were shaded by a
   /// GPU with early depth tests), per pixel showing opaque geometry, with MeasureTimings
-  /// on (GL_SAMPLES_PASSED queries); 0 when not measured. The sum of the two parts below,
-  /// or -1 when either was not measured.
+  /// on (GL_SAMPLES_PASSED queries; in a multisampled framebuffer the samples passed over
+  /// the sample count, edge pixels counting part of a fragment); 0 when not measured. The sum of
+  /// the two parts below, or -1 when either was not measured.
   double GetShadedFragmentsPerVisiblePixel()
   {
     return this->ShadedOpaqueFragmentsPerVisiblePixel < 0.0 ||

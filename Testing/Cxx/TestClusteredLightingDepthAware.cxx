@@ -441,6 +441,25 @@ int TestClusteredLightingDepthAware(int, char*[])
         msMessages->Warnings[0].find("evaluated per pixel could not be read") != std::string::npos,
       "8 samples: depth-aware clusters on without a warning; one says that the pass cannot "
       "count the lights evaluated per pixel there");
+    // Fragments shaded per visible pixel there: the queries count samples (the pass divides
+    // by the sample count) and the visible pixels come from a resolved copy of the depths.
+    msPass->SetMeasureTimings(true);
+    msPass->SetDepthPrepass(false);
+    msPass->SetDepthAwareClusters(false);
+    msWindow->Render();
+    const double msShadedOff = msPass->GetShadedFragmentsPerVisiblePixel();
+    msPass->SetDepthPrepass(true);
+    msPass->SetDepthAwareClusters(true);
+    msWindow->Render();
+    const double msShadedOn = msPass->GetShadedFragmentsPerVisiblePixel();
+    msPass->SetMeasureTimings(false);
+    std::printf("8 samples: fragments passing the depth test per visible pixel: %.4f with the "
+                "prepass, %.4f without\n",
+      msShadedOn, msShadedOff);
+    // Edge pixels pass some of their samples, and the resolved depth keeps one of them.
+    Check(msShadedOn > 0.98 && msShadedOn < 1.02,
+      "8 samples: the prepass shades each visible pixel once");
+    Check(msShadedOff > msShadedOn + 0.05, "8 samples: without it hidden fragments are shaded too");
 
     // Translucent geometry is shaded at pixel centres that no opaque sample bounds:
     // depth-aware clusters off, said once, and the image stays the same.

@@ -184,8 +184,8 @@ int RunCases(int samples)
     "the follower is named as the reason");
   failed += scene.Check("follower removed", false, [&] { scene.Renderer->RemoveActor(follower); });
   failed += scene.Check("still without it", true, [] {});
-  // An actor whose property nobody asked for: vtkActor makes it at the actor's first
-  // render, which changes the actor's time. The frame after that first one reuses.
+  // An actor added without a property: at its first render under the pass VTK gives it
+  // information keys and a property, which changes its time. The frame after reuses.
   vtkNew<vtkActor> plain;
   vtkNew<vtkPolyDataMapper> plainMapper;
   vtkNew<vtkCubeSource> plainCube;

@@ -314,6 +314,9 @@ struct vtkClusteredLightingPass::vtkInternals
     vtkWeakPointer<vtkRenderer> Renderer;
     std::unique_ptr<vtkClusteredLightingAssigner> Assigner;
     vtkClusteredLighting::PrepassChooser Chooser; ///< AutomaticDepthPrepass
+    /// The renderer's own prepass: its readback and the signature of the depths it saved
+    /// (ReuseDepthPrepass), so that renderers sharing the pass each reuse theirs.
+    vtkSmartPointer<vtkClusteredLightingDepthPrepass> Prepass;
   };
   std::map<vtkRenderer*, RendererEntry> Renderers;
   std::vector<vtkSmartPointer<vtkClusteredLightSet>> LightSets;
@@ -327,9 +330,8 @@ struct vtkClusteredLightingPass::vtkInternals
   vtkNew<vtkClusteredLightingTranslucentStep> TranslucentStep;
   vtkNew<vtkClusteredLightingVolumetricStep> VolumetricStep;
   vtkTimeStamp ShaderStageTime;
-  vtkNew<vtkLight> PlaceholderLight; ///< keeps VTK's lit code when every light is clustered
-  vtkNew<vtkLight> ComplexityLight;  ///< keeps VTK's lighting complexity (switched off)
-  vtkNew<vtkClusteredLightingDepthPrepass> Prepass;
+  vtkNew<vtkLight> PlaceholderLight;  ///< keeps VTK's lit code when every light is clustered
+  vtkNew<vtkLight> ComplexityLight;   ///< keeps VTK's lighting complexity (switched off)
   std::set<std::size_t> BuiltSources; ///< hashes of the shader sources built (NumberOfShaderBuilds)
   vtkClusteredLighting::DepthImage Depths;         ///< the prepass's readback, during Render()
   std::string ReportedDepthProblem;                ///< why depth-aware clusters are off, said once
@@ -353,8 +355,16 @@ struct vtkClusteredLightingPass::vtkInternals
     {
       entry.Renderer = ren;
       entry.Assigner.reset(new vtkClusteredLightingAssigner);
+      entry.Prepass = vtkSmartPointer<vtkClusteredLightingDepthPrepass>::New();
     }
     return entry.Assigner.get();
+  }
+
+  /// The prepass of `ren` (GetAssigner makes it with the renderer's entry).
+  vtkClusteredLightingDepthPrepass* GetPrepass(vtkRenderer* ren)
+  {
+    this->GetAssigner(ren);
+    return this->Renderers[ren].Prepass;
   }
 };
 
@@ -738,8 +748,8 @@ void vtkClusteredLightingPass::RenderDepthPrepass(
   const vtkRenderState* s, vtkOpenGLRenderWindow* rw, vtkClusteredLightingAssignerInputs& inputs)
 {
   vtkRenderer* ren = s->GetRenderer();
-  vtkClusteredLightingDepthPrepass* prepass = this->Internals->Prepass;
   vtkClusteredLightingAssigner* assigner = this->Internals->GetAssigner(ren);
+  vtkClusteredLightingDepthPrepass* prepass = this->Internals->GetPrepass(ren);
   // In a multisampled framebuffer depth-aware clusters need the fragments' own depths,
   // which the prepass then records (vtkClusteredLightingSampleDepths).
   const bool depthAware = this->DepthAwareClusters && inputs.Clustered;

@@ -10,11 +10,13 @@
 //    points of an input changed in place, a clipping plane moved in place, the window's
 //    size: drawn again;
 //  - a prop the signature cannot vouch for (a vtkFollower): never reused;
-//  - the same in a multisampled window with depth-aware clusters (the recorded depths).
+//  - the same in a multisampled window with depth-aware clusters (the recorded depths);
+//  - two renderers sharing the pass: each reuses its own depths.
 // The lights are as users write them (inverse-square, no radius), so the far field and the
 // depth-aware clusters are on.
 #include "ClusteredLightingTestUtilities.h"
 
+#include "vtkCallbackCommand.h"
 #include "vtkClusteredLightSet.h"
 #include "vtkCubeSource.h"
 #include "vtkFollower.h"
@@ -203,9 +205,78 @@ int RunCases(int samples)
 }
 }
 
+/// Whether a renderer's frame reused its prepass, read as the renderer ends.
+struct ReuseWatch
+{
+  vtkClusteredLightingPass* Pass = nullptr;
+  bool Reused = false;
+  static void Ended(vtkObject*, unsigned long, void* watch, void*)
+  {
+    auto* w = static_cast<ReuseWatch*>(watch);
+    w->Reused = w->Pass->GetDepthPrepassReused();
+  }
+};
+
+/// Two renderers side by side sharing one pass: each keeps its own prepass depths and
+/// reuses them on still frames, though the other renders in between; a camera turned in
+/// one makes that one draw. The image is the same as with the reuse off.
+int RunSharedPass()
+{
+  std::printf("--- two renderers sharing a pass\n");
+  vtkNew<vtkRenderWindow> window;
+  vtkNew<vtkRenderer> left;
+  vtkNew<vtkRenderer> right;
+  ClusteredLightingTest::SetUpTestScene(window, left, 300, 150);
+  ClusteredLightingTest::SetUpTestScene(window, right, 300, 150);
+  left->AutomaticLightCreationOff();
+  right->AutomaticLightCreationOff();
+  left->SetViewport(0.0, 0.0, 0.5, 1.0);
+  right->SetViewport(0.5, 0.0, 1.0, 1.0);
+  right->GetActiveCamera()->Azimuth(40.0);
+  right->ResetCameraClippingRange();
+  vtkNew<vtkClusteredLightSet> lights;
+  ClusteredLightingTest::MakeUserLights(lights, 300, 0.3, 7);
+  vtkNew<vtkClusteredLightingPass> pass;
+  pass->AddLightSet(lights);
+  pass->AutomaticDepthPrepassOff();
+  left->SetPass(pass);
+  right->SetPass(pass);
+  ReuseWatch watches[2];
+  vtkRenderer* renderers[2] = { left, right };
+  for (int i = 0; i < 2; ++i)
+  {
+    watches[i].Pass = pass;
+    vtkNew<vtkCallbackCommand> ended;
+    ended->SetClientData(&watches[i]);
+    ended->SetCallback(&ReuseWatch::Ended);
+    renderers[i]->AddObserver(vtkCommand::EndEvent, ended);
+  }
+  int failed = 0;
+  window->Render();
+  failed += Expect(!watches[0].Reused && !watches[1].Reused, "first frame: both draw");
+  window->Render();
+  failed += Expect(watches[0].Reused && watches[1].Reused, "still frame: both reuse their own");
+  const std::vector<float> image = ClusteredLightingTest::CapturePixels(window);
+  pass->ReuseDepthPrepassOff();
+  window->Render();
+  failed += Expect(!watches[0].Reused && !watches[1].Reused, "reuse off: both draw");
+  const ClusteredLightingTest::ImageComparison c =
+    ClusteredLightingTest::CompareImages(image, ClusteredLightingTest::CapturePixels(window));
+  failed += Expect(c.MaxAbsError == 0.0, "the same image as without reuse");
+  pass->ReuseDepthPrepassOn();
+  window->Render();
+  right->GetActiveCamera()->Azimuth(10.0);
+  right->ResetCameraClippingRange();
+  window->Render();
+  failed += Expect(watches[0].Reused && !watches[1].Reused,
+    "one camera turned: that renderer draws, the other reuses");
+  return failed;
+}
+
 int TestClusteredLightingReuseDepth(int, char*[])
 {
   int failed = RunCases(0);
   failed += RunCases(8);
+  failed += RunSharedPass();
   return failed == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

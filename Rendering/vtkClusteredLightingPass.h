@@ -710,7 +710,8 @@ public:
   /// (order-independent translucency draws one unlit full-viewport quad, which is not
   /// counted). -1 when the renderer peels translucent geometry in depth (UseDepthPeeling):
   /// depth peeling counts samples with the same kind of query, which cannot run twice at
-  /// once, so nothing is counted while it renders.
+  /// once, so nothing is counted while it renders; -1 too for translucent geometry in a
+  /// multisampled framebuffer (its layers are drawn single-sampled, then composited).
   vtkGetMacro(ShadedTranslucentFragmentsPerVisiblePixel, double);
   /// Number of lights split into near and far parts in the last render.
   vtkGetMacro(NumberOfFarFieldLights, int);

@@ -73,6 +73,12 @@ void vtkClusteredLightingTranslucentStep::Render(const vtkRenderState* s)
   if (this->Counting)
   {
     this->EndQuery(); // the opaque part ends here
+    GLint samples = 0;
+    glGetIntegerv(GL_SAMPLES, &samples);
+    if (translucent && samples > 0)
+    {
+      this->TranslucentMeasured = false; // single-sampled layers, multisampled composite
+    }
     if (!peeling)
     {
       this->CompositeSamples = translucent ? CountCompositeSamples(s) : 0;

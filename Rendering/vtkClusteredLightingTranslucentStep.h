@@ -21,7 +21,10 @@
  *     that many are subtracted, once, when the step had translucent geometry to render.
  *     Depth peeling runs GL_SAMPLES_PASSED queries of its own (its occlusion ratio), and
  *     only one query of a target may be active: none of ours is active while it renders,
- *     and the translucent part is not measured.
+ *     and the translucent part is not measured. Nor is it in a multisampled framebuffer:
+ *     order-independent translucency draws the layers into single-sampled textures and
+ *     composites them into the multisampled one, and the query cannot tell the two
+ *     counts apart (a translucent sphere read 0 there, 0.118 single-sampled).
  *
  * What comes after this step (volumes, overlays) is not counted.
  *
@@ -53,7 +56,9 @@ public:
   {
     std::uint64_t Opaque = 0;
     std::uint64_t Translucent = 0;
-    bool TranslucentMeasured = true; ///< false: depth peeling rendered translucent geometry
+    /// false: depth peeling, or translucency in a multisampled framebuffer, rendered
+    /// translucent geometry
+    bool TranslucentMeasured = true;
   };
 
   /// Ends counting (waits for the queries' results).

@@ -468,6 +468,16 @@ int TestClusteredLightingDepthAware(int, char*[])
     msGlass->GetProperty()->SetOpacity(0.4);
     msRen->AddActor(msGlass);
     CheckCase("8 samples, translucent sphere", msWindow, msRen, msPass, false, true, true);
+    // Its translucent fragments cannot be counted there: order-independent translucency
+    // draws them single-sampled and composites them into the multisampled framebuffer.
+    msPass->SetMeasureTimings(true);
+    msWindow->Render();
+    msPass->SetMeasureTimings(false);
+    const double msOpaque = msPass->GetShadedOpaqueFragmentsPerVisiblePixel();
+    Check(msPass->GetShadedTranslucentFragmentsPerVisiblePixel() == -1.0 &&
+        msPass->GetShadedFragmentsPerVisiblePixel() == -1.0 && msOpaque > 0.98 && msOpaque < 1.02,
+      "8 samples, translucent sphere: the opaque fragments counted (" + std::to_string(msOpaque) +
+        "), the translucent ones said not to be (-1)");
     Check(msMessages->Warnings.size() == 2 &&
         msMessages->Warnings[1].find("multisampled and has translucent geometry") !=
           std::string::npos,

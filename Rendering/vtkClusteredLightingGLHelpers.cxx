@@ -111,6 +111,24 @@ std::vector<float> vtkClusteredLightingQuerySamplePositions(int samples)
 }
 
 //------------------------------------------------------------------------------
+bool vtkClusteredLightingBlitDepth(vtkOpenGLState* state, const int from[4], int toX, int toY)
+{
+  // A blit writes through the scissor test and the depth mask: neither may clip it.
+  vtkOpenGLState::ScopedglEnableDisable savedScissorTest(state, GL_SCISSOR_TEST);
+  vtkOpenGLState::ScopedglDepthMask savedDepthMask(state);
+  state->vtkglDisable(GL_SCISSOR_TEST);
+  state->vtkglDepthMask(GL_TRUE);
+  state->vtkglBlitFramebuffer(from[0], from[1], from[0] + from[2], from[1] + from[3], toX, toY,
+    toX + from[2], toY + from[3], GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+  bool failed = false;
+  while (glGetError() != GL_NO_ERROR)
+  {
+    failed = true;
+  }
+  return !failed;
+}
+
+//------------------------------------------------------------------------------
 bool vtkClusteredLightingSetUniform4i(vtkShaderProgram* program, const char* name, const int v[4])
 {
   const int location = program->FindUniform(name);

@@ -18,7 +18,8 @@
  *  - vtkClusteredLightingSetUniform4i: vtkShaderProgram has no ivec4 setter in VTK 9.1;
  *  - vtkClusteredLightingDrawTargetClampsAtOne: whether the colour being drawn clamps;
  *  - vtkClusteredLightingQueryDepthFormat, vtkClusteredLightingQuerySamplePositions: what
- *    a copy of the draw framebuffer's depth must match (its format, its samples).
+ *    a copy of the draw framebuffer's depth must match (its format, its samples);
+ *  - vtkClusteredLightingBlitDepth: one such copy between the bound framebuffers.
  *
  * None of them makes a context current: callers do (see vtkClusteredLightingAssigner).
  */
@@ -52,6 +53,12 @@ unsigned int vtkClusteredLightingQueryDepthFormat(unsigned int binding);
 
 /// The positions of the current draw framebuffer's `samples` samples (x, y each).
 std::vector<float> vtkClusteredLightingQuerySamplePositions(int samples);
+
+/// Copies the depths of the bound read framebuffer's rectangle `from` (x, y, width,
+/// height) to (toX, toY) of the bound draw framebuffer with glBlitFramebuffer (from a
+/// multisampled one into a single-sampled one it keeps one sample per pixel), lifting the
+/// scissor test and the depth mask while it copies. False on a GL error.
+bool vtkClusteredLightingBlitDepth(vtkOpenGLState* state, const int from[4], int toX, int toY);
 
 /// ivec4 uniform setter (the program must be bound). Returns false if the program does
 /// not use the uniform.

@@ -173,16 +173,11 @@ bool ReadResolvedDepth(
   state->vtkglBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer);
   glFramebufferRenderbuffer(
     GL_DRAW_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, renderbuffer);
-  bool ok = glCheckFramebufferStatus(GL_DRAW_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
+  const int from[4] = { x0, y0, width, height };
+  bool ok = glCheckFramebufferStatus(GL_DRAW_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE &&
+    vtkClusteredLightingBlitDepth(state, from, 0, 0);
   if (ok)
   {
-    // A blit writes through the scissor test and the depth mask: neither may clip it.
-    vtkOpenGLState::ScopedglEnableDisable savedScissorTest(state, GL_SCISSOR_TEST);
-    vtkOpenGLState::ScopedglDepthMask savedDepthMask(state);
-    state->vtkglDisable(GL_SCISSOR_TEST);
-    state->vtkglDepthMask(GL_TRUE);
-    state->vtkglBlitFramebuffer(
-      x0, y0, x0 + width, y0 + height, 0, 0, width, height, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
     state->vtkglBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer);
     state->vtkglPixelStorei(GL_PACK_ALIGNMENT, 1);
     depth.resize(static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
@@ -199,13 +194,11 @@ bool ReadResolvedDepth(
 }
 
 /// Pixels of the renderer's viewport whose depth is below the far plane (in a
-/// multisampled framebuffer, one sample of each pixel: ReadResolvedDepth). 0 when the
-/// depths cannot be read.
-std::size_t CountVisiblePixels(const vtkRenderState* s, vtkOpenGLRenderWindow* rw)
+/// multisampled framebuffer, `samples` > 0, one sample of each pixel: ReadResolvedDepth).
+/// 0 when the depths cannot be read.
+std::size_t CountVisiblePixels(const vtkRenderState* s, vtkOpenGLRenderWindow* rw, int samples)
 {
   std::vector<float> depth;
-  GLint samples = 0;
-  glGetIntegerv(GL_SAMPLES, &samples);
   if (!(samples > 0 ? ReadResolvedDepth(s, rw, depth) : ReadViewport(s, rw, depth, nullptr)))
   {
     return 0;
@@ -342,7 +335,8 @@ struct vtkClusteredLightingPass::vtkInternals
   bool ReportedPbrFarField = false;                ///< PBR actors sum their far light exactly
   bool ReportedUnlitVolumes[2] = { false, false }; ///< by light sets, by hidden vtkLights
 
-  vtkClusteredLightingAssigner* GetAssigner(vtkRenderer* ren)
+  /// The entry of `ren`, made on first use (its assigner and prepass).
+  RendererEntry& GetEntry(vtkRenderer* ren)
   {
     // Forget renderers that were deleted: their assigner releases its GL objects in its
     // window's context (and restores the current one).
@@ -357,14 +351,12 @@ struct vtkClusteredLightingPass::vtkInternals
       entry.Assigner.reset(new vtkClusteredLightingAssigner);
       entry.Prepass = vtkSmartPointer<vtkClusteredLightingDepthPrepass>::New();
     }
-    return entry.Assigner.get();
+    return entry;
   }
 
-  /// The prepass of `ren` (GetAssigner makes it with the renderer's entry).
-  vtkClusteredLightingDepthPrepass* GetPrepass(vtkRenderer* ren)
+  vtkClusteredLightingAssigner* GetAssigner(vtkRenderer* ren)
   {
-    this->GetAssigner(ren);
-    return this->Renderers[ren].Prepass;
+    return this->GetEntry(ren).Assigner.get();
   }
 };
 
@@ -748,8 +740,9 @@ void vtkClusteredLightingPass::RenderDepthPrepass(
   const vtkRenderState* s, vtkOpenGLRenderWindow* rw, vtkClusteredLightingAssignerInputs& inputs)
 {
   vtkRenderer* ren = s->GetRenderer();
-  vtkClusteredLightingAssigner* assigner = this->Internals->GetAssigner(ren);
-  vtkClusteredLightingDepthPrepass* prepass = this->Internals->GetPrepass(ren);
+  vtkInternals::RendererEntry& entry = this->Internals->GetEntry(ren);
+  vtkClusteredLightingAssigner* assigner = entry.Assigner.get();
+  vtkClusteredLightingDepthPrepass* prepass = entry.Prepass;
   // In a multisampled framebuffer depth-aware clusters need the fragments' own depths,
   // which the prepass then records (vtkClusteredLightingSampleDepths).
   const bool depthAware = this->DepthAwareClusters && inputs.Clustered;
@@ -1117,7 +1110,7 @@ void vtkClusteredLightingPass::RenderDelegate(const vtkRenderState* s,
     // passes all of its samples.
     GLint samples = 0;
     glGetIntegerv(GL_SAMPLES, &samples);
-    const std::size_t visible = CountVisiblePixels(s, rw);
+    const std::size_t visible = CountVisiblePixels(s, rw, samples);
     const double perPixel = visible > 0
       ? 1.0 / (static_cast<double>(visible) * static_cast<double>(std::max(samples, 1)))
       : 0.0;

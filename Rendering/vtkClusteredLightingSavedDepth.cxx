@@ -118,22 +118,8 @@ bool vtkClusteredLightingSavedDepth::Allocate(
 bool vtkClusteredLightingSavedDepth::Copy(
   vtkOpenGLRenderWindow* rw, const int origin[2], const int size[2])
 {
-  // A blit writes through the scissor test and the depth mask: neither may clip it.
-  vtkOpenGLState* state = rw->GetState();
-  vtkOpenGLState::ScopedglEnableDisable savedScissorTest(state, GL_SCISSOR_TEST);
-  vtkOpenGLState::ScopedglDepthMask savedDepthMask(state);
-  state->vtkglDisable(GL_SCISSOR_TEST);
-  state->vtkglDepthMask(GL_TRUE);
-  const int x1 = origin[0] + size[0];
-  const int y1 = origin[1] + size[1];
-  state->vtkglBlitFramebuffer(
-    origin[0], origin[1], x1, y1, origin[0], origin[1], x1, y1, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
-  bool failed = false;
-  while (glGetError() != GL_NO_ERROR)
-  {
-    failed = true;
-  }
-  return !failed;
+  const int from[4] = { origin[0], origin[1], size[0], size[1] };
+  return vtkClusteredLightingBlitDepth(rw->GetState(), from, origin[0], origin[1]);
 }
 
 //------------------------------------------------------------------------------

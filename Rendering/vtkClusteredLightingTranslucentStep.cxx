@@ -29,7 +29,7 @@ bool HasTranslucentGeometry(const vtkRenderState* s)
 
 /// Pixels of the viewport VTK's order-independent translucency composites (its own
 /// choice: the renderer's tiled viewport, or the whole framebuffer object when there is
-/// one), times the draw framebuffer's samples.
+/// one). Only counted in a single-sampled framebuffer (see Render).
 std::uint64_t CountCompositeSamples(const vtkRenderState* s)
 {
   int width = 0;
@@ -47,11 +47,8 @@ std::uint64_t CountCompositeSamples(const vtkRenderState* s)
     width = size[0];
     height = size[1];
   }
-  GLint samples = 0;
-  glGetIntegerv(GL_SAMPLES, &samples);
   return static_cast<std::uint64_t>(std::max(width, 0)) *
-    static_cast<std::uint64_t>(std::max(height, 0)) *
-    static_cast<std::uint64_t>(std::max(samples, 1));
+    static_cast<std::uint64_t>(std::max(height, 0));
 }
 }
 
@@ -73,13 +70,11 @@ void vtkClusteredLightingTranslucentStep::Render(const vtkRenderState* s)
   if (this->Counting)
   {
     this->EndQuery(); // the opaque part ends here
+    // Depth peeling runs queries of its own; in a multisampled framebuffer translucency
+    // draws single-sampled layers and a multisampled composite, which one query mixes.
     GLint samples = 0;
     glGetIntegerv(GL_SAMPLES, &samples);
-    if (translucent && samples > 0)
-    {
-      this->TranslucentMeasured = false; // single-sampled layers, multisampled composite
-    }
-    if (!peeling)
+    if (!peeling && !(translucent && samples > 0))
     {
       this->CompositeSamples = translucent ? CountCompositeSamples(s) : 0;
       glBeginQuery(GL_SAMPLES_PASSED, this->Queries[1]);

@@ -17,7 +17,7 @@
  *   - translucent: the translucent draws. Order-independent translucency (VTK 9.1 and
  *     9.2, vtkOrderIndependentTranslucentPass) ends with one full-viewport quad drawn at
  *     GL_ALWAYS without discard, which composites the layers and lights nothing; a query
- *     around the step counts it as one more fragment per viewport pixel (per sample), so
+ *     around the step counts it as one more fragment per viewport pixel, so
  *     that many are subtracted, once, when the step had translucent geometry to render.
  *     Depth peeling runs GL_SAMPLES_PASSED queries of its own (its occlusion ratio), and
  *     only one query of a target may be active: none of ours is active while it renders,

@@ -133,6 +133,26 @@ double MeanOfCounts(vtkRenderWindow* rw, vtkRenderer* ren)
   return n ? sum / static_cast<double>(n) : 0.0;
 }
 
+/// Fragments passing the depth test per visible pixel (MeasureTimings) with the prepass
+/// and depth-aware clusters, and with both off; printed after `what`. Leaves both on.
+void MeasureShaded(const char* what, vtkRenderWindow* rw, vtkClusteredLightingPass* pass,
+  double& withPrepass, double& without)
+{
+  pass->SetMeasureTimings(true);
+  pass->SetDepthPrepass(false);
+  pass->SetDepthAwareClusters(false);
+  rw->Render();
+  without = pass->GetShadedFragmentsPerVisiblePixel();
+  pass->SetDepthPrepass(true);
+  pass->SetDepthAwareClusters(true);
+  rw->Render();
+  withPrepass = pass->GetShadedFragmentsPerVisiblePixel();
+  pass->SetMeasureTimings(false);
+  std::printf("%sfragments passing the depth test per visible pixel: %.4f with the prepass, "
+              "%.4f without\n",
+    what, withPrepass, without);
+}
+
 /// Renders with and without depth-aware clusters and the prepass; checks the images are
 /// identical, the assignment has no false negative, every pixel lies in its cluster, and
 /// returns (evaluated per pixel with, without).
@@ -219,19 +239,8 @@ int TestClusteredLightingDepthAware(int, char*[])
   CheckCase("occluding sphere", rw, ren, pass);
 
   // 2. Fragments passing the depth test per visible pixel, with and without the prepass.
-  pass->SetMeasureTimings(true);
-  pass->SetDepthPrepass(false);
-  pass->SetDepthAwareClusters(false);
-  rw->Render();
-  const double shadedOff = pass->GetShadedFragmentsPerVisiblePixel();
-  pass->SetDepthPrepass(true);
-  pass->SetDepthAwareClusters(true);
-  rw->Render();
-  const double shadedOn = pass->GetShadedFragmentsPerVisiblePixel();
-  pass->SetMeasureTimings(false);
-  std::printf("fragments passing the depth test per visible pixel: %.4f with the prepass, "
-              "%.4f without\n",
-    shadedOn, shadedOff);
+  double shadedOn = 0.0, shadedOff = 0.0;
+  MeasureShaded("", rw, pass, shadedOn, shadedOff);
   Check(shadedOn > 0.999 && shadedOn < 1.001, "the prepass shades each visible pixel once");
   Check(shadedOff > shadedOn, "without it hidden fragments are shaded too");
   Check(pass->GetShadedTranslucentFragmentsPerVisiblePixel() == 0.0 &&
@@ -443,19 +452,8 @@ int TestClusteredLightingDepthAware(int, char*[])
       "count the lights evaluated per pixel there");
     // Fragments shaded per visible pixel there: the queries count samples (the pass divides
     // by the sample count) and the visible pixels come from a resolved copy of the depths.
-    msPass->SetMeasureTimings(true);
-    msPass->SetDepthPrepass(false);
-    msPass->SetDepthAwareClusters(false);
-    msWindow->Render();
-    const double msShadedOff = msPass->GetShadedFragmentsPerVisiblePixel();
-    msPass->SetDepthPrepass(true);
-    msPass->SetDepthAwareClusters(true);
-    msWindow->Render();
-    const double msShadedOn = msPass->GetShadedFragmentsPerVisiblePixel();
-    msPass->SetMeasureTimings(false);
-    std::printf("8 samples: fragments passing the depth test per visible pixel: %.4f with the "
-                "prepass, %.4f without\n",
-      msShadedOn, msShadedOff);
+    double msShadedOn = 0.0, msShadedOff = 0.0;
+    MeasureShaded("8 samples: ", msWindow, msPass, msShadedOn, msShadedOff);
     // Edge pixels pass some of their samples, and the resolved depth keeps one of them.
     Check(msShadedOn > 0.98 && msShadedOn < 1.02,
       "8 samples: the prepass shades each visible pixel once");

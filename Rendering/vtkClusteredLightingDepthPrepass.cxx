@@ -9,6 +9,9 @@
 #include "vtkActor2D.h"
 #include "vtkCamera.h"
 #include "vtkCommand.h"
+#include "vtkCompositeDataIterator.h"
+#include "vtkCompositeDataSet.h"
+#include "vtkCompositePolyDataMapper2.h"
 #include "vtkDataObject.h"
 #include "vtkInformation.h"
 #include "vtkMapper2D.h"
@@ -27,6 +30,7 @@
 #include "vtkShader.h"
 #include "vtkShaderProgram.h"
 #include "vtkShaderProperty.h"
+#include "vtkSmartPointer.h"
 #include "vtk_glew.h" // for GL calls
 
 #include <algorithm> // for std::max
@@ -414,10 +418,12 @@ std::uint64_t vtkClusteredLightingDepthPrepass::ComputeReuseSignature(
   {
     h.Mix(static_cast<std::uint64_t>(static_cast<std::uint32_t>(v)));
   }
-  // The camera: its matrices (the aspect, eye and tile included) and its own time.
+  // The camera: its matrices (the aspect, eye and tile included), which hold all of it
+  // that moves depths. Not its time: ParaView's synchronized renderers set every rank's
+  // camera (and reset its clipping range) before each render, which modifies it with the
+  // same values, and vtkOpenGLCamera recomputes the same matrices from them.
   vtkCamera* camera = ren->GetActiveCamera();
   h.Mix(camera);
-  h.Mix(static_cast<std::uint64_t>(camera->GetMTime()));
   h.Mix(static_cast<std::uint64_t>(camera->GetLeftEye()));
   h.Mix(static_cast<std::uint64_t>(rw->GetStereoRender()));
   const double* tile = rw->GetTileViewport();
@@ -459,10 +465,20 @@ std::uint64_t vtkClusteredLightingDepthPrepass::ComputeReuseSignature(
     {
       continue;
     }
+    // ParaView's vtkPVLODActor draws through an internal actor to which each render copies
+    // its property, textures, shader property, matrix and keys, with the mapper its
+    // GetMapper() returns (the full or the level-of-detail one): its depths are those of
+    // a vtkOpenGLActor with its own state, and the chosen mapper is hashed below. Its
+    // vtkPVCenterAxesActor is a vtkOpenGLActor that overrides no rendering (a vtkAxes
+    // source through a vtkPolyDataMapper).
     auto* actor = vtkActor::SafeDownCast(prop);
-    if (!actor || std::strcmp(prop->GetClassName(), "vtkOpenGLActor") != 0)
+    const char* actorClass = prop->GetClassName();
+    if (!actor ||
+      (std::strcmp(actorClass, "vtkOpenGLActor") != 0 &&
+        std::strcmp(actorClass, "vtkPVLODActor") != 0 &&
+        std::strcmp(actorClass, "vtkPVCenterAxesActor") != 0))
     {
-      return refuse(std::string("a ") + prop->GetClassName() + " is drawn");
+      return refuse(std::string("a ") + actorClass + " is drawn");
     }
     vtkMapper* mapper = actor->GetMapper();
     h.Mix(mapper);
@@ -471,7 +487,10 @@ std::uint64_t vtkClusteredLightingDepthPrepass::ComputeReuseSignature(
       continue; // draws nothing
     }
     auto* polyMapper = vtkPolyDataMapper::SafeDownCast(mapper);
-    if (!polyMapper || std::strcmp(mapper->GetClassName(), "vtkOpenGLPolyDataMapper") != 0)
+    auto* compositeMapper = vtkCompositePolyDataMapper2::SafeDownCast(mapper);
+    if (!polyMapper ||
+      (std::strcmp(mapper->GetClassName(), "vtkOpenGLPolyDataMapper") != 0 &&
+        std::strcmp(mapper->GetClassName(), "vtkCompositePolyDataMapper2") != 0))
     {
       return refuse(std::string("a ") + mapper->GetClassName() + " draws");
     }
@@ -521,6 +540,24 @@ std::uint64_t vtkClusteredLightingDepthPrepass::ComputeReuseSignature(
     vtkDataObject* input = polyMapper->GetInputDataObject(0, 0);
     h.Mix(input);
     h.Mix(static_cast<std::uint64_t>(input ? input->GetMTime() : 0));
+    if (compositeMapper)
+    {
+      // A composite mapper's time covers its blocks' display attributes (visibility,
+      // opacity: whether a block is opaque); it rebuilds a block's buffers from that
+      // block's own time, which a change in place leaves off the data set's.
+      if (auto* composite = vtkCompositeDataSet::SafeDownCast(input))
+      {
+        vtkSmartPointer<vtkCompositeDataIterator> leaves;
+        leaves.TakeReference(composite->NewIterator());
+        for (leaves->InitTraversal(); !leaves->IsDoneWithTraversal(); leaves->GoToNextItem())
+        {
+          vtkDataObject* leaf = leaves->GetCurrentDataObject();
+          h.Mix(static_cast<std::uint64_t>(leaves->GetCurrentFlatIndex()));
+          h.Mix(leaf);
+          h.Mix(static_cast<std::uint64_t>(leaf ? leaf->GetMTime() : 0));
+        }
+      }
+    }
   }
   return h.Get();
 }

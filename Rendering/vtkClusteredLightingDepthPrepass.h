@@ -34,7 +34,9 @@
  * camera over moving lights, or a re-render of an unchanged scene, pays one depth copy
  * instead of a second geometry pass. Props whose depths could change without a
  * modification time showing it make the signature 0 (no reuse): anything but a plain
- * vtkActor with a vtkPolyDataMapper drawing one piece, or an overlay that writes no depth
+ * vtkActor (or ParaView's vtkPVLODActor) with a vtkPolyDataMapper drawing one piece or a
+ * vtkCompositePolyDataMapper2 (its blocks' times and display attributes hashed too), or an
+ * overlay that writes no depth
  * (2D actors with VTK's polydata mapper, text, scalar bars, corner annotations); shader
  * replacements or UpdateShaderEvent observers (uniforms set per draw); and a depth
  * buffer the prepass does not clear.

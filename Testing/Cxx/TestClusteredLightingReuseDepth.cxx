@@ -11,15 +11,20 @@
 //    size: drawn again;
 //  - a prop the signature cannot vouch for (a vtkFollower): never reused;
 //  - the same in a multisampled window with depth-aware clusters (the recorded depths);
-//  - two renderers sharing the pass: each reuses its own depths.
+//  - two renderers sharing the pass: each reuses its own depths;
+//  - a composite mapper (ParaView's): still frames reuse; a block's points changed in
+//    place, a block hidden or made translucent: drawn again.
 // The lights are as users write them (inverse-square, no radius), so the far field and the
 // depth-aware clusters are on.
 #include "ClusteredLightingTestUtilities.h"
 
 #include "vtkCallbackCommand.h"
 #include "vtkClusteredLightSet.h"
+#include "vtkCompositeDataDisplayAttributes.h"
+#include "vtkCompositePolyDataMapper2.h"
 #include "vtkCubeSource.h"
 #include "vtkFollower.h"
+#include "vtkMultiBlockDataSet.h"
 #include "vtkPlane.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
@@ -205,6 +210,64 @@ int RunCases(int samples)
 }
 }
 
+/// A vtkCompositePolyDataMapper2 (ParaView's mapper) over a multiblock of two boxes given
+/// as data: still frames reuse; a block's points changed in place (the multiblock's own
+/// time unchanged), a block hidden or made translucent through the display attributes
+/// make the frame draw.
+int RunComposite()
+{
+  std::printf("--- a composite mapper\n");
+  Scene scene(0);
+  vtkNew<vtkMultiBlockDataSet> blocks;
+  vtkNew<vtkPolyData> boxes[2];
+  for (int i = 0; i < 2; ++i)
+  {
+    vtkNew<vtkCubeSource> cube;
+    cube->SetCenter(-1.6 + 0.9 * i, 0.6, 1.0 + 0.3 * i);
+    cube->SetXLength(0.7);
+    cube->SetYLength(0.9);
+    cube->SetZLength(0.7);
+    cube->Update();
+    boxes[i]->DeepCopy(cube->GetOutput());
+    blocks->SetBlock(i, boxes[i]);
+  }
+  vtkNew<vtkCompositePolyDataMapper2> mapper;
+  mapper->SetInputDataObject(blocks);
+  vtkNew<vtkCompositeDataDisplayAttributes> attributes;
+  mapper->SetCompositeDataDisplayAttributes(attributes);
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  scene.Renderer->AddActor(actor);
+  scene.Window->Render();
+  scene.Window->Render();
+  int failed = 0;
+  failed += scene.Check("still frame", true, [] {});
+  failed += Expect(scene.Pass->GetDepthPrepassKept(),
+    std::string("the composite mapper is accepted (") + scene.Pass->GetDepthPrepassReuseProblem() +
+      ")");
+  failed += scene.Check("a block's points changed in place", false,
+    [&]
+    {
+      vtkPoints* points = boxes[1]->GetPoints();
+      for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
+      {
+        double p[3];
+        points->GetPoint(i, p);
+        points->SetPoint(i, p[0] + 0.5, p[1] - 0.4, p[2] + 0.3);
+      }
+      points->Modified();
+    });
+  failed += scene.Check("still after the change", true, [] {});
+  failed +=
+    scene.Check("a block hidden", false, [&] { attributes->SetBlockVisibility(boxes[0], false); });
+  failed += scene.Check(
+    "a block shown again", false, [&] { attributes->SetBlockVisibility(boxes[0], true); });
+  failed += scene.Check(
+    "a block made translucent", false, [&] { attributes->SetBlockOpacity(boxes[1], 0.5); });
+  failed += scene.Check("still with the translucent block", true, [] {});
+  return failed;
+}
+
 /// Whether a renderer's frame reused its prepass, read as the renderer ends.
 struct ReuseWatch
 {
@@ -278,5 +341,6 @@ int TestClusteredLightingReuseDepth(int, char*[])
   int failed = RunCases(0);
   failed += RunCases(8);
   failed += RunSharedPass();
+  failed += RunComposite();
   return failed == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

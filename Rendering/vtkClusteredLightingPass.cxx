@@ -11,6 +11,8 @@
 #include "vtkClusteredLightingLightCollector.h"
 #include "vtkClusteredLightingOpaqueStep.h"
 #include "vtkClusteredLightingPrepassChoice.h"
+#include "vtkClusteredLightingSampleDepths.h"
+#include "vtkClusteredLightingSampleZero.h"
 #include "vtkClusteredLightingShaderCode.h"
 #include "vtkClusteredLightingShaderVariant.h"
 #include "vtkClusteredLightingTranslucentStep.h"
@@ -93,7 +95,8 @@ struct PixelCounts
   double Mean = 0.0;
   int Maximum = 0;
   vtkIdType Pixels = 0;
-  bool Read = true; ///< false when the framebuffer could not be read (multisampled)
+  bool Read = true;    ///< false when the framebuffer could not be read
+  std::string Problem; ///< why not
 };
 
 /// Where the renderer's viewport lies in the framebuffer the delegate drew into: the whole
@@ -208,13 +211,29 @@ std::size_t CountVisiblePixels(const vtkRenderState* s, vtkOpenGLRenderWindow* r
 }
 
 /// Decodes the evaluated counts (R + 256 G) of the pixels covered by geometry (depth below
-/// the far plane). Zero counts when the framebuffer cannot be read.
+/// the far plane); in a multisampled framebuffer, of one sample of each pixel
+/// (vtkClusteredLightingSampleZero). Zero counts when the framebuffer cannot be read.
 PixelCounts CountEvaluatedLights(const vtkRenderState* s, vtkOpenGLRenderWindow* rw)
 {
   PixelCounts counts;
   std::vector<float> depth;
   std::vector<unsigned char> rgba;
-  if (!ReadViewport(s, rw, depth, &rgba))
+  bool read = false;
+  if (vtkClusteredLightingSampleDepths::IsDrawFramebufferMultisampled())
+  {
+    int rectangle[4] = { 0, 0, 0, 0 };
+    GetReadRectangle(s, rectangle[2], rectangle[3], rectangle[0], rectangle[1]);
+    read = vtkClusteredLightingSampleZero::Read(rw, rectangle, rgba, depth, counts.Problem);
+  }
+  else
+  {
+    read = ReadViewport(s, rw, depth, &rgba);
+    if (!read)
+    {
+      counts.Problem = "the framebuffer could not be read back";
+    }
+  }
+  if (!read)
   {
     counts.Read = false;
     return counts;
@@ -1180,11 +1199,9 @@ void vtkClusteredLightingPass::SetPixelCounts(const vtkRenderState* s, vtkOpenGL
   const PixelCounts counts = CountEvaluatedLights(s, rw);
   if (!counts.Read && !this->Internals->ReportedUncountedPixels)
   {
-    // A multisampled framebuffer (VTK's default window) cannot be read back here.
-    vtkWarningMacro(<< "The lights evaluated per pixel could not be read from the framebuffer "
-                    << "(a multisampled one cannot be read back): GetMeanLightsEvaluatedPerPixel "
-                    << "reports 0. The debug view's image shows them (R + 256 G), or render "
-                    << "the counting frame with SetMultiSamples(0).");
+    vtkWarningMacro(<< "The lights evaluated per pixel could not be read from the framebuffer ("
+                    << counts.Problem << "): GetMeanLightsEvaluatedPerPixel reports 0. The "
+                    << "debug view's image shows them (R + 256 G).");
     this->Internals->ReportedUncountedPixels = true;
   }
   this->MeanLightsEvaluatedPerPixel = counts.Mean;

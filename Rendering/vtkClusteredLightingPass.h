@@ -640,9 +640,10 @@ public:
   /// clustering culls little (a warning names the cause and the fix once).
   vtkGetMacro(MeanLightsPerCluster, double);
   /// Lights evaluated per pixel of lit geometry, on average, in the last frame that
-  /// counted them (DEBUG_EVALUATED_COUNT or DEBUG_HEAT_MAP); 0 before any, and 0 in a
-  /// multisampled framebuffer, which cannot be read back (a warning says so once; the
-  /// debug view's image still shows the counts).
+  /// counted them (DEBUG_EVALUATED_COUNT or DEBUG_HEAT_MAP); 0 before any. In a
+  /// multisampled framebuffer (VTK's default window) one sample of each pixel is read,
+  /// its colour and depth, since a resolve would average an edge pixel's counts with the
+  /// background; 0, with one warning naming why, if the framebuffer cannot be read.
   vtkGetMacro(MeanLightsEvaluatedPerPixel, double);
   /// Most lights evaluated at one pixel in the last frame that counted them.
   vtkGetMacro(MaximumLightsEvaluatedPerPixel, int);

@@ -10,8 +10,11 @@ next to another rank's piece of a distributed sphere) and renders it twice:
    to the client, whose own view and pass render them.
 
 Checks: the lights' data is on server rank 0 only; the client's view used the mode asked
-for (vtkPVRenderView::GetUseDistributedRenderingForRender); the server's pass (rank 0,
-whose statistics the client reads) clustered the 8 lights; both images are lit (more than
+for (vtkPVRenderView::GetUseDistributedRenderingForRender); the client's pass clustered the
+8 lights (in client-server mode the view's information properties are read from the
+client's own pass, not the server's: the view lives on the client too, and ParaView pulls
+a client proxy's information there; the lights are delivered to the client in both
+modes); both images are lit (more than
 1,500 pixels brighter than 40 of 255), and equal each other within one 8-bit step (see
 distributed.py for the step); with --reference (the pvbatch tests' output folder), both
 also equal lights_across_ranks.py's 1-rank image within one step.
@@ -89,7 +92,7 @@ for mode, threshold in (("remote", 0.0), ("local", 1e6)):
     lit = int((images[mode].max(axis=2) > 40).sum())
     t.check(lit > 1500, "%s rendering: %d lit pixels (more than 1,500 expected)" % (mode, lit))
     clustered = t.info(view, "NumberOfClusteredLights")
-    t.check(clustered == 8, "%s rendering: the server's pass clustered %d lights (8 expected)"
+    t.check(clustered == 8, "%s rendering: the client's pass clustered %d lights (8 expected)"
             % (mode, clustered))
 
 d = t.difference(images["remote"], images["local"])

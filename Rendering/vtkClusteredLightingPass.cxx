@@ -93,6 +93,7 @@ vtkClusteredLightingShaderVariant::Debug ToVariantDebug(int view)
 struct PixelCounts
 {
   double Mean = 0.0;
+  double ReachingMean = 0.0; ///< of the reaching counts (blue, each saturating at 255)
   int Maximum = 0;
   vtkIdType Pixels = 0;
   bool Read = true;    ///< false when the framebuffer could not be read
@@ -238,18 +239,20 @@ PixelCounts CountEvaluatedLights(const vtkRenderState* s, vtkOpenGLRenderWindow*
     counts.Read = false;
     return counts;
   }
-  double sum = 0.0;
+  double sum = 0.0, reaching = 0.0;
   for (std::size_t i = 0; i < depth.size(); ++i)
   {
     if (depth[i] < 1.0f)
     {
       const int evaluated = rgba[4 * i] + 256 * rgba[4 * i + 1];
       sum += evaluated;
+      reaching += rgba[4 * i + 2];
       counts.Maximum = std::max(counts.Maximum, evaluated);
       ++counts.Pixels;
     }
   }
   counts.Mean = counts.Pixels > 0 ? sum / static_cast<double>(counts.Pixels) : 0.0;
+  counts.ReachingMean = counts.Pixels > 0 ? reaching / static_cast<double>(counts.Pixels) : 0.0;
   return counts;
 }
 
@@ -1205,6 +1208,7 @@ void vtkClusteredLightingPass::SetPixelCounts(const vtkRenderState* s, vtkOpenGL
     this->Internals->ReportedUncountedPixels = true;
   }
   this->MeanLightsEvaluatedPerPixel = counts.Mean;
+  this->MeanLightsReachingPerPixel = counts.ReachingMean;
   this->MaximumLightsEvaluatedPerPixel = counts.Maximum;
   this->NumberOfCountedPixels = counts.Pixels;
 }
@@ -1498,7 +1502,7 @@ void vtkClusteredLightingPass::PrintSelf(ostream& os, vtkIndent indent)
   os << next << "MeanLightsPerCluster: " << this->MeanLightsPerCluster << "\n";
   os << next << "MeanLightsEvaluatedPerPixel: " << this->MeanLightsEvaluatedPerPixel << " (maximum "
      << this->MaximumLightsEvaluatedPerPixel << ", over " << this->NumberOfCountedPixels
-     << " pixels)\n";
+     << " pixels; reaching " << this->MeanLightsReachingPerPixel << ")\n";
   os << next << "DepthPrepassReused: " << (this->DepthPrepassReused ? "yes" : "no")
      << ", kept: " << (this->DepthPrepassKept ? "yes" : "no")
      << (this->Internals->DepthReuseProblem.empty() ? "" : " (")

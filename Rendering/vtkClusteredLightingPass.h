@@ -645,6 +645,12 @@ public:
   /// its colour and depth, since a resolve would average an edge pixel's counts with the
   /// background; 0, with one warning naming why, if the framebuffer cannot be read.
   vtkGetMacro(MeanLightsEvaluatedPerPixel, double);
+  /// Lights that reach the pixel (inside their radius and cone), on average over the same
+  /// pixels of the same frame, as DEBUG_EVALUATED_COUNT's blue counts them: each pixel's
+  /// count saturates at 255, and a saturated fragment stops counting where it stops its
+  /// walk. GetMeanLightsEvaluatedPerPixel over it says how well the clusters cull (1:
+  /// every light walked reaches).
+  vtkGetMacro(MeanLightsReachingPerPixel, double);
   /// Most lights evaluated at one pixel in the last frame that counted them.
   vtkGetMacro(MaximumLightsEvaluatedPerPixel, int);
   /// Pixels covered by geometry (depth below the far plane) in the last frame that
@@ -850,6 +856,7 @@ protected:
   bool ClusteringBypassed = false;
   double MeanLightsPerCluster = 0.0;
   double MeanLightsEvaluatedPerPixel = 0.0;
+  double MeanLightsReachingPerPixel = 0.0;
   int MaximumLightsEvaluatedPerPixel = 0;
   vtkIdType NumberOfCountedPixels = 0;
   double HeatMapScale = 0.0;

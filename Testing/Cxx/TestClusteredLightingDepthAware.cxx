@@ -157,39 +157,53 @@ void MeasureShaded(const char* what, vtkRenderWindow* rw, vtkClusteredLightingPa
 /// Renders with and without depth-aware clusters and the prepass; checks the images are
 /// identical, the assignment has no false negative, every pixel lies in its cluster, and
 /// returns (evaluated per pixel with, without).
-/// Renders the evaluated-count debug view and returns the pass's mean count. In a
-/// multisampled window the pass reads one sample of each pixel
-/// (vtkClusteredLightingSampleZero): its mean and pixel count must agree within 2% with the
+/// Renders the evaluated-count debug view and returns the pass's mean count; the mean of
+/// the lights reaching each pixel must be positive and at most that. In a multisampled
+/// window the pass reads one sample of each pixel (vtkClusteredLightingSampleZero): its
+/// means and pixel count must agree within 2% with the
 /// same frame rendered single-sampled (whose framebuffer reads back as it is; the two
 /// differ only at edge pixels, where sample 0 and the pixel centre can fall on different
 /// surfaces).
 double MeasureEvaluated(const std::string& what, vtkRenderWindow* rw, vtkRenderer* ren,
-  vtkClusteredLightingPass* pass, bool multisampled)
+  vtkClusteredLightingPass* pass, bool multisampled, double* reachingOut = nullptr)
 {
   pass->SetDebugView(vtkClusteredLightingPass::DEBUG_EVALUATED_COUNT);
   rw->Render();
   const double evaluated = pass->GetMeanLightsEvaluatedPerPixel();
+  const double reaching = pass->GetMeanLightsReachingPerPixel();
   const vtkIdType pixels = pass->GetNumberOfCountedPixels();
+  // Lights reaching a pixel are among those it evaluates, and some reach (every case
+  // here has lights on its surfaces).
+  Check(reaching > 0.0 && reaching <= evaluated,
+    what + ": lights reaching per pixel (" + std::to_string(reaching) +
+      ") above 0 and at most those evaluated");
   if (multisampled)
   {
     const int samples = rw->GetMultiSamples();
     rw->SetMultiSamples(0);
     rw->Render();
     const double single = pass->GetMeanLightsEvaluatedPerPixel();
+    const double singleReaching = pass->GetMeanLightsReachingPerPixel();
     const vtkIdType singlePixels = pass->GetNumberOfCountedPixels();
     rw->SetMultiSamples(samples);
     rw->Render();
-    std::printf("%s: evaluated per pixel %.3f over %lld pixels (%d samples, sample 0), %.3f "
-                "over %lld single-sampled; the resolved image shows %.3f\n",
-      what.c_str(), evaluated, static_cast<long long>(pixels), samples, single,
-      static_cast<long long>(singlePixels), MeanOfCounts(rw, ren));
+    std::printf("%s: evaluated / reaching per pixel %.3f / %.3f over %lld pixels (%d samples, "
+                "sample 0), %.3f / %.3f over %lld single-sampled; the resolved image shows "
+                "%.3f evaluated\n",
+      what.c_str(), evaluated, reaching, static_cast<long long>(pixels), samples, single,
+      singleReaching, static_cast<long long>(singlePixels), MeanOfCounts(rw, ren));
     Check(pixels > 0 && std::abs(evaluated - single) <= 0.02 * single &&
+        std::abs(reaching - singleReaching) <= 0.02 * singleReaching &&
         std::abs(static_cast<double>(pixels - singlePixels)) <= 0.02 * singlePixels,
       what +
-        ": the pass counts the lights evaluated per pixel in a multisampled window (as "
-        "single-sampled, within 2%)");
+        ": the pass counts the lights evaluated and reaching per pixel in a multisampled "
+        "window (as single-sampled, within 2%)");
   }
   pass->SetDebugView(vtkClusteredLightingPass::DEBUG_NONE);
+  if (reachingOut)
+  {
+    *reachingOut = reaching;
+  }
   return evaluated;
 }
 
@@ -199,7 +213,9 @@ void CheckCase(const std::string& what, vtkRenderWindow* rw, vtkRenderer* ren,
 {
   pass->SetDepthPrepass(false);
   pass->SetDepthAwareClusters(false);
-  const double evaluatedOff = MeasureEvaluated(what + ", both off", rw, ren, pass, multisampled);
+  double reachingOff = 0.0;
+  const double evaluatedOff =
+    MeasureEvaluated(what + ", both off", rw, ren, pass, multisampled, &reachingOff);
   rw->Render();
   const std::vector<float> off = ClusteredLightingTest::CapturePixels(rw);
   Check(!pass->GetDepthPrepassUsed() && !pass->GetDepthAwareClustersUsed(),
@@ -229,7 +245,13 @@ void CheckCase(const std::string& what, vtkRenderWindow* rw, vtkRenderer* ren,
         what + ": every visible pixel inside its cluster's depths (" + std::to_string(outside) +
           " outside)");
     }
-    const double evaluatedOn = MeasureEvaluated(what, rw, ren, pass, multisampled);
+    double reachingOn = 0.0;
+    const double evaluatedOn = MeasureEvaluated(what, rw, ren, pass, multisampled, &reachingOn);
+    // Culling by depth drops no light that reaches a visible fragment: the pixels count
+    // the same reaching lights with and without it (their mean, exactly).
+    Check(reachingOn == reachingOff,
+      what + ": as many lights reach a pixel on average with depth-aware clusters (" +
+        std::to_string(reachingOn) + " and " + std::to_string(reachingOff) + " per pixel)");
     std::printf("%s: evaluated per pixel %.2f depth-aware, %.2f without; non-empty clusters "
                 "%.1f%%, visible depths %.3g to %.3g, slices %.3g to %.3g\n",
       what.c_str(), evaluatedOn, evaluatedOff, 100.0 * pass->GetNonEmptyClusterFraction(),

@@ -13,7 +13,8 @@ Checks:
  - The properties reach every rank's pass: Tiles X/Y and Slices change the list
    texture's size (X * Y * Z * ceil(N / 32) * 4 bytes), ContributionCutoff the effective cutoff, an
    error budget picks another cutoff, Measure Timings records times, Cluster Renderer
-   Lights hands a renderer light back to VTK, the heat-map debug view changes the image.
+   Lights hands a renderer light back to VTK, the heat-map debug view changes the image
+   and rank 0 reports the lights evaluated and reaching per pixel it counted for it.
  - Representation: it is offered for polygonal data and multiblock data sets (their
    blocks' points are lights), not for an unstructured grid; its array lists hold the
    point arrays with the right number of components and "(none)"; defaults pick the arrays named like the light set's defaults
@@ -237,6 +238,11 @@ heat = t.save(view, t.output("properties-heat-map"))
 d = t.difference(shaded, heat)
 t.check(d["pixels_differing"] > 0.1 * d["pixels"],
         "Debug View heat map: %d of %d pixels change" % (d["pixels_differing"], d["pixels"]))
+evaluated = t.info(view, "MeanLightsEvaluatedPerPixel")
+reaching = t.info(view, "MeanLightsReachingPerPixel")
+t.check(0.0 < reaching <= evaluated,
+        "Debug View heat map: rank 0 counted %.3f lights evaluated and %.3f reaching per pixel "
+        "(reaching above 0 and at most evaluated)" % (evaluated, reaching))
 view.DebugView = "None"
 again = t.save(view, t.output("properties-shaded-again"))
 t.check(t.difference(shaded, again)["max"] == 0, "Debug View None: the shaded frame again")

@@ -148,62 +148,36 @@ bool ReadViewport(const vtkRenderState* s, vtkOpenGLRenderWindow* rw, std::vecto
   return ok;
 }
 
-/// The depths of the renderer's viewport in a multisampled draw framebuffer, which cannot
-/// be read: glBlitFramebuffer resolves them into a single-sampled copy (one of each pixel's
-/// samples), which is read. False when the copy cannot be made.
-bool ReadResolvedDepth(
-  const vtkRenderState* s, vtkOpenGLRenderWindow* rw, std::vector<float>& depth)
+/// The viewport's window depths and (when asked) RGBA bytes, read back as they are from a
+/// single-sampled framebuffer, and one sample of each pixel from a multisampled one
+/// (vtkClusteredLightingSampleZero: neither a read nor a resolve of it keeps a fragment's
+/// own values). False, with `problem` saying why, when they cannot be read.
+bool ReadPixels(const vtkRenderState* s, vtkOpenGLRenderWindow* rw, std::vector<float>& depth,
+  std::vector<unsigned char>* rgba, std::string& problem)
 {
-  int width = 0, height = 0, x0 = 0, y0 = 0;
-  GetReadRectangle(s, width, height, x0, y0);
-  vtkOpenGLState* state = rw->GetState();
-  unsigned int drawBinding = 0, drawBuffer = 0;
-  state->GetCurrentDrawFramebufferState(drawBinding, drawBuffer);
-  const unsigned int format = vtkClusteredLightingQueryDepthFormat(drawBinding);
-  if (width <= 0 || height <= 0 || format == 0)
+  if (vtkClusteredLightingSampleDepths::IsDrawFramebufferMultisampled())
   {
+    int rectangle[4] = { 0, 0, 0, 0 };
+    GetReadRectangle(s, rectangle[2], rectangle[3], rectangle[0], rectangle[1]);
+    std::vector<unsigned char> colours;
+    return vtkClusteredLightingSampleZero::Read(
+      rw, rectangle, rgba ? *rgba : colours, depth, problem);
+  }
+  if (!ReadViewport(s, rw, depth, rgba))
+  {
+    problem = "the framebuffer could not be read back";
     return false;
   }
-  GLuint renderbuffer = 0, framebuffer = 0;
-  GLint boundRenderbuffer = 0;
-  glGetIntegerv(GL_RENDERBUFFER_BINDING, &boundRenderbuffer);
-  glGenRenderbuffers(1, &renderbuffer);
-  glBindRenderbuffer(GL_RENDERBUFFER, renderbuffer);
-  glRenderbufferStorage(GL_RENDERBUFFER, format, width, height);
-  glBindRenderbuffer(GL_RENDERBUFFER, static_cast<GLuint>(boundRenderbuffer));
-  glGenFramebuffers(1, &framebuffer);
-  state->PushFramebufferBindings();
-  state->vtkglBindFramebuffer(GL_READ_FRAMEBUFFER, drawBinding);
-  state->vtkglBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer);
-  glFramebufferRenderbuffer(
-    GL_DRAW_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, renderbuffer);
-  const int from[4] = { x0, y0, width, height };
-  bool ok = glCheckFramebufferStatus(GL_DRAW_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE &&
-    vtkClusteredLightingBlitDepth(state, from, 0, 0);
-  if (ok)
-  {
-    state->vtkglBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer);
-    state->vtkglPixelStorei(GL_PACK_ALIGNMENT, 1);
-    depth.resize(static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
-    glReadPixels(0, 0, width, height, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
-  }
-  state->PopFramebufferBindings();
-  glDeleteFramebuffers(1, &framebuffer);
-  glDeleteRenderbuffers(1, &renderbuffer);
-  while (glGetError() != GL_NO_ERROR)
-  {
-    ok = false;
-  }
-  return ok;
+  return true;
 }
 
-/// Pixels of the renderer's viewport whose depth is below the far plane (in a
-/// multisampled framebuffer, `samples` > 0, one sample of each pixel: ReadResolvedDepth).
-/// 0 when the depths cannot be read.
-std::size_t CountVisiblePixels(const vtkRenderState* s, vtkOpenGLRenderWindow* rw, int samples)
+/// Pixels of the renderer's viewport whose depth is below the far plane (ReadPixels). 0
+/// when the depths cannot be read.
+std::size_t CountVisiblePixels(const vtkRenderState* s, vtkOpenGLRenderWindow* rw)
 {
   std::vector<float> depth;
-  if (!(samples > 0 ? ReadResolvedDepth(s, rw, depth) : ReadViewport(s, rw, depth, nullptr)))
+  std::string problem;
+  if (!ReadPixels(s, rw, depth, nullptr, problem))
   {
     return 0;
   }
@@ -211,30 +185,15 @@ std::size_t CountVisiblePixels(const vtkRenderState* s, vtkOpenGLRenderWindow* r
     std::count_if(depth.begin(), depth.end(), [](float z) { return z < 1.0f; }));
 }
 
-/// Decodes the evaluated counts (R + 256 G) of the pixels covered by geometry (depth below
-/// the far plane); in a multisampled framebuffer, of one sample of each pixel
-/// (vtkClusteredLightingSampleZero). Zero counts when the framebuffer cannot be read.
+/// Decodes the evaluated counts (R + 256 G) and the reaching counts (B) of the pixels
+/// covered by geometry (depth below the far plane; ReadPixels). Zero counts when the
+/// framebuffer cannot be read.
 PixelCounts CountEvaluatedLights(const vtkRenderState* s, vtkOpenGLRenderWindow* rw)
 {
   PixelCounts counts;
   std::vector<float> depth;
   std::vector<unsigned char> rgba;
-  bool read = false;
-  if (vtkClusteredLightingSampleDepths::IsDrawFramebufferMultisampled())
-  {
-    int rectangle[4] = { 0, 0, 0, 0 };
-    GetReadRectangle(s, rectangle[2], rectangle[3], rectangle[0], rectangle[1]);
-    read = vtkClusteredLightingSampleZero::Read(rw, rectangle, rgba, depth, counts.Problem);
-  }
-  else
-  {
-    read = ReadViewport(s, rw, depth, &rgba);
-    if (!read)
-    {
-      counts.Problem = "the framebuffer could not be read back";
-    }
-  }
-  if (!read)
+  if (!ReadPixels(s, rw, depth, &rgba, counts.Problem))
   {
     counts.Read = false;
     return counts;
@@ -1132,7 +1091,7 @@ void vtkClusteredLightingPass::RenderDelegate(const vtkRenderState* s,
     // passes all of its samples.
     GLint samples = 0;
     glGetIntegerv(GL_SAMPLES, &samples);
-    const std::size_t visible = CountVisiblePixels(s, rw, samples);
+    const std::size_t visible = CountVisiblePixels(s, rw);
     const double perPixel = visible > 0
       ? 1.0 / (static_cast<double>(visible) * static_cast<double>(std::max(samples, 1)))
       : 0.0;

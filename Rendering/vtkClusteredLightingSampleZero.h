@@ -5,7 +5,8 @@
  *
  * Private to the module; the pass's counts of the lights evaluated per pixel
  * (DEBUG_EVALUATED_COUNT, and the heat map scaled to the data) read them from the colour
- * a counting frame wrote. A multisampled framebuffer (VTK's default window asks for 8
+ * a counting frame wrote, and its counts of shaded fragments take the visible pixels from
+ * the depths. A multisampled framebuffer (VTK's default window asks for 8
  * samples) cannot be read back, and resolving it averages each pixel's samples: at an
  * edge a surface's count is averaged with the background's colour or another surface's
  * count, and the encoding (R + 256 G) does not survive averaging (a G of 0.5 rounds to 0

@@ -21,7 +21,8 @@
 //    render use the same programs: no shader is rebuilt from frame to frame;
 //  - in a multisampled window (VTK's default asks for 8 samples) the same checks pass with
 //    the recorded per-pixel ranges, the pass counts the lights evaluated per pixel there
-//    (one sample of each pixel; its mean agrees with the resolved image's within 5%), and
+//    and the lights reaching it (one sample of each pixel; both means agree with the same
+//    frame's single-sampled ones within 2%), and
 //    translucent geometry there turns depth-aware clusters off with one warning.
 #include "ClusteredLightingTestUtilities.h"
 #include "vtkClusteredLightingInspector.h"
@@ -154,16 +155,12 @@ void MeasureShaded(const char* what, vtkRenderWindow* rw, vtkClusteredLightingPa
     what, withPrepass, without);
 }
 
-/// Renders with and without depth-aware clusters and the prepass; checks the images are
-/// identical, the assignment has no false negative, every pixel lies in its cluster, and
-/// returns (evaluated per pixel with, without).
 /// Renders the evaluated-count debug view and returns the pass's mean count; the mean of
 /// the lights reaching each pixel must be positive and at most that. In a multisampled
 /// window the pass reads one sample of each pixel (vtkClusteredLightingSampleZero): its
-/// means and pixel count must agree within 2% with the
-/// same frame rendered single-sampled (whose framebuffer reads back as it is; the two
-/// differ only at edge pixels, where sample 0 and the pixel centre can fall on different
-/// surfaces).
+/// means and pixel count must agree within 2% with the same frame rendered single-sampled
+/// (whose framebuffer reads back as it is; the two differ only at edge pixels, where
+/// sample 0 and the pixel centre can fall on different surfaces).
 double MeasureEvaluated(const std::string& what, vtkRenderWindow* rw, vtkRenderer* ren,
   vtkClusteredLightingPass* pass, bool multisampled, double* reachingOut = nullptr)
 {
@@ -207,6 +204,9 @@ double MeasureEvaluated(const std::string& what, vtkRenderWindow* rw, vtkRendere
   return evaluated;
 }
 
+/// Renders with and without depth-aware clusters and the prepass; checks the images are
+/// identical, the assignment has no false negative, every pixel lies in its cluster, and
+/// that culling by depth evaluates fewer lights per pixel and loses none that reaches.
 void CheckCase(const std::string& what, vtkRenderWindow* rw, vtkRenderer* ren,
   vtkClusteredLightingPass* pass, bool expectDepthAware = true, bool translucent = false,
   bool multisampled = false)
@@ -501,10 +501,10 @@ int TestClusteredLightingDepthAware(int, char*[])
       "8 samples: depth-aware clusters and the counts of lights evaluated per pixel without a "
       "warning");
     // Fragments shaded per visible pixel there: the queries count samples (the pass divides
-    // by the sample count) and the visible pixels come from a resolved copy of the depths.
+    // by the sample count) and the visible pixels come from one sample of each pixel.
     double msShadedOn = 0.0, msShadedOff = 0.0;
     MeasureShaded("8 samples: ", msWindow, msPass, msShadedOn, msShadedOff);
-    // Edge pixels pass some of their samples, and the resolved depth keeps one of them.
+    // Edge pixels pass some of their samples, and the visible pixels count one of them.
     Check(msShadedOn > 0.98 && msShadedOn < 1.02,
       "8 samples: the prepass shades each visible pixel once");
     Check(msShadedOff > msShadedOn + 0.05, "8 samples: without it hidden fragments are shaded too");

@@ -26,7 +26,10 @@
  * The pass's options are not forwarded by this class: the server manager creates the
  * pass as a subproxy of the view proxy, whose properties the view proxy exposes, and
  * hands it to SetClusteredLightingPass(). Each rank has its own pass, so its statistics
- * (GetNumberOfClusteredLights(), ...) describe that rank's last render.
+ * (GetNumberOfClusteredLights(), ...) describe that rank's last render; the pass's proxy
+ * (vtkSMClusteredLightingPassProxy) reads them from the process that rendered: rank 0,
+ * or in client-server mode the server's rank 0 after a remote render and the client
+ * after a local one.
  *
  * @sa vtkClusteredLightingPass vtkClusteredLightsRepresentation vtkPVDefaultPass
  */

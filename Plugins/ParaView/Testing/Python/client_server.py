@@ -10,14 +10,21 @@ next to another rank's piece of a distributed sphere) and renders it twice:
    to the client, whose own view and pass render them.
 
 Checks: the lights' data is on server rank 0 only; the client's view used the mode asked
-for (vtkPVRenderView::GetUseDistributedRenderingForRender); the client's pass clustered the
-8 lights (in client-server mode the view's information properties are read from the
-client's own pass, not the server's: the view lives on the client too, and ParaView pulls
-a client proxy's information there; the lights are delivered to the client in both
-modes); both images are lit (more than
-1,500 pixels brighter than 40 of 255), and equal each other within one 8-bit step (see
-distributed.py for the step); with --reference (the pvbatch tests' output folder), both
-also equal lights_across_ranks.py's 1-rank image within one step.
+for (vtkPVRenderView::GetUseDistributedRenderingForRender); the pass that rendered clustered
+the 8 lights; both images are lit (more than 1,500 pixels brighter than 40 of 255), and
+equal each other within one 8-bit step (see distributed.py for the step); with --reference
+(the pvbatch tests' output folder), both also equal lights_across_ranks.py's 1-rank image
+within one step.
+
+Statistics: the view's information properties come from the process that rendered
+(vtkSMClusteredLightingPassProxy): the server's rank 0 with remote rendering, the client
+with local rendering. Each mode renders the heat map with the prepass forced on and reads
+the lights evaluated and reaching per pixel and whether a prepass was drawn: with remote
+rendering the client draws no geometry, so only the server's rank 0 can report a prepass
+and, with one server rank, lit pixels (ParaView alone reads the client's pass: no prepass,
+0 lights per pixel). With one server rank, which renders the whole scene as the client
+does, the two modes' counts agree within 1%; with several, rank 0's piece of the sphere is
+away from the lights, and its counts are only checked to be consistent.
 
 pvpython, unlike pvbatch, puts Debian's VTK 9.1 Python package (/lib/python3/dist-packages)
 first on sys.path and crashes on importing it: the entry is removed before anything else.
@@ -92,12 +99,41 @@ for mode, threshold in (("remote", 0.0), ("local", 1e6)):
     lit = int((images[mode].max(axis=2) > 40).sum())
     t.check(lit > 1500, "%s rendering: %d lit pixels (more than 1,500 expected)" % (mode, lit))
     clustered = t.info(view, "NumberOfClusteredLights")
-    t.check(clustered == 8, "%s rendering: the client's pass clustered %d lights (8 expected)"
-            % (mode, clustered))
+    t.check(clustered == 8, "%s rendering: the pass that rendered clustered %d lights (8 "
+            "expected)" % (mode, clustered))
 
 d = t.difference(images["remote"], images["local"])
 t.check(d["max"] <= 1, "remote against local rendering: max difference %d step(s) (tolerance 1), "
         "%d pixels differ" % (d["max"], d["pixels_differing"]))
+# The statistics of the pass that rendered, in each mode.
+view.AutomaticDepthPrepass = 0
+view.DebugView = "Heat map"
+counts = {}
+for mode, threshold in (("remote", 0.0), ("local", 1e6)):
+    view.RemoteRenderThreshold = threshold
+    Render(view)
+    counts[mode] = (t.info(view, "MeanLightsEvaluatedPerPixel"),
+                    t.info(view, "MeanLightsReachingPerPixel"))
+    prepass = t.info(view, "DepthPrepassUsed")
+    evaluated, reaching = counts[mode]
+    # With several server ranks, rank 0's piece of the sphere is away from the lights.
+    lowest = 0.0 if mode == "remote" and servers > 1 else 1e-3
+    t.check(lowest <= reaching <= evaluated,
+            "%s rendering, heat map: %s counted %.3f lights evaluated and %.3f reaching per "
+            "pixel (reaching at least %g and at most evaluated)"
+            % (mode, "the server's rank 0" if mode == "remote" else "the client", evaluated,
+               reaching, lowest))
+    t.check(prepass == 1, "%s rendering, prepass forced on: %s drew a depth prepass (%d)"
+            % (mode, "the server's rank 0" if mode == "remote" else "the client", prepass))
+if servers == 1:
+    for i, name in enumerate(("evaluated", "reaching")):
+        remote, local = counts["remote"][i], counts["local"][i]
+        t.check(abs(remote - local) <= 0.01 * local,
+                "one server rank: lights %s per pixel %.3f (server) against %.3f (client), "
+                "within 1%%" % (name, remote, local))
+view.DebugView = "None"
+view.AutomaticDepthPrepass = 1
+
 if args.reference:
     reference = t.read(os.path.join(args.reference, "lights-across-ranks-np1.png"))
     for mode in ("remote", "local"):

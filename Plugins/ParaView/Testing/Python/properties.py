@@ -95,7 +95,7 @@ t.check(len(options) >= 15, "%d options in vtkClusteredLightingPass.h: %s"
         % (len(options), ", ".join(sorted(options))))
 
 # ----------------------------------------------------------------- the XML's properties
-pass_proxy = xml.find(".//ProxyGroup[@name='clustered_lighting']/Proxy[@name='ClusteredLightingPass']")
+pass_proxy = xml.find(".//ProxyGroup[@name='clustered_lighting']/ClusteredLightingPassProxy[@name='ClusteredLightingPass']")
 view_proxy = xml.find(".//RenderViewProxy[@name='ClusteredLightingView']")
 exposed = {p.get("name") for p in view_proxy.iter("Property")}
 properties = {}

@@ -288,6 +288,18 @@ void Context::MeasureCounts(Row& row)
 {
   this->Pass->SetDebugView(vtkClusteredLightingPass::DEBUG_EVALUATED_COUNT);
   this->Window->Render();
+  if (this->Window->GetMultiSamples() > 1)
+  {
+    // A multisampled window's image is resolved: an edge pixel's encoded count
+    // (R + 256 G) would be averaged with the background's. The pass reads one sample of
+    // each pixel itself; its reaching count is the same frame's blue channel (saturating at
+    // 255). Per-pixel maxima over 8x4 tiles need the pixels: not measured here.
+    row.Evaluated = this->Pass->GetMeanLightsEvaluatedPerPixel();
+    row.Reached = this->Pass->GetMeanLightsReachingPerPixel();
+    row.EvaluatedIn32 = NAN;
+    this->Pass->SetDebugView(vtkClusteredLightingPass::DEBUG_NONE);
+    return;
+  }
   const std::vector<float> ev = ClusteredLightingImages::CaptureRGB(this->Window);
   this->Pass->SetDebugView(vtkClusteredLightingPass::DEBUG_REACHED_COUNT);
   this->Window->Render();

@@ -51,12 +51,17 @@ struct Row
   /// worker threads and llvmpipe's rasterizer threads are not counted).
   double CpuMs = NAN;
   double AssignMs = NAN, LightUpdateMs = NAN, ShadeMs = NAN, FirstFrameMs = NAN;
+  /// Lights evaluated and reaching per pixel of geometry, from the evaluated-count and
+  /// reached-count debug images; in a multisampled window from the pass's own counts of
+  /// one sample per pixel (GetMeanLightsEvaluatedPerPixel, GetMeanLightsReachingPerPixel),
+  /// since the resolved image averages an edge pixel's encoded counts.
   double Evaluated = NAN, Reached = NAN;
   /// Lights evaluated per pixel if every pixel cost as much as the most evaluated pixel of
   /// its 8x4 tile: a GPU shades fragments in groups of 32 (on NVIDIA's, 8 quads of 2x2)
   /// that step through the loops together, so a group takes as long as its slowest
   /// fragment. A model (the rasterizer's grouping is not known): its ratio to Evaluated
   /// says how much divergent loops could cost there, from an image any renderer gives.
+  /// Not measured in multisampled windows.
   double EvaluatedIn32 = NAN;
   double PrepassMs = NAN, ShadedPerVisible = NAN; ///< depth prepass; fragments shaded per pixel
   double OpaqueShadedPerVisible = NAN;            ///< the opaque draws' part of ShadedPerVisible

@@ -307,14 +307,14 @@ struct vtkClusteredLightingPass::vtkInternals
   vtkNew<vtkLight> PlaceholderLight;  ///< keeps VTK's lit code when every light is clustered
   vtkNew<vtkLight> ComplexityLight;   ///< keeps VTK's lighting complexity (switched off)
   std::set<std::size_t> BuiltSources; ///< hashes of the shader sources built (NumberOfShaderBuilds)
-  vtkClusteredLighting::DepthImage Depths;         ///< the prepass's readback, during Render()
-  std::string ReportedDepthProblem;                ///< why depth-aware clusters are off, said once
-  std::string DepthReuseProblem;                   ///< why the last depths were not kept
-  bool ReportedShadows = false;                    ///< UseShadows, which the pass does not apply
-  bool ReportedLoopLimit = false;                  ///< the llvmpipe loop limit was reported
-  bool ReportedUncountedPixels = false;            ///< a debug view's counts could not be read
-  bool ReportedPbrFarField = false;                ///< PBR actors sum their far light exactly
-  bool ReportedUnlitVolumes[2] = { false, false }; ///< by light sets, by hidden vtkLights
+  vtkClusteredLighting::DepthImage Depths; ///< the prepass's readback, during Render()
+  std::string ReportedDepthProblem;        ///< why depth-aware clusters are off, said once
+  std::string DepthReuseProblem;           ///< why the last depths were not kept
+  bool ReportedShadows = false;            ///< UseShadows, which the pass does not apply
+  bool ReportedLoopLimit = false;          ///< the llvmpipe loop limit was reported
+  bool ReportedUncountedPixels = false;    ///< a debug view's counts could not be read
+  bool ReportedPbrFarField = false;        ///< PBR actors sum their far light exactly
+  bool ReportedUnlitVolumes = false;       ///< volumes shown with light sets, said once
 
   /// The entry of `ren`, made on first use (its assigner and prepass).
   RendererEntry& GetEntry(vtkRenderer* ren)
@@ -510,10 +510,16 @@ void vtkClusteredLightingPass::Render(const vtkRenderState* s)
   this->SetUpCamera(ren);
   this->ReportIgnoredRendererOptions(ren);
 
-  // 1. Light gathering.
+  // 1. Light gathering. An application's delegate (ParaView's) renders the volumes with the
+  // surfaces, while the clustered vtkLights are hidden from VTK's lighting code, and a
+  // volume mapper lights a volume only with the lights the renderer holds: with a shaded
+  // volume in the frame the renderer's lights stay with VTK, surfaces and volumes alike.
+  const bool foreign = this->DelegatePass != this->Internals->Steps.GetPointer();
+  this->RendererLightsLeftToVTK = this->ClusterRendererLights && foreign &&
+    vtkClusteredLightingVolumetricStep::HasVolumes(s, true);
   vtkClusteredLightingLightCollection lights;
   vtkClusteredLightingLightCollector::CollectRendererLights(
-    ren, this->ClusterRendererLights, lights);
+    ren, this->ClusterRendererLights && !this->RendererLightsLeftToVTK, lights);
   vtkClusteredLightingLightCollector::CollectLightSets(this->Internals->LightSets, lights);
   this->ReportUnlitVolumes(s, lights);
 
@@ -629,38 +635,21 @@ void vtkClusteredLightingPass::ReportIgnoredRendererOptions(vtkRenderer* ren)
 
 //------------------------------------------------------------------------------
 // Volumes are lit by their mappers from the renderer's vtkLights: the pass's own steps
-// give them every one (vtkClusteredLightingVolumetricStep). What cannot reach a volume is
-// said once per pass: the lights of light sets (no volume mapper reads them), and, under
-// an application's delegate (ParaView's), the clustered vtkLights, which the pass hides
-// from VTK's lighting code while that delegate renders the volumes too.
+// give them every one (vtkClusteredLightingVolumetricStep), and under an application's
+// delegate a shaded volume keeps them with VTK (RendererLightsLeftToVTK). The lights of
+// light sets cannot reach a volume (no volume mapper reads them): said once per pass.
 void vtkClusteredLightingPass::ReportUnlitVolumes(
   const vtkRenderState* s, const vtkClusteredLightingLightCollection& lights)
 {
-  const bool foreign = this->DelegatePass != this->Internals->Steps.GetPointer();
-  const bool sets = !lights.LightSets.empty() && !this->Internals->ReportedUnlitVolumes[0];
-  const bool clustered =
-    foreign && !lights.ClusteredLights.empty() && !this->Internals->ReportedUnlitVolumes[1];
-  if ((!sets && !clustered) || !vtkClusteredLightingVolumetricStep::HasVolumes(s))
+  if (lights.LightSets.empty() || this->Internals->ReportedUnlitVolumes ||
+    !vtkClusteredLightingVolumetricStep::HasVolumes(s))
   {
     return;
   }
-  if (sets)
-  {
-    this->Internals->ReportedUnlitVolumes[0] = true;
-    vtkWarningMacro("The renderer shows a volume: volumes are lit by the renderer's "
-                    "vtkLights only, as VTK lights them, not by the lights of "
-                    "vtkClusteredLightSets.");
-  }
-  if (clustered)
-  {
-    this->Internals->ReportedUnlitVolumes[1] = true;
-    vtkWarningMacro("The renderer shows a volume, rendered by the application's delegate "
-                    "pass: it is not lit by the "
-      << lights.ClusteredLights.size()
-      << " positional vtkLight(s) this pass clusters (they are hidden from "
-         "VTK's lighting code meanwhile). The pass's own delegate lights "
-         "volumes with every vtkLight.");
-  }
+  this->Internals->ReportedUnlitVolumes = true;
+  vtkWarningMacro("The renderer shows a volume: volumes are lit by the renderer's "
+                  "vtkLights only, as VTK lights them, not by the lights of "
+                  "vtkClusteredLightSets.");
 }
 
 //------------------------------------------------------------------------------
@@ -1405,6 +1394,7 @@ void vtkClusteredLightingPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "DelegatePass: " << this->DelegatePass << "\n";
   os << indent << "NumberOfLightSets: " << this->GetNumberOfLightSets() << "\n";
   os << indent << "ClusterRendererLights: " << (this->ClusterRendererLights ? "On" : "Off") << "\n";
+  os << indent << "RendererLightsLeftToVTK: " << this->RendererLightsLeftToVTK << "\n";
   os << indent << "ShadingMode: " << this->GetShadingModeAsString() << "\n";
   os << indent << "ContributionCutoff: " << this->ContributionCutoff << "\n";
   os << indent << "ErrorBudgetInSteps: " << this->GetErrorBudgetInSteps() << "\n";

@@ -134,7 +134,11 @@ public:
   //@{
   /**
    * Take the renderer's switched-on positional vtkLights over as clustered lights.
-   * Default is on.
+   * Under an application's delegate pass (SetDelegatePass, as ParaView's view does), a
+   * frame that shows a shaded volume leaves them to VTK's own lighting code instead
+   * (GetRendererLightsLeftToVTK): such a delegate renders the volumes together with the
+   * surfaces, and the volume mappers light a volume only with the lights the renderer
+   * holds while they render. Default is on.
    */
   vtkSetMacro(ClusterRendererLights, bool);
   vtkGetMacro(ClusterRendererLights, bool);
@@ -666,6 +670,12 @@ public:
   vtkGetMacro(LastShadingTime, double);
   /// Whether the last render drew a depth prepass.
   vtkGetMacro(DepthPrepassUsed, bool);
+  /// Whether the last render left the renderer's positional vtkLights to VTK's lighting
+  /// code, though ClusterRendererLights is on: an application's delegate pass rendered a
+  /// shaded volume, which VTK lights only with the lights the renderer holds (the pass's
+  /// own delegate hands them to the volumes itself). They are then shaded by VTK, surfaces
+  /// and volumes alike, as without the pass; light sets are still clustered.
+  vtkGetMacro(RendererLightsLeftToVTK, bool);
   /// Time in ms of the last depth prepass, its depth readback included.
   vtkGetMacro(LastDepthPrepassTime, double);
   /// Whether the last render's prepass copied the frame before's depths back
@@ -816,6 +826,7 @@ protected:
   vtkRenderPass* DelegatePass = nullptr;
 
   bool ClusterRendererLights = true;
+  bool RendererLightsLeftToVTK = false;
   int TilesX = 32;
   int TilesY = 16;
   int Slices = 32;

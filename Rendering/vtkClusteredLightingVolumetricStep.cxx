@@ -7,8 +7,9 @@
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLFXAAFilter.h"
 #include "vtkOpenGLRenderer.h"
-#include "vtkProp.h"
 #include "vtkRenderState.h"
+#include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
 #include "vtkVolumetricPass.h"
 
 vtkStandardNewMacro(vtkClusteredLightingVolumetricStep);
@@ -60,12 +61,13 @@ void vtkClusteredLightingVolumetricStep::Render(const vtkRenderState* s)
 }
 
 //------------------------------------------------------------------------------
-bool vtkClusteredLightingVolumetricStep::HasVolumes(const vtkRenderState* s)
+bool vtkClusteredLightingVolumetricStep::HasVolumes(const vtkRenderState* s, bool shadedOnly)
 {
   for (int i = 0; i < s->GetPropArrayCount(); ++i)
   {
-    vtkProp* prop = s->GetPropArray()[i];
-    if (prop->GetVisibility() && prop->IsA("vtkVolume"))
+    vtkVolume* volume = vtkVolume::SafeDownCast(s->GetPropArray()[i]);
+    if (volume && volume->GetVisibility() &&
+      (!shadedOnly || (volume->GetProperty() && volume->GetProperty()->GetShade())))
     {
       return true;
     }

@@ -61,8 +61,9 @@ public:
     this->VolumeLights = lights;
   }
 
-  /// Whether the state holds a visible volume (vtkVolume, vtkMultiVolume).
-  static bool HasVolumes(const vtkRenderState* s);
+  /// Whether the state holds a visible volume (vtkVolume, vtkMultiVolume); with
+  /// `shadedOnly`, a visible volume whose property has shading on (lit by the lights).
+  static bool HasVolumes(const vtkRenderState* s, bool shadedOnly = false);
 
 protected:
   vtkClusteredLightingVolumetricStep();

@@ -14,9 +14,12 @@
 //     step (clustered shading against VTK's, float sums in another order);
 //  3. a vtkClusteredLightSet added: one warning says volumes are lit by the renderer's
 //     vtkLights only; the volume's pixels do not change, the sphere's do;
-//  4. through an application's delegate (as in ParaView), which renders the volumes while
-//     the clustered vtkLights are hidden: the volume renders, and one warning says it
-//     misses those lights.
+//  4. through an application's delegate (as in ParaView), which renders the volumes with
+//     the surfaces, so the pass cannot hand the volumes their lights: with a shaded volume
+//     in the frame the renderer's lights stay with VTK (GetRendererLightsLeftToVTK), and
+//     the image is stock VTK's bit for bit, volume and sphere; without the volume, or with
+//     an unshaded one, the pass clusters them again. No warning (until 2026-11-29 the
+//     volume missed those lights, with a warning).
 // Nothing reaches VTK's output window (a shader that fails to compile would).
 #include "ClusteredLightingGLTestUtilities.h"
 #include "ClusteredLightingTestUtilities.h"
@@ -46,8 +49,9 @@ constexpr int Height = 150;
 constexpr int VolumeColumns = 120; ///< the volume lies left of this column, the sphere right
 
 /// A shaded volume of VTK's analytic wavelet (an opaque blob), drawn by a
-/// vtkGPUVolumeRayCastMapper or a vtkSmartVolumeMapper, and a sphere to its right.
-void AddScene(vtkRenderer* ren, bool smart)
+/// vtkGPUVolumeRayCastMapper or a vtkSmartVolumeMapper, and a sphere to its right; the
+/// volume (the renderer holds it).
+vtkVolume* AddScene(vtkRenderer* ren, bool smart)
 {
   vtkNew<vtkRTAnalyticSource> source;
   source->SetWholeExtent(-20, 20, -20, 20, -20, 20);
@@ -91,6 +95,7 @@ void AddScene(vtkRenderer* ren, bool smart)
   ren->AddActor(actor);
   ren->SetBackground(0.05, 0.05, 0.08);
   ren->ResetCamera();
+  return volume;
 }
 
 void AddPositionalLights(vtkRenderer* ren)
@@ -110,15 +115,19 @@ void AddPositionalLights(vtkRenderer* ren)
   }
 }
 
-/// Renders a fresh window of the scene (with the pass when given) twice; its pixels.
-std::vector<float> Render(bool positional, vtkClusteredLightingPass* pass, bool smart = false)
+/// Renders a fresh window of the scene (with the pass when given) twice; its pixels. With
+/// `volumeShown` false the volume is hidden; with `shaded` false it is not shaded.
+std::vector<float> Render(bool positional, vtkClusteredLightingPass* pass, bool smart = false,
+  bool volumeShown = true, bool shaded = true)
 {
   vtkNew<vtkRenderWindow> rw;
   rw->SetSize(Width, Height);
   rw->SetMultiSamples(0);
   vtkNew<vtkRenderer> ren;
   rw->AddRenderer(ren);
-  AddScene(ren, smart);
+  vtkVolume* volume = AddScene(ren, smart);
+  volume->SetVisibility(volumeShown);
+  volume->GetProperty()->SetShade(shaded);
   if (positional)
   {
     AddPositionalLights(ren);
@@ -239,24 +248,46 @@ int TestClusteredLightingVolumes(int, char*[])
   Check(messages->Errors.empty(), "no error");
 
   // 4. An application's delegate (ParaView's renders through the renderer): it renders the
-  // volume while the clustered vtkLights are hidden, so the volume compiles and renders
-  // but misses them; one warning says so.
+  // volume with the surfaces, so a shaded volume keeps the renderer's lights with VTK.
   pass->RemoveAllLightSets();
   messages->Warnings.clear();
   vtkNew<vtkRenderStepsPass> foreign;
   pass->SetDelegatePass(foreign);
-  const std::vector<float> viaForeign = Render(true, pass);
-  Render(true, pass);
-  Check(
-    Covered(viaForeign, 0, VolumeColumns) > 3000, "an application's delegate: the volume renders");
-  Check(messages->Warnings.size() == 1 &&
-      messages->Warnings[0].find("not lit by the 2 positional vtkLight(s)") != std::string::npos,
-    "an application's delegate: one warning in two windows says the volume misses the "
-    "clustered vtkLights");
-  if (!messages->Warnings.empty())
+  for (bool smart : { false, true })
   {
-    std::printf("the warning: %s\n", messages->Warnings[0].c_str());
+    const std::string mapper = smart ? "vtkSmartVolumeMapper" : "vtkGPUVolumeRayCastMapper";
+    const std::vector<float> stockLit = Render(true, nullptr, smart);
+    const std::vector<float> viaForeign = Render(true, pass, smart);
+    Check(pass->GetRendererLightsLeftToVTK() && pass->GetNumberOfClusteredLights() == 0,
+      mapper + ", an application's delegate: the 2 positional lights are left to VTK (" +
+        std::to_string(pass->GetNumberOfClusteredLights()) + " clustered)");
+    const double all = MaxSteps(viaForeign, stockLit, 0, Width, 0.0, over);
+    Check(all == 0.0,
+      mapper + ", an application's delegate: stock VTK's image, volume and sphere, bit for " +
+        "bit (max " + std::to_string(all) + " steps, " + std::to_string(over) + " pixels differ)");
   }
+  const std::vector<float> stockHidden = Render(true, nullptr, false, false);
+  const std::vector<float> hidden = Render(true, pass, false, false);
+  Check(!pass->GetRendererLightsLeftToVTK() && pass->GetNumberOfClusteredLights() == 2,
+    "an application's delegate, the volume hidden: the pass clusters the 2 lights (" +
+      std::to_string(pass->GetNumberOfClusteredLights()) + ")");
+  const double sphereHidden = MaxSteps(hidden, stockHidden, 0, Width, 1.0, over);
+  Check(sphereHidden <= 1.0,
+    "an application's delegate, the volume hidden: within 1 step of stock VTK (max " +
+      std::to_string(sphereHidden) + ")");
+  const std::vector<float> stockUnshaded = Render(true, nullptr, false, true, false);
+  const std::vector<float> unshaded = Render(true, pass, false, true, false);
+  Check(!pass->GetRendererLightsLeftToVTK() && pass->GetNumberOfClusteredLights() == 2,
+    "an application's delegate, an unshaded volume: the pass clusters the 2 lights (" +
+      std::to_string(pass->GetNumberOfClusteredLights()) + ")");
+  const double volumeUnshaded = MaxSteps(unshaded, stockUnshaded, 0, VolumeColumns, 0.0, over);
+  const double sphereUnshaded = MaxSteps(unshaded, stockUnshaded, VolumeColumns, Width, 1.0, over);
+  Check(volumeUnshaded == 0.0 && sphereUnshaded <= 1.0,
+    "an application's delegate, an unshaded volume: the volume stock VTK's bit for bit (max " +
+      std::to_string(volumeUnshaded) + "), the sphere within 1 step (max " +
+      std::to_string(sphereUnshaded) + ")");
+  Check(messages->Warnings.empty() && messages->Errors.empty(),
+    "an application's delegate: no warning, no error");
 
   const std::string printed = output.Finish();
   Check(printed.empty(), "nothing reached VTK's output window: " + printed);

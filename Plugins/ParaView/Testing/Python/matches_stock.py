@@ -25,7 +25,12 @@ Checks, on every rank count:
  - a shaded volume (the Wavelet source) in a new pair of views lit by the light kit only
    (its lights stay with VTK): it covers the image and the clustered view equals the
    stock one within one step (the ray caster's shaders did not compile under the pass
-   before 2026-11-28, and the volume vanished).
+   before 2026-11-28, and the volume vanished); then with two positional lights added
+   (AddLight, as the Light Inspector does), which change the stock image: the clustered
+   view leaves them to VTK while the shaded volume is shown (RendererLightsLeftToVTK;
+   ParaView's delegate renders the volume with the surfaces, and VTK lights a volume
+   only with the lights the renderer holds) and equals the stock one within one step
+   (until 2026-11-29 the volume missed them).
 """
 
 from paraview.simple import *  # noqa: F401,F403
@@ -158,5 +163,32 @@ d = t.difference(a, b)
 t.check(d["max"] <= 1,
         "volume: clustered against stock: max difference %d step(s) (tolerance 1), "
         "%d of %d pixels differ" % (d["max"], d["pixels_differing"], d["pixels"]))
+
+# The same volume lit by two positional lights too.
+for view in volume_views:
+    for position, color in (([-30.0, -40.0, 30.0], [1.0, 0.4, 0.3]),
+                            ([30.0, -30.0, -20.0], [0.3, 0.5, 1.0])):
+        light = AddLight(view=view)
+        light.Coords = "Scene"
+        light.Type = "Positional"
+        light.Position = position
+        light.FocalPoint = [0.0, 0.0, 0.0]
+        light.DiffuseColor = color
+        light.ConeAngle = 180.0
+lit = t.save(volume_views[0], t.output("matches-stock-volume-lights"))
+lit_stock = t.save(volume_views[1], t.output("matches-stock-volume-lights-stock"))
+d = t.difference(lit_stock, b)
+t.check(d["max"] > 20,
+        "volume with 2 positional lights: they change the stock image (max %d steps at %d "
+        "pixels)" % (d["max"], d["pixels_differing"]))
+left = t.info(volume_views[0], "RendererLightsLeftToVTK")
+clustered_lights = t.info(volume_views[0], "NumberOfClusteredLights")
+t.check(left == 1 and clustered_lights == 0,
+        "volume with 2 positional lights: left to VTK (%d), %d clustered (0 expected)"
+        % (left, clustered_lights))
+d = t.difference(lit, lit_stock)
+t.check(d["max"] <= 1,
+        "volume with 2 positional lights: clustered against stock: max difference %d step(s) "
+        "(tolerance 1), %d of %d pixels differ" % (d["max"], d["pixels_differing"], d["pixels"]))
 
 t.finish()

@@ -89,6 +89,48 @@ vtkClusteredLightingShaderVariant::Debug ToVariantDebug(int view)
   }
 }
 
+/// Turns the renderer's FXAA and SSAO off for one render whose colours encode counts
+/// (R + 256 G, B), and back on when it ends: FXAA blends an edge pixel's colour with its
+/// neighbours' (the background's, say) and SSAO scales colours by occlusion, either of
+/// which decodes to another count (in ParaView's view, whose background is not black, a
+/// sphere's silhouette decoded to thousands: a mean of 60.3 lights per pixel for 1.14).
+class CountingRender
+{
+public:
+  CountingRender(vtkRenderer* ren, bool counting)
+    : Renderer(counting ? ren : nullptr)
+    , FXAA(ren->GetUseFXAA())
+    , SSAO(ren->GetUseSSAO())
+  {
+    if (this->Renderer && this->FXAA)
+    {
+      this->Renderer->UseFXAAOff();
+    }
+    if (this->Renderer && this->SSAO)
+    {
+      this->Renderer->UseSSAOOff();
+    }
+  }
+  ~CountingRender()
+  {
+    if (this->Renderer && this->FXAA)
+    {
+      this->Renderer->UseFXAAOn();
+    }
+    if (this->Renderer && this->SSAO)
+    {
+      this->Renderer->UseSSAOOn();
+    }
+  }
+  CountingRender(const CountingRender&) = delete;
+  CountingRender& operator=(const CountingRender&) = delete;
+
+private:
+  vtkRenderer* Renderer;
+  bool FXAA;
+  bool SSAO;
+};
+
 /// Lights evaluated per pixel, decoded from a DEBUG_EVALUATED_COUNT frame.
 struct PixelCounts
 {
@@ -1029,7 +1071,10 @@ void vtkClusteredLightingPass::RenderDelegate(const vtkRenderState* s,
   {
     variant.DebugView = vtkClusteredLightingShaderVariant::Debug::EvaluatedCount;
     this->Internals->ShaderStageTime.Modified();
-    this->RenderDelegateOnce(s);
+    {
+      CountingRender countingRender(ren, true);
+      this->RenderDelegateOnce(s);
+    }
     this->SetPixelCounts(s, rw);
     variant.DebugView = vtkClusteredLightingShaderVariant::Debug::HeatMap;
     this->Internals->ShaderStageTime.Modified();
@@ -1055,7 +1100,12 @@ void vtkClusteredLightingPass::RenderDelegate(const vtkRenderState* s,
   {
     step->BeginCounting();
   }
-  this->RenderDelegateOnce(s);
+  {
+    // The count views' images encode counts, which FXAA and SSAO would change.
+    CountingRender countingRender(
+      ren, enabled && (counting || this->DebugView == DEBUG_REACHED_COUNT));
+    this->RenderDelegateOnce(s);
+  }
   this->ShadedOpaqueFragmentsPerVisiblePixel = 0.0;
   this->ShadedTranslucentFragmentsPerVisiblePixel = 0.0;
   vtkClusteredLightingTranslucentStep::Counts shaded;

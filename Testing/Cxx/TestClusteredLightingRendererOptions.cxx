@@ -13,6 +13,9 @@
 //     the clustered image by stock VTK's ambient-occlusion factor of the same geometry
 //     (col.rgb * ao, within the rounding of the 8-bit images the factor is read from);
 //     hidden-line removal hides the same wireframe pixels as stock VTK's.
+//     The count debug views (and the heat map's count) are rendered without FXAA and SSAO,
+//     which change the colours that encode the counts: the same counts and images as
+//     without the options, and the options still on afterwards.
 //  3. The shaded-fragment count (MeasureTimings) says "not measured" (-1) for the opaque
 //     part under SSAO, which draws full-viewport quads of its own.
 //  4. One pass in two windows, each with SSAO: each window keeps its own image frame
@@ -258,6 +261,59 @@ int TestClusteredLightingRendererOptions(int, char*[])
   Check(!prepassed && pass->GetDepthPrepassUsed(),
     "no depth prepass while hidden lines are removed; again without them");
   Check(MaxDifference(after, plain) == 0.0, "each option off again: the plain image");
+
+  // The count views encode counts in their colours (R + 256 G, and B), which FXAA (an edge
+  // pixel blended with the background) and SSAO (colours scaled by occlusion) would
+  // change: the pass renders them without either, and so the heat map's count first.
+  // A bright background (ParaView's is): FXAA leaves the dark edges of this scene's
+  // (0.05, 0.05, 0.08) alone.
+  double background[3];
+  ren->GetBackground(background);
+  ren->SetBackground(0.6, 0.6, 0.7);
+  pass->SetDebugView(vtkClusteredLightingPass::DEBUG_EVALUATED_COUNT);
+  const std::vector<float> counts = Frame(rw);
+  const double evaluated = pass->GetMeanLightsEvaluatedPerPixel();
+  const double reaching = pass->GetMeanLightsReachingPerPixel();
+  ren->UseFXAAOn();
+  const std::vector<float> countsFXAA = Frame(rw);
+  const bool fxaaKept = ren->GetUseFXAA();
+  std::printf("evaluated / reaching per pixel: %.4f / %.4f, with FXAA %.4f / %.4f\n", evaluated,
+    reaching, pass->GetMeanLightsEvaluatedPerPixel(), pass->GetMeanLightsReachingPerPixel());
+  Check(evaluated > 0.5 && MaxDifference(countsFXAA, counts) == 0.0 &&
+      pass->GetMeanLightsEvaluatedPerPixel() == evaluated &&
+      pass->GetMeanLightsReachingPerPixel() == reaching && fxaaKept,
+    "DEBUG_EVALUATED_COUNT with UseFXAA: the counts and their image as without it, and "
+    "UseFXAA still on after the frame");
+  pass->SetDebugView(vtkClusteredLightingPass::DEBUG_HEAT_MAP);
+  const std::vector<float> heatFXAA = Frame(rw);
+  const double scaleFXAA = pass->GetHeatMapScale();
+  ren->UseFXAAOff();
+  const std::vector<float> heat = Frame(rw);
+  Check(pass->GetHeatMapScale() == scaleFXAA &&
+      pass->GetMeanLightsEvaluatedPerPixel() == evaluated && MaxDifference(heatFXAA, heat) > 0.0,
+    "DEBUG_HEAT_MAP with UseFXAA: the same scale (" + std::to_string(scaleFXAA) +
+      ") and counts as without it, and the heat map itself anti-aliased");
+  // SSAO draws no prepass: its counts are those of the frame without one.
+  pass->SetDebugView(vtkClusteredLightingPass::DEBUG_EVALUATED_COUNT);
+  pass->DepthPrepassOff();
+  pass->DepthAwareClustersOff();
+  const std::vector<float> countsUnculled = Frame(rw);
+  const double evaluatedUnculled = pass->GetMeanLightsEvaluatedPerPixel();
+  const double reachingUnculled = pass->GetMeanLightsReachingPerPixel();
+  pass->DepthPrepassOn();
+  pass->DepthAwareClustersOn();
+  ren->UseSSAOOn();
+  const std::vector<float> countsSSAO = Frame(rw);
+  const bool ssaoKept = ren->GetUseSSAO();
+  ren->UseSSAOOff();
+  Check(MaxDifference(countsSSAO, countsUnculled) == 0.0 &&
+      pass->GetMeanLightsEvaluatedPerPixel() == evaluatedUnculled &&
+      pass->GetMeanLightsReachingPerPixel() == reachingUnculled && ssaoKept,
+    "DEBUG_EVALUATED_COUNT with UseSSAO: the counts and their image as without it (no "
+    "prepass, " +
+      std::to_string(evaluatedUnculled) + " per pixel), and UseSSAO still on after the frame");
+  pass->SetDebugView(vtkClusteredLightingPass::DEBUG_NONE);
+  ren->SetBackground(background);
 
   // 3. The opaque count under SSAO.
   pass->MeasureTimingsOn();

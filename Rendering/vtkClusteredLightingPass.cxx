@@ -92,8 +92,8 @@ vtkClusteredLightingShaderVariant::Debug ToVariantDebug(int view)
 /// Turns the renderer's FXAA and SSAO off for one render whose colours encode counts
 /// (R + 256 G, B), and back on when it ends: FXAA blends an edge pixel's colour with its
 /// neighbours' (the background's, say) and SSAO scales colours by occlusion, either of
-/// which decodes to another count (in ParaView's view, whose background is not black, a
-/// sphere's silhouette decoded to thousands: a mean of 60.3 lights per pixel for 1.14).
+/// which decodes to another count (ParaView's default view, FXAA on over a grey-blue
+/// background, counted 76.991 lights evaluated per pixel where 73 lights shone, 17.484).
 class CountingRender
 {
 public:

@@ -9,6 +9,10 @@ next to another rank's piece of a distributed sphere) and renders it twice:
  - local rendering (a large threshold): the geometry and the lights' data are delivered
    to the client, whose own view and pass render them.
 
+With --render-server, the client connects to a separate data server and render server
+(pvdataserver, pvrenderserver: one process each); the render server renders with remote
+rendering, and its statistics are the ones read.
+
 Checks: the lights' data is on server rank 0 only; the client's view used the mode asked
 for (vtkPVRenderView::GetUseDistributedRenderingForRender); the pass that rendered clustered
 the 8 lights; both images are lit (more than 1,500 pixels brighter than 40 of 255), and
@@ -44,19 +48,27 @@ import clustered_test as t  # noqa: E402
 parser = argparse.ArgumentParser(description=__doc__)
 parser.add_argument("--plugin", required=True)
 parser.add_argument("--output", required=True)
-parser.add_argument("--server", required=True, help="host:port of pvserver")
+parser.add_argument("--server", required=True, help="host:port of pvserver (or pvdataserver)")
+parser.add_argument("--render-server", help="host:port of pvrenderserver, if separate")
 parser.add_argument("--reference", help="output folder of lights_across_ranks.py on 1 rank")
 args = parser.parse_args()
 os.makedirs(args.output, exist_ok=True)
 t.args = args
 
 host, port = args.server.rsplit(":", 1)
-connection = Connect(host, int(port))
-t.check(connection is not None, "connected to pvserver at %s" % args.server)
+if args.render_server:
+    render_host, render_port = args.render_server.rsplit(":", 1)
+    connection = Connect(host, int(port), render_host, int(render_port))
+else:
+    connection = Connect(host, int(port))
+t.check(connection is not None, "connected to %s at %s" % (
+    "pvdataserver and pvrenderserver" if args.render_server else "pvserver",
+    args.server + (" and " + args.render_server if args.render_server else "")))
 LoadPlugin(args.plugin, remote=True, ns=globals())
 LoadPlugin(args.plugin, remote=False, ns=globals())
 servers = servermanager.ActiveConnection.GetNumberOfDataPartitions()
 print("server ranks: %d" % servers)
+label = "split" if args.render_server else "np%d" % servers
 
 view = CreateView("ClusteredLightingView")
 view.ViewSize = [400, 400]
@@ -89,7 +101,7 @@ t.check(low == 0 and high == 0, "the lights' data is on server rank 0 only (proc
 images = {}
 for mode, threshold in (("remote", 0.0), ("local", 1e6)):
     view.RemoteRenderThreshold = threshold
-    path = os.path.join(args.output, "client-server-%s-np%d.png" % (mode, servers))
+    path = os.path.join(args.output, "client-server-%s-%s.png" % (mode, label))
     images[mode] = t.save(view, path)
     distributed = view.GetClientSideObject().GetUseDistributedRenderingForRender()
     t.check(distributed == (mode == "remote"),

@@ -28,7 +28,9 @@ rendering the client draws no geometry, so only the server's rank 0 can report a
 and, with one server rank, lit pixels (ParaView alone reads the client's pass: no prepass,
 0 lights per pixel). With one server rank, which renders the whole scene as the client
 does, the two modes' counts agree within 1%; with several, rank 0's piece of the sphere is
-away from the lights, and its counts are only checked to be consistent.
+away from the lights, and its counts are only checked to be consistent. Last, an
+interactive render with level of detail that renders locally while a still render goes
+remote: its counts are the client's (over the coarser geometry), not the server's last.
 
 pvpython, unlike pvbatch, puts Debian's VTK 9.1 Python package (/lib/python3/dist-packages)
 first on sys.path and crashes on importing it: the entry is removed before anything else.
@@ -143,6 +145,28 @@ if servers == 1:
         t.check(abs(remote - local) <= 0.01 * local,
                 "one server rank: lights %s per pixel %.3f (server) against %.3f (client), "
                 "within 1%%" % (name, remote, local))
+
+# An interactive render with level of detail, rendered locally while a still render goes
+# remote (a threshold between the two geometries' sizes: about 1.3 and 3.2 MB here): the
+# statistics then come from the client, which rendered the coarser geometry, not from the
+# server's last still render.
+lod_threshold = view.LODThreshold
+view.LODThreshold = 0.0
+view.RemoteRenderThreshold = 2.2
+Render(view)
+still = (t.info(view, "MeanLightsEvaluatedPerPixel"), t.info(view, "MeanLightsReachingPerPixel"))
+view.SMProxy.InteractiveRender()
+client_view = view.GetClientSideObject()
+t.check(client_view.GetUsedLODForLastRender() and
+        client_view.GetUseDistributedRenderingForRender() and
+        not client_view.GetUseDistributedRenderingForLODRender(),
+        "level of detail: the still render goes remote, the interactive one local")
+lod = (t.info(view, "MeanLightsEvaluatedPerPixel"), t.info(view, "MeanLightsReachingPerPixel"))
+t.check(0.0 < lod[1] <= lod[0] and lod != still,
+        "level of detail: the client counted %.3f lights evaluated and %.3f reaching per pixel "
+        "over its coarser geometry (the server's still render: %.3f and %.3f)"
+        % (lod[0], lod[1], still[0], still[1]))
+view.LODThreshold = lod_threshold
 view.DebugView = "None"
 view.AutomaticDepthPrepass = 1
 

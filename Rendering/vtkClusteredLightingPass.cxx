@@ -98,26 +98,26 @@ class CountingRender
 {
 public:
   CountingRender(vtkRenderer* ren, bool counting)
-    : Renderer(counting ? ren : nullptr)
-    , FXAA(ren->GetUseFXAA())
-    , SSAO(ren->GetUseSSAO())
+    : Renderer(ren)
+    , FXAA(counting && ren->GetUseFXAA())
+    , SSAO(counting && ren->GetUseSSAO())
   {
-    if (this->Renderer && this->FXAA)
+    if (this->FXAA)
     {
       this->Renderer->UseFXAAOff();
     }
-    if (this->Renderer && this->SSAO)
+    if (this->SSAO)
     {
       this->Renderer->UseSSAOOff();
     }
   }
   ~CountingRender()
   {
-    if (this->Renderer && this->FXAA)
+    if (this->FXAA)
     {
       this->Renderer->UseFXAAOn();
     }
-    if (this->Renderer && this->SSAO)
+    if (this->SSAO)
     {
       this->Renderer->UseSSAOOn();
     }
@@ -127,8 +127,8 @@ public:
 
 private:
   vtkRenderer* Renderer;
-  bool FXAA;
-  bool SSAO;
+  const bool FXAA; ///< FXAA was on and is off until the render ends
+  const bool SSAO; ///< SSAO likewise
 };
 
 /// Lights evaluated per pixel, decoded from a DEBUG_EVALUATED_COUNT frame.

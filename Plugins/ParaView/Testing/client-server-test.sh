@@ -18,11 +18,13 @@ shift 2
 prefix=${CLUSTERED_LIGHTING_PARAVIEW_PREFIX:-/opt/clustered-lighting/paraview-5.11}
 python_root="$prefix/python3-paraview/usr"
 export PYTHONPATH="$python_root/lib/python3/dist-packages:$(cd "$(dirname "$script")" && pwd)"
-free_port() {
-  /usr/bin/python3 -c \
-    'import socket; s = socket.socket(); s.bind(("localhost", 0)); print(s.getsockname()[1])'
-}
-port=$(free_port)
+# Two free ports of localhost, from two sockets open at once (so never the same one).
+read -r port render_port < <(/usr/bin/python3 -c '
+import socket
+a, b = socket.socket(), socket.socket()
+a.bind(("localhost", 0))
+b.bind(("localhost", 0))
+print(a.getsockname()[1], b.getsockname()[1])')
 servers=() # pids
 logs=()
 start_server() { # start_server <command...>: in the background, its output in a log
@@ -53,7 +55,6 @@ stop_servers() {
 trap stop_servers EXIT
 client_args=(--server "localhost:$port")
 if [ "$ranks" = split ]; then
-  render_port=$(free_port)
   start_server pvdataserver --data-server-port="$port"
   start_server pvrenderserver --force-offscreen-rendering --render-server-port="$render_port"
   client_args+=(--render-server "localhost:$render_port")

@@ -126,8 +126,7 @@ counts = {}
 for mode, threshold in (("remote", 0.0), ("local", 1e6)):
     view.RemoteRenderThreshold = threshold
     Render(view)
-    counts[mode] = (t.info(view, "MeanLightsEvaluatedPerPixel"),
-                    t.info(view, "MeanLightsReachingPerPixel"))
+    counts[mode] = t.light_counts(view)
     prepass = t.info(view, "DepthPrepassUsed")
     evaluated, reaching = counts[mode]
     # With several server ranks, rank 0's piece of the sphere is away from the lights.
@@ -154,14 +153,14 @@ lod_threshold = view.LODThreshold
 view.LODThreshold = 0.0
 view.RemoteRenderThreshold = 2.2
 Render(view)
-still = (t.info(view, "MeanLightsEvaluatedPerPixel"), t.info(view, "MeanLightsReachingPerPixel"))
+still = t.light_counts(view)
 view.SMProxy.InteractiveRender()
 client_view = view.GetClientSideObject()
 t.check(client_view.GetUsedLODForLastRender() and
         client_view.GetUseDistributedRenderingForRender() and
         not client_view.GetUseDistributedRenderingForLODRender(),
         "level of detail: the still render goes remote, the interactive one local")
-lod = (t.info(view, "MeanLightsEvaluatedPerPixel"), t.info(view, "MeanLightsReachingPerPixel"))
+lod = t.light_counts(view)
 t.check(0.0 < lod[1] <= lod[0] and lod != still,
         "level of detail: the client counted %.3f lights evaluated and %.3f reaching per pixel "
         "over its coarser geometry (the server's still render: %.3f and %.3f)"

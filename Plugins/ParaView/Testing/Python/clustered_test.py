@@ -91,6 +91,11 @@ def info(proxy, name):
     return vtkSMPropertyHelper(proxy.SMProxy, name).GetAsDouble(0)
 
 
+def light_counts(view):
+    """(lights evaluated, lights reaching) per pixel of the view's last counting render."""
+    return (info(view, "MeanLightsEvaluatedPerPixel"), info(view, "MeanLightsReachingPerPixel"))
+
+
 def check(condition, message):
     """Records and prints one check."""
     print("%s: %s" % ("ok  " if condition else "FAIL", message))

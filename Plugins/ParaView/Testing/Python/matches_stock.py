@@ -62,6 +62,17 @@ def new_view(kind, size):
     return view
 
 
+def add_light(view, position, focal, color, cone):
+    """A positional light of the view, as the Light Inspector adds it, in scene coordinates."""
+    light = AddLight(view=view)
+    light.Coords = "Scene"
+    light.Type = "Positional"
+    light.Position = position
+    light.FocalPoint = focal
+    light.DiffuseColor = color
+    light.ConeAngle = cone
+
+
 def make_view(kind):
     view = new_view(kind, [480, 360])
     view.UseFXAA = 1
@@ -75,13 +86,7 @@ def make_view(kind):
     glass_display.DiffuseColor = [0.9, 0.5, 0.3]
     glass_display.Opacity = 0.4
     for position, focal, color, cone in LIGHTS:
-        light = AddLight(view=view)
-        light.Coords = "Scene"
-        light.Type = "Positional"
-        light.Position = position
-        light.FocalPoint = focal
-        light.DiffuseColor = color
-        light.ConeAngle = cone
+        add_light(view, position, focal, color, cone)
     view.CameraPosition = [10.0, -45.0, 18.0]
     view.CameraFocalPoint = [0.0, 0.0, 0.0]
     view.CameraViewUp = [0.0, 0.0, 1.0]
@@ -168,13 +173,7 @@ t.check(d["max"] <= 1,
 for view in volume_views:
     for position, color in (([-30.0, -40.0, 30.0], [1.0, 0.4, 0.3]),
                             ([30.0, -30.0, -20.0], [0.3, 0.5, 1.0])):
-        light = AddLight(view=view)
-        light.Coords = "Scene"
-        light.Type = "Positional"
-        light.Position = position
-        light.FocalPoint = [0.0, 0.0, 0.0]
-        light.DiffuseColor = color
-        light.ConeAngle = 180.0
+        add_light(view, position, [0.0, 0.0, 0.0], color, 180.0)
 lit = t.save(volume_views[0], t.output("matches-stock-volume-lights"))
 lit_stock = t.save(volume_views[1], t.output("matches-stock-volume-lights-stock"))
 d = t.difference(lit_stock, b)

@@ -238,8 +238,7 @@ heat = t.save(view, t.output("properties-heat-map"))
 d = t.difference(shaded, heat)
 t.check(d["pixels_differing"] > 0.1 * d["pixels"],
         "Debug View heat map: %d of %d pixels change" % (d["pixels_differing"], d["pixels"]))
-evaluated = t.info(view, "MeanLightsEvaluatedPerPixel")
-reaching = t.info(view, "MeanLightsReachingPerPixel")
+evaluated, reaching = t.light_counts(view)
 clustered = t.info(view, "NumberOfClusteredLights")
 t.check(0.0 < reaching <= evaluated <= clustered,
         "Debug View heat map: rank 0 counted %.3f lights evaluated and %.3f reaching per pixel "
@@ -251,7 +250,7 @@ t.check(0.0 < reaching <= evaluated <= clustered,
 fxaa = view.UseFXAA
 view.UseFXAA = 1 - fxaa
 Render(view)
-other = (t.info(view, "MeanLightsEvaluatedPerPixel"), t.info(view, "MeanLightsReachingPerPixel"))
+other = t.light_counts(view)
 t.check(fxaa == 1 and other == (evaluated, reaching),
         "Debug View heat map: the same counts with FXAA %s (%.3f / %.3f) as with ParaView's "
         "default, FXAA %s" % ("off" if fxaa else "on", other[0], other[1], "on" if fxaa else "off"))

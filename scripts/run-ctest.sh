@@ -7,6 +7,8 @@
 # summary ("NN% tests passed, ..."), which is held back until then: a CI log read from its
 # summary backwards shows why, not only which. Then the failing tests are run once more
 # (the result stays a failure even if they pass then).
+# Tests run on every core at once where they may: the GL-free core tests beside each other,
+# every test that renders alone (RUN_SERIAL; Module/ClusteredLightingTesting.cmake).
 # Usage (from a build directory): scripts/run-ctest.sh [ctest args...]
 set -uo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
@@ -16,7 +18,8 @@ trap 'rm -f "$summary"' EXIT
 # The machine first (with DISPLAY unset, with-display.sh starts an X server exactly like
 # the one ctest gets below).
 "$root/scripts/with-display.sh" "$root/scripts/check-machine.sh" || exit 1
-"$root/scripts/with-display.sh" ctest --output-on-failure --timeout 900 "$@" 2>&1 |
+"$root/scripts/with-display.sh" ctest --output-on-failure --timeout 900 \
+  --parallel "$(nproc)" "$@" 2>&1 |
   awk -v held="$summary" '
     /^[0-9]+% tests passed, [0-9]+ tests? failed out of [0-9]+/ { hold = 1 }
     hold { print > held; next }

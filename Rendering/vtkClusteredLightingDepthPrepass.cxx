@@ -7,6 +7,7 @@
 
 #include "vtkActor.h"
 #include "vtkActor2D.h"
+#include "vtkAssembly.h"
 #include "vtkCamera.h"
 #include "vtkCommand.h"
 #include "vtkCompositeDataIterator.h"
@@ -23,8 +24,11 @@
 #include "vtkOpenGLState.h"
 #include "vtkPlane.h"
 #include "vtkPlaneCollection.h"
+#include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProp.h"
+#include "vtkProp3DCollection.h"
+#include "vtkProperty.h"
 #include "vtkRenderState.h"
 #include "vtkRenderer.h"
 #include "vtkShader.h"
@@ -378,6 +382,94 @@ bool vtkClusteredLightingDepthPrepass::ReadDepth(vtkOpenGLRenderWindow* rw)
   this->RenderTime +=
     std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   return ok;
+}
+
+//------------------------------------------------------------------------------
+namespace
+{
+/// Whether polydata has line or vertex cells (drawn as lines and points whatever the
+/// representation).
+bool HasLinesOrVerts(vtkDataObject* data)
+{
+  auto* poly = vtkPolyData::SafeDownCast(data);
+  return poly && (poly->GetNumberOfLines() > 0 || poly->GetNumberOfVerts() > 0);
+}
+
+/// Whether a mapper may draw lines or points: its polydata (or a composite's leaves)
+/// has line or vertex cells; true for a mapper of another kind, which may draw anything.
+bool MayDrawLinesOrPoints(vtkMapper* mapper)
+{
+  if (!mapper)
+  {
+    return false;
+  }
+  const bool known = std::strcmp(mapper->GetClassName(), "vtkOpenGLPolyDataMapper") == 0 ||
+    std::strcmp(mapper->GetClassName(), "vtkCompositePolyDataMapper2") == 0;
+  if (!known)
+  {
+    return true;
+  }
+  vtkDataObject* input = mapper->GetInputDataObject(0, 0);
+  if (auto* composite = vtkCompositeDataSet::SafeDownCast(input))
+  {
+    vtkSmartPointer<vtkCompositeDataIterator> leaves;
+    leaves.TakeReference(composite->NewIterator());
+    for (leaves->InitTraversal(); !leaves->IsDoneWithTraversal(); leaves->GoToNextItem())
+    {
+      if (HasLinesOrVerts(leaves->GetCurrentDataObject()))
+      {
+        return true;
+      }
+    }
+    return false;
+  }
+  return HasLinesOrVerts(input);
+}
+
+/// The widest line or point a visible prop (or an assembly's parts) may draw: its
+/// vtkProperty's LineWidth or PointSize where it draws lines or points (another
+/// representation than surface, edges, vertices, or line and vertex cells), 0 where it
+/// draws none.
+double WidestLineOrPoint(vtkProp* prop)
+{
+  double widest = 0.0;
+  if (!prop || !prop->GetVisibility())
+  {
+    return widest;
+  }
+  if (auto* actor = vtkActor::SafeDownCast(prop))
+  {
+    vtkProperty* property = actor->GetProperty();
+    const bool lines = property->GetRepresentation() != VTK_SURFACE ||
+      property->GetEdgeVisibility() || property->GetVertexVisibility() ||
+      MayDrawLinesOrPoints(actor->GetMapper());
+    if (lines)
+    {
+      widest = std::max({ 1.0, static_cast<double>(property->GetLineWidth()),
+        static_cast<double>(property->GetPointSize()) });
+    }
+  }
+  else if (auto* assembly = vtkAssembly::SafeDownCast(prop))
+  {
+    vtkProp3DCollection* parts = assembly->GetParts();
+    parts->InitTraversal();
+    while (vtkProp3D* part = parts->GetNextProp3D())
+    {
+      widest = std::max(widest, WidestLineOrPoint(part));
+    }
+  }
+  return widest;
+}
+}
+
+double vtkClusteredLightingDepthPrepass::ComputePixelSlack(const vtkRenderState* s)
+{
+  double widest = 0.0;
+  for (int i = 0; i < s->GetPropArrayCount(); ++i)
+  {
+    widest = std::max(widest, WidestLineOrPoint(s->GetPropArray()[i]));
+  }
+  return widest > 0.0 ? 0.5 * widest + 1.0 : 0.0;
 }
 
 //------------------------------------------------------------------------------

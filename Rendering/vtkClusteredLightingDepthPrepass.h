@@ -136,6 +136,16 @@ public:
   /// gl_FragData[0] and not yet gl_FragData[1].
   static void AddDepthOutput(std::string& fragmentShader);
 
+  /// How far from its pixel's centre a fragment of `s`'s visible props may have its
+  /// position (DepthBoundsOptions::PixelSlack), in pixels: 0 where no visible actor (an
+  /// assembly's parts included) may draw lines or points; otherwise half the widest of
+  /// those actors' LineWidth and PointSize (at least 1) plus one pixel for the
+  /// rasterizer's rules and multisampled coverage. An actor may draw lines or points
+  /// with a representation other than surface, edges or vertices shown, line or vertex
+  /// cells in its polydata (a composite's leaves), or a mapper other than VTK's polydata
+  /// and composite polydata mappers.
+  static double ComputePixelSlack(const vtkRenderState* s);
+
   double GetMaximumCoincidentOffset() const { return this->MaxCoincidentOffset; }
   bool GetUnknownDepthWrites() const { return this->UnknownDepthWrites; }
   const std::string& GetProblem() const { return this->Problem; }

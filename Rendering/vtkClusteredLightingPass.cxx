@@ -2,6 +2,7 @@
 #include "vtkClusteredLightingPass.h"
 
 #include "vtkActor.h"
+#include "vtkActor2D.h"
 #include "vtkBoundingBox.h"
 #include "vtkCamera.h"
 #include "vtkClusteredLightSet.h"
@@ -41,6 +42,7 @@
 #include <set>       // for std::set
 #include <sstream>   // for std::ostringstream
 #include <string>    // for std::to_string
+#include <vector>    // for std::vector
 
 using namespace vtkClusteredLighting;
 
@@ -89,18 +91,23 @@ vtkClusteredLightingShaderVariant::Debug ToVariantDebug(int view)
   }
 }
 
-/// Turns the renderer's FXAA and SSAO off for one render whose colours encode counts
-/// (R + 256 G, B), and back on when it ends: FXAA blends an edge pixel's colour with its
+/// One render whose colours encode counts (R + 256 G, B). It turns the renderer's FXAA
+/// and SSAO off, and back on when it ends: FXAA blends an edge pixel's colour with its
 /// neighbours' (the background's, say) and SSAO scales colours by occlusion, either of
 /// which decodes to another count (ParaView's default view, FXAA on over a grey-blue
 /// background, counted 76.991 lights evaluated per pixel where 73 lights shone, 17.484).
+/// And it renders the state without its 2D actors (text, scalar bars, legends), which the
+/// overlay step would draw over the counts with a depth of their own: a caption over a
+/// lit sphere read as 10,769 lights per pixel.
 class CountingRender
 {
 public:
-  CountingRender(vtkRenderer* ren, bool counting)
-    : Renderer(ren)
-    , FXAA(counting && ren->GetUseFXAA())
-    , SSAO(counting && ren->GetUseSSAO())
+  CountingRender(const vtkRenderState* s, bool counting)
+    : Renderer(s->GetRenderer())
+    , FXAA(counting && this->Renderer->GetUseFXAA())
+    , SSAO(counting && this->Renderer->GetUseSSAO())
+    , State(s)
+    , Without2D(s->GetRenderer())
   {
     if (this->FXAA)
     {
@@ -109,6 +116,24 @@ public:
     if (this->SSAO)
     {
       this->Renderer->UseSSAOOff();
+    }
+    if (counting)
+    {
+      for (int i = 0; i < s->GetPropArrayCount(); ++i)
+      {
+        if (!vtkActor2D::SafeDownCast(s->GetPropArray()[i]))
+        {
+          this->Props.push_back(s->GetPropArray()[i]);
+        }
+      }
+      if (static_cast<int>(this->Props.size()) != s->GetPropArrayCount())
+      {
+        this->Without2D.SetFrameBuffer(s->GetFrameBuffer());
+        this->Without2D.SetRequiredKeys(s->GetRequiredKeys());
+        this->Without2D.SetPropArrayAndCount(
+          this->Props.data(), static_cast<int>(this->Props.size()));
+        this->State = &this->Without2D;
+      }
     }
   }
   ~CountingRender()
@@ -125,10 +150,16 @@ public:
   CountingRender(const CountingRender&) = delete;
   CountingRender& operator=(const CountingRender&) = delete;
 
+  /// The state to render: the given one, or the same without its 2D actors.
+  const vtkRenderState* GetState() const { return this->State; }
+
 private:
   vtkRenderer* Renderer;
   const bool FXAA; ///< FXAA was on and is off until the render ends
   const bool SSAO; ///< SSAO likewise
+  const vtkRenderState* State;
+  vtkRenderState Without2D;
+  std::vector<vtkProp*> Props; ///< Without2D's
 };
 
 /// Lights evaluated per pixel, decoded from a DEBUG_EVALUATED_COUNT frame.
@@ -812,6 +843,7 @@ void vtkClusteredLightingPass::RenderDepthPrepass(
       inputs.Depths = &this->Internals->Depths;
       inputs.DepthOptions.WindowMargin =
         vtkClusteredLighting::ComputeWindowMargin(prepass->GetMaximumCoincidentOffset());
+      inputs.DepthOptions.PixelSlack = vtkClusteredLightingDepthPrepass::ComputePixelSlack(s);
       inputs.DepthOptions.Translucent = translucent;
       this->Internals->ReportedDepthProblem.clear();
     }
@@ -1072,8 +1104,8 @@ void vtkClusteredLightingPass::RenderDelegate(const vtkRenderState* s,
     variant.DebugView = vtkClusteredLightingShaderVariant::Debug::EvaluatedCount;
     this->Internals->ShaderStageTime.Modified();
     {
-      CountingRender countingRender(ren, true);
-      this->RenderDelegateOnce(s);
+      CountingRender countingRender(s, true);
+      this->RenderDelegateOnce(countingRender.GetState());
     }
     this->SetPixelCounts(s, rw);
     variant.DebugView = vtkClusteredLightingShaderVariant::Debug::HeatMap;
@@ -1103,8 +1135,8 @@ void vtkClusteredLightingPass::RenderDelegate(const vtkRenderState* s,
   {
     // The count views' images encode counts, which FXAA and SSAO would change.
     CountingRender countingRender(
-      ren, enabled && (counting || this->DebugView == DEBUG_REACHED_COUNT));
-    this->RenderDelegateOnce(s);
+      s, enabled && (counting || this->DebugView == DEBUG_REACHED_COUNT));
+    this->RenderDelegateOnce(countingRender.GetState());
   }
   this->ShadedOpaqueFragmentsPerVisiblePixel = 0.0;
   this->ShadedTranslucentFragmentsPerVisiblePixel = 0.0;
@@ -1231,6 +1263,15 @@ bool vtkClusteredLightingPass::PreReplaceShaderValues(
     fragmentShader, "//VTK::Light::Dec", "//VTK::Light::Dec\n//VTK::ClusteredLight::Dec");
   vtkShaderProgram::Substitute(
     fragmentShader, "//VTK::Light::Impl", "//VTK::Light::Impl\n//VTK::ClusteredLight::Impl");
+  // The debug views write the fragment's last colour: after a texture's (VTK multiplies
+  // the lit colour by it, which would scale the encoded counts), before VTK's discard of
+  // transparent texels and depth peeling. Without that tag, right after the lighting.
+  if (!vtkShaderProgram::Substitute(
+        fragmentShader, "//VTK::TCoord::Impl", "//VTK::TCoord::Impl\n//VTK::ClusteredLight::Debug"))
+  {
+    vtkShaderProgram::Substitute(fragmentShader, "//VTK::ClusteredLight::Impl",
+      "//VTK::ClusteredLight::Impl\n//VTK::ClusteredLight::Debug");
+  }
   return true;
 }
 
@@ -1298,8 +1339,12 @@ void vtkClusteredLightingPass::InjectShadingCode(std::string& fragmentShader, vt
     fragmentShader, fragmentShader.find("//VTK::ClusteredLight::Impl"));
   if (!lit || !pbrOK)
   {
+    // Unlit fragments evaluate no light: the count views say 0 there, not their colour
+    // (a white line read as 65,535 lights).
     vtkShaderProgram::Substitute(fragmentShader, "//VTK::ClusteredLight::Dec", "");
     vtkShaderProgram::Substitute(fragmentShader, "//VTK::ClusteredLight::Impl", "");
+    vtkShaderProgram::Substitute(fragmentShader, "//VTK::ClusteredLight::Debug",
+      lit ? std::string() : variant.GetUnlitDebugImplementation());
     return;
   }
   vtkClusteredLighting::InsertDeclarations(
@@ -1310,14 +1355,15 @@ void vtkClusteredLightingPass::InjectShadingCode(std::string& fragmentShader, vt
   {
     vtkShaderProgram::Substitute(
       fragmentShader, pbrAnchor, variant.GetImplementation() + pbrAnchor);
-    vtkShaderProgram::Substitute(
-      fragmentShader, "//VTK::ClusteredLight::Impl", variant.GetDebugImplementation());
+    vtkShaderProgram::Substitute(fragmentShader, "//VTK::ClusteredLight::Impl", "");
   }
   else
   {
-    vtkShaderProgram::Substitute(fragmentShader, "//VTK::ClusteredLight::Impl",
-      variant.GetImplementation() + variant.GetDebugImplementation());
+    vtkShaderProgram::Substitute(
+      fragmentShader, "//VTK::ClusteredLight::Impl", variant.GetImplementation());
   }
+  vtkShaderProgram::Substitute(
+    fragmentShader, "//VTK::ClusteredLight::Debug", variant.GetDebugImplementation());
 }
 
 //------------------------------------------------------------------------------

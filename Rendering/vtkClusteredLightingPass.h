@@ -556,9 +556,14 @@ public:
   //@{
   /**
    * Diagnostic: a debug view replacing the shaded colour of lit surfaces (compiled in only
-   * when set). Frames rendered with DEBUG_EVALUATED_COUNT or DEBUG_HEAT_MAP count the
-   * lights evaluated per pixel (GetMeanLightsEvaluatedPerPixel). A value that is not a
-   * debug view is rejected with an error. Default is DEBUG_NONE.
+   * when set; after a texture's colour). Frames rendered with DEBUG_EVALUATED_COUNT or
+   * DEBUG_HEAT_MAP count the lights evaluated per pixel (GetMeanLightsEvaluatedPerPixel).
+   * The count views (DEBUG_HEAT_MAP, DEBUG_EVALUATED_COUNT, DEBUG_REACHED_COUNT) show 0
+   * lights where VTK lights nothing (points, and lines without normals), and their
+   * counting render leaves the renderer's 2D actors (text, legends) out: both would
+   * otherwise decode as thousands of lights. Props drawn without the polydata mappers'
+   * shader code (image slices, vtkTextActor3D) keep their colours there. A value that is
+   * not a debug view is rejected with an error. Default is DEBUG_NONE.
    */
   virtual void SetDebugView(int view);
   vtkGetMacro(DebugView, int);
@@ -657,8 +662,8 @@ public:
   vtkGetMacro(MeanLightsReachingPerPixel, double);
   /// Most lights evaluated at one pixel in the last frame that counted them.
   vtkGetMacro(MaximumLightsEvaluatedPerPixel, int);
-  /// Pixels covered by geometry (depth below the far plane) in the last frame that
-  /// counted them.
+  /// Pixels covered by 3D geometry (depth below the far plane; 2D actors left out) in the
+  /// last frame that counted them.
   vtkGetMacro(NumberOfCountedPixels, vtkIdType);
   /// Lights per pixel shown as the hottest colour of the last heat map.
   vtkGetMacro(HeatMapScale, double);

@@ -104,6 +104,10 @@ std::set<std::string> vtkClusteredLightingShaderVariant::GetFlags() const
   {
     f.insert("SATURATION");
   }
+  if (this->DebugView != Debug::None)
+  {
+    f.insert("DEBUG");
+  }
   switch (this->DebugView)
   {
     case Debug::ClusterIndex:
@@ -152,4 +156,12 @@ std::string vtkClusteredLightingShaderVariant::GetImplementation() const
 std::string vtkClusteredLightingShaderVariant::GetDebugImplementation() const
 {
   return SelectOnce(vtkClusteredLightingDebugImpl, this->GetFlags());
+}
+
+std::string vtkClusteredLightingShaderVariant::GetUnlitDebugImplementation() const
+{
+  const bool counts = this->DebugView == Debug::HeatMap ||
+    this->DebugView == Debug::EvaluatedCount || this->DebugView == Debug::ReachedCount;
+  return counts ? SelectOnce(vtkClusteredLightingDebugImpl, { "DEBUG", "UNLIT_COUNT" })
+                : std::string();
 }

@@ -80,6 +80,10 @@ public:
   std::string GetDeclarations() const;
   std::string GetImplementation() const;
   std::string GetDebugImplementation() const;
+  /// The count views' code for a fragment VTK does not light (no normal or no position:
+  /// points, and lines without normals): 0 lights evaluated and reaching. Empty for
+  /// the other views.
+  std::string GetUnlitDebugImplementation() const;
 };
 
 #endif

@@ -19,9 +19,19 @@
  *    mappers write gl_FragDepth = gl_FragCoord.z + cOffset / 65000; the pass reads the
  *    largest |cOffset| of the prepass), then it is mapped to view depth (the map is
  *    monotonic) and widened by a relative RelativeMargin for float interpolation.
- *  - The shader finds a fragment's tile from its own projected position and its slice
- *    in float: a pixel within TileSlack of a tile edge counts in both tiles, and an
- *    interval is added to every slice it touches after the relative widening.
+ *  - The shader finds a fragment's tile from its own projected position (the
+ *    interpolated vertexVC) and its slice in float: a pixel within TileSlack of a tile
+ *    edge counts in both tiles, and an interval is added to every slice it touches after
+ *    the relative widening.
+ *  - A line's or a point's fragment has the position of a point of the line (or the
+ *    point's centre), not of its pixel's centre: up to half the line's width or the
+ *    point's size away (llvmpipe evaluates a thin line's attributes at the pixel's column
+ *    or row on the line; VTK's wide lines are quads and its points squares whose
+ *    fragments all carry the centre line's or centre's attributes; multisampling adds
+ *    coverage at a pixel's corner). Its depth is that point's too. So a pixel also counts
+ *    in every tile within PixelSlack pixels of its centre (the pass sets half the widest
+ *    line or point of the frame's props plus a pixel); otherwise the wireframe sphere of
+ *    TestClusteredLightingDepthAware shaded pixels at tile edges with no light at all.
  *  - A multisampled framebuffer shades a fragment at the pixel centre, whose depth may
  *    match none of the samples' (an edge extrapolates the primitive's plane): the prepass
  *    records each pixel's range of fragment depths (vtkClusteredLightingSampleDepths), and
@@ -64,7 +74,10 @@ struct DepthBoundsOptions
   double WindowMargin = 1.0 / 4194304.0; // 2^-22: four steps of a 24-bit depth buffer
   double RelativeMargin = 1e-5;          ///< relative widening of each view-depth interval
   double TileSlack = 1e-3;               ///< in tiles: pixels this close to an edge count twice
-  bool Translucent = false;              ///< translucent geometry is shaded too
+  /// In pixels: how far from its pixel's centre a fragment's position may lie (lines and
+  /// points); a pixel counts in every tile this close.
+  double PixelSlack = 0.0;
+  bool Translucent = false; ///< translucent geometry is shaded too
 };
 
 /// The largest |cOffset| of VTK's coincident topology as a window-depth margin.
@@ -202,30 +215,26 @@ inline void ChooseSlicingRange(
 
 namespace Detail
 {
-/// Tile (and a second tile when the pixel centre is within `slack` of an edge) of a pixel.
+/// The tiles a pixel counts in: Lo to Hi, inclusive.
 struct PixelTiles
 {
-  int First = 0;
-  int Second = -1;
+  int Lo = 0;
+  int Hi = 0;
 };
 
-inline std::vector<PixelTiles> ComputePixelTiles(int pixels, int tiles, double slack)
+/// For each of `pixels` pixels along one axis, the tiles within `slack` tiles plus
+/// `pixelSlack` pixels of its centre.
+inline std::vector<PixelTiles> ComputePixelTiles(
+  int pixels, int tiles, double slack, double pixelSlack)
 {
   std::vector<PixelTiles> out(static_cast<std::size_t>(pixels));
+  const double tilesPerPixel = static_cast<double>(tiles) / pixels;
+  const double reach = slack + std::max(pixelSlack, 0.0) * tilesPerPixel;
   for (int p = 0; p < pixels; ++p)
   {
-    const double u = (p + 0.5) / pixels * tiles;
-    const int t = std::clamp(static_cast<int>(std::floor(u)), 0, tiles - 1);
-    out[p].First = t;
-    const double f = u - std::floor(u);
-    if (f < slack && t > 0)
-    {
-      out[p].Second = t - 1;
-    }
-    else if (f > 1.0 - slack && t < tiles - 1)
-    {
-      out[p].Second = t + 1;
-    }
+    const double u = (p + 0.5) * tilesPerPixel;
+    out[p].Lo = std::clamp(static_cast<int>(std::floor(u - reach)), 0, tiles - 1);
+    out[p].Hi = std::clamp(static_cast<int>(std::floor(u + reach)), 0, tiles - 1);
   }
   return out;
 }
@@ -254,9 +263,9 @@ inline void ComputeClusterDepthBoundsRows(const DepthImage& image, const glm::dm
 {
   const int X = grid.TilesX, Z = grid.Slices;
   const std::vector<Detail::PixelTiles> columns =
-    Detail::ComputePixelTiles(image.Width, X, options.TileSlack);
+    Detail::ComputePixelTiles(image.Width, X, options.TileSlack, options.PixelSlack);
   const std::vector<Detail::PixelTiles> rows =
-    Detail::ComputePixelTiles(image.Height, grid.TilesY, options.TileSlack);
+    Detail::ComputePixelTiles(image.Height, grid.TilesY, options.TileSlack, options.PixelSlack);
   std::vector<double> boundary(static_cast<std::size_t>(Z) + 1);
   for (int k = 0; k <= Z; ++k)
   {
@@ -310,7 +319,7 @@ inline void ComputeClusterDepthBoundsRows(const DepthImage& image, const glm::dm
     std::fill(tileBackground.begin(), tileBackground.end(), 0);
     for (int y = 0; y < image.Height; ++y)
     {
-      if (rows[y].First != ty && rows[y].Second != ty)
+      if (ty < rows[y].Lo || ty > rows[y].Hi)
       {
         continue;
       }
@@ -324,21 +333,16 @@ inline void ComputeClusterDepthBoundsRows(const DepthImage& image, const glm::dm
         const Detail::PixelTiles& c = columns[x];
         if (!(w < 1.0))
         {
-          tileBackground[c.First] = 1;
-          if (c.Second >= 0)
-          {
-            tileBackground[c.Second] = 1;
-          }
+          std::fill(tileBackground.begin() + c.Lo, tileBackground.begin() + c.Hi + 1, 1);
           continue;
         }
         const double lo = toView(w - m) * (1.0 - rel);
         const double hi = std::min(toView(lineMax[x] + m) * (1.0 + rel), deepest);
         const float interval[2] = { static_cast<float>(lo) * (1.0f - 1e-6f),
           static_cast<float>(hi) * (1.0f + 1e-6f) };
-        tileDeepest[c.First] = std::max(tileDeepest[c.First], interval[1]);
-        if (c.Second >= 0)
+        for (int tx = c.Lo; tx <= c.Hi; ++tx)
         {
-          tileDeepest[c.Second] = std::max(tileDeepest[c.Second], interval[1]);
+          tileDeepest[tx] = std::max(tileDeepest[tx], interval[1]);
         }
         if (options.Translucent)
         {
@@ -349,10 +353,9 @@ inline void ComputeClusterDepthBoundsRows(const DepthImage& image, const glm::dm
         guess = s0;
         for (int s = s0; s <= s1; ++s)
         {
-          grow(texel(c.First, ty, s), interval);
-          if (c.Second >= 0)
+          for (int tx = c.Lo; tx <= c.Hi; ++tx)
           {
-            grow(texel(c.Second, ty, s), interval);
+            grow(texel(tx, ty, s), interval);
           }
         }
       }

@@ -7,7 +7,8 @@
 //    reference cut to the recorded depths;
 //  - every visible pixel's exact view depth (read back after the frame and unprojected)
 //    lies inside the recorded interval of the cluster the shader computes for it;
-//  - in the hard placements: occluders, a parallel projection, a camera inside lights, a
+//  - in the hard placements: occluders, a parallel projection, a camera inside lights, lines
+//    and points (a fragment positioned up to half a width from its pixel), a
 //    scene far from the origin, translucent geometry, VTK's coincident-topology offsets
 //    (edges on a surface), two viewports;
 //  - the culling helps: fewer lights evaluated per pixel than without (a count that could
@@ -39,6 +40,7 @@
 #include "vtkProperty.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
+#include "vtkSmartPointer.h"
 #include "vtkSphereSource.h"
 
 #include <algorithm>
@@ -332,7 +334,48 @@ int TestClusteredLightingDepthAware(int, char*[])
   }
   vtkMapper::SetResolveCoincidentTopologyToOff();
 
-  // 6. Translucent geometry in front of the opaque.
+  // 6. Lines and points. A line's fragment takes its position from a point of the line
+  // (and a wide line's or a point's from the centre line or the centre), up to half the
+  // width from its pixel's centre and often in the next tile, whose clusters the pixel's
+  // depth must reach too (DepthBoundsOptions::PixelSlack): a wireframe sphere (lines one
+  // pixel wide), a wider one (6 pixels) and points of 9 pixels, above the floor and
+  // partly against the background.
+  vtkNew<vtkSphereSource> wireSource;
+  wireSource->SetCenter(2.0, 0.9, 0.8);
+  wireSource->SetRadius(0.7);
+  wireSource->SetThetaResolution(16);
+  wireSource->SetPhiResolution(16);
+  vtkNew<vtkSphereSource> wideSource;
+  wideSource->SetCenter(-2.0, 1.0, 0.5);
+  wideSource->SetRadius(0.6);
+  vtkNew<vtkPointSource> pointSource;
+  pointSource->SetCenter(0.0, 1.4, 1.0);
+  pointSource->SetNumberOfPoints(40);
+  pointSource->SetRadius(0.9);
+  vtkAlgorithm* const lineSources[] = { wireSource, wideSource, pointSource };
+  const int representations[] = { VTK_WIREFRAME, VTK_WIREFRAME, VTK_POINTS };
+  const float widths[] = { 1.0f, 6.0f, 9.0f };
+  std::vector<vtkSmartPointer<vtkActor>> lineActors;
+  for (int i = 0; i < 3; ++i)
+  {
+    vtkNew<vtkPolyDataMapper> mapper;
+    mapper->SetInputConnection(lineSources[i]->GetOutputPort());
+    vtkNew<vtkActor> actor;
+    actor->SetMapper(mapper);
+    actor->GetProperty()->SetRepresentation(representations[i]);
+    actor->GetProperty()->SetLineWidth(widths[i]);
+    actor->GetProperty()->SetPointSize(widths[i]);
+    ren->AddActor(actor);
+    lineActors.emplace_back(actor);
+  }
+  ren->ResetCameraClippingRange();
+  CheckCase("lines and points", rw, ren, pass);
+  for (vtkActor* actor : lineActors)
+  {
+    ren->RemoveActor(actor);
+  }
+
+  // 7. Translucent geometry in front of the opaque.
   vtkNew<vtkSphereSource> glassSource;
   glassSource->SetCenter(-1.2, 0.2, 1.8);
   glassSource->SetRadius(0.7);
@@ -386,7 +429,7 @@ int TestClusteredLightingDepthAware(int, char*[])
     "translucent sphere: the total is the sum of the parts");
   ren->RemoveActor(glass);
 
-  // 7. A scene far from the origin (the lights and geometry moved by 1e5).
+  // 8. A scene far from the origin (the lights and geometry moved by 1e5).
   const double far[3] = { 1e5, -2e5, 1e5 };
   actors->InitTraversal();
   while (vtkActor* a = actors->GetNextActor())
@@ -408,7 +451,7 @@ int TestClusteredLightingDepthAware(int, char*[])
   ren->GetActiveCamera()->SetFocalPoint(0.0, -0.3, 0.0);
   ren->ResetCameraClippingRange();
 
-  // 8. Two viewports, each with its own assignment.
+  // 9. Two viewports, each with its own assignment.
   vtkNew<vtkRenderer> right;
   ren->SetViewport(0.0, 0.0, 0.5, 1.0);
   right->SetViewport(0.5, 0.0, 1.0, 1.0);
@@ -426,7 +469,7 @@ int TestClusteredLightingDepthAware(int, char*[])
   rw->RemoveRenderer(right);
   ren->SetViewport(0.0, 0.0, 1.0, 1.0);
 
-  // 9. A mapper that writes its own depth: depth-aware clusters off, said once.
+  // 10. A mapper that writes its own depth: depth-aware clusters off, said once.
   Check(messages->Warnings.empty(), "no warning so far");
   vtkNew<vtkPointSource> points;
   points->SetNumberOfPoints(30);
@@ -448,7 +491,7 @@ int TestClusteredLightingDepthAware(int, char*[])
     "one warning names the impostor mapper");
   ren->RemoveActor(spheres);
 
-  // 10. Renderer vtkLights: the prepass draws with the shading render's programs, so
+  // 11. Renderer vtkLights: the prepass draws with the shading render's programs, so
   // moving frames rebuild no shader.
   for (int i = 0; i < 40; ++i)
   {
@@ -475,7 +518,7 @@ int TestClusteredLightingDepthAware(int, char*[])
       std::to_string(pass->GetNumberOfShaderBuilds() - builds) + ")");
   Check(messages->Errors.empty(), "no error");
 
-  // 11. A multisampled window, as VTK's default asks for: the prepass records each pixel's
+  // 12. A multisampled window, as VTK's default asks for: the prepass records each pixel's
   // range of fragment depths (vtkClusteredLightingSampleDepths), including the
   // extrapolated pixel-centre depths of primitives that cover only some samples.
   {

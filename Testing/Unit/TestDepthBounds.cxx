@@ -128,6 +128,41 @@ int CountMisses(const Synthetic& s, const ClusterDepthBounds& b, const ClusterGr
   }
   return misses;
 }
+
+/// Fragments positioned off their pixel's centre, by up to `reach` pixels on each axis
+/// (a line's fragment takes the position of a point of the line, a point's its centre):
+/// counts the pixels whose exact depth is outside the cluster of a tile the shader could
+/// find from such a position (sampled on a 5 x 5 grid of offsets).
+int CountMissesOffCentre(
+  const Synthetic& s, const ClusterDepthBounds& b, const ClusterGridParams& g, double reach)
+{
+  int misses = 0;
+  for (int y = 0; y < s.Height; ++y)
+  {
+    for (int x = 0; x < s.Width; ++x)
+    {
+      const double d = s.ExactDepth[static_cast<std::size_t>(y) * s.Width + x];
+      if (d == 0.0)
+      {
+        continue;
+      }
+      const int slice = ComputeSliceIndex(d, g);
+      bool missed = false;
+      for (int i = -2; i <= 2 && !missed; ++i)
+      {
+        for (int j = -2; j <= 2 && !missed; ++j)
+        {
+          const int tx = ComputeTileIndex(x + 0.5 + 0.5 * i * reach, s.Width, g.TilesX);
+          const int ty = ComputeTileIndex(y + 0.5 + 0.5 * j * reach, s.Height, g.TilesY);
+          double lo = 0.0, hi = 0.0;
+          missed = !b.GetInterval(tx, ty, slice, g.TilesX, lo, hi) || d < lo || d > hi;
+        }
+      }
+      misses += missed ? 1 : 0;
+    }
+  }
+  return misses;
+}
 }
 
 TEST(DepthBounds, WindowAndViewDepthsAreInverse)
@@ -273,6 +308,34 @@ TEST(DepthBounds, MultisampledPixelRangesAreInsideTheirClusters)
     deepest = w < 1.0f ? std::max(deepest, w) : deepest;
   }
   EXPECT_DOUBLE_EQ(range.Deepest, ViewDepthFromWindowDepth(deepest, P));
+}
+
+TEST(DepthBounds, LinesAndPointsAreInsideTheClustersOfTheirPositions)
+{
+  // Tiles of 10 x 15 pixels; lines 1 and 6 pixels wide, and points of 25 pixels, wider
+  // than a tile (a pixel then counts in up to 3 tiles per axis).
+  const glm::dmat4 P = ClusteredLightingTest::Perspective(40.0, 4.0 / 3.0, 0.5, 40.0);
+  ClusterGridParams g =
+    ClusteredLightingTest::MakeGrid(16, 8, 32, 160, 120, 0.5, 40.0, SlicingScheme::Exponential);
+  const Synthetic s = Render(P, 160, 120, 1.0);
+  const VisibleRange range = MeasureVisibleRange(s.Image(), P);
+  ASSERT_TRUE(range.Visible);
+  ChooseSlicingRange(true, range.Nearest, range.Deepest, g);
+  const ClusterDepthBounds centred = ComputeClusterDepthBounds(s.Image(), P, g, {});
+  for (double width : { 1.0, 6.0, 25.0 })
+  {
+    DepthBoundsOptions options;
+    options.PixelSlack = 0.5 * width + 1.0; // as vtkClusteredLightingDepthPrepass sets it
+    const ClusterDepthBounds b = ComputeClusterDepthBounds(s.Image(), P, g, options);
+    EXPECT_EQ(CountMissesOffCentre(s, b, g, options.PixelSlack * (1.0 - 1e-9)), 0)
+      << "width " << width;
+    // Centred fragments stay inside too, and the clusters stay mostly empty.
+    EXPECT_EQ(CountMisses(s, b, g), 0) << "width " << width;
+    EXPECT_LT(double(b.NonEmptyClusters) / (b.LoHi.size() / 2), 0.5) << "width " << width;
+    EXPECT_GE(b.NonEmptyClusters, centred.NonEmptyClusters);
+    // Without the slack, fragments half a pixel off their centre miss (the check can fail).
+    EXPECT_GT(CountMissesOffCentre(s, centred, g, 0.5 * width), 0) << "width " << width;
+  }
 }
 
 TEST(DepthBounds, BackgroundKeepsTheFarPlaneInTheLastSlice)

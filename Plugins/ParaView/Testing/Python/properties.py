@@ -14,7 +14,8 @@ Checks:
    texture's size (X * Y * Z * ceil(N / 32) * 4 bytes), ContributionCutoff the effective cutoff, an
    error budget picks another cutoff, Measure Timings records times, Cluster Renderer
    Lights hands a renderer light back to VTK, the heat-map debug view changes the image
-   and rank 0 reports the lights evaluated and reaching per pixel it counted for it.
+   and rank 0 reports the lights evaluated and reaching per pixel it counted for it (with
+   an outline and a text in the view too).
  - Representation: it is offered for polygonal data and multiblock data sets (their
    blocks' points are lights), not for an unstructured grid; its array lists hold the
    point arrays with the right number of components and "(none)"; defaults pick the arrays named like the light set's defaults
@@ -258,6 +259,25 @@ view.UseFXAA = fxaa
 view.DebugView = "None"
 again = t.save(view, t.output("properties-shaded-again"))
 t.check(t.difference(shaded, again)["max"] == 0, "Debug View None: the shaded frame again")
+# An outline around the sphere (lines without normals, which VTK does not light: ParaView's
+# default representation of image data) and a text: the counts take the outline's pixels
+# as 0 lights and leave the text out (before 2026-11-29 each of those pixels read as its
+# colour, up to 65,535 lights).
+box = Box(XLength=24.0, YLength=24.0, ZLength=24.0)
+outline = Show(box, view)
+outline.Representation = "Outline"
+caption = Text(Text="COUNTS")
+Show(caption, view)
+view.DebugView = "Heat map"
+Render(view)
+with_outline = t.light_counts(view)
+t.check(0.0 < with_outline[1] <= with_outline[0] <= clustered,
+        "Debug View heat map with an outline and a text: %.3f lights evaluated and %.3f "
+        "reaching per pixel (at most the %d clustered lights)"
+        % (with_outline[0], with_outline[1], clustered))
+Delete(caption)
+Delete(box)
+view.DebugView = "None"
 
 # ------------------------------------------------------------------ the representation
 arrays = Calculator(Input=transform, ResultArrayName="Intensity", Function="0.5")

@@ -24,6 +24,7 @@
 #include "vtkOpenGLState.h"
 #include "vtkPlane.h"
 #include "vtkPlaneCollection.h"
+#include "vtkPointGaussianMapper.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProp.h"
@@ -96,6 +97,33 @@ bool DrawsNoOpaqueDepth(vtkProp* prop)
     }
   }
   return false;
+}
+
+/// The mapper of a visible prop (or of an assembly's part) that draws points as sprites
+/// (vtkPointGaussianMapper's splats, which VTK does not light), or null.
+vtkMapper* FindSprites(vtkProp* prop)
+{
+  if (!prop || !prop->GetVisibility())
+  {
+    return nullptr;
+  }
+  if (auto* actor = vtkActor::SafeDownCast(prop))
+  {
+    return vtkPointGaussianMapper::SafeDownCast(actor->GetMapper());
+  }
+  if (auto* assembly = vtkAssembly::SafeDownCast(prop))
+  {
+    vtkProp3DCollection* parts = assembly->GetParts();
+    parts->InitTraversal();
+    while (vtkProp3D* part = parts->GetNextProp3D())
+    {
+      if (vtkMapper* mapper = FindSprites(part))
+      {
+        return mapper;
+      }
+    }
+  }
+  return nullptr;
 }
 
 /// 64-bit FNV-1a over the values mixed in.
@@ -255,8 +283,11 @@ int vtkClusteredLightingDepthPrepass::RenderDepth(const vtkRenderState* s,
     this->PreRender(s);
     for (int i = 0; i < s->GetPropArrayCount(); ++i)
     {
+      // Sprites (FindSprites) stay out: drawn here, vtkPointGaussianMapper's splats
+      // changed the shading render (TestClusteredLightingDepthAware: 242 steps off at 53%
+      // of the pixels). Unlit, drawn once against the others' depths, they are right.
       vtkProp* prop = s->GetPropArray()[i];
-      if (prop->GetVisibility())
+      if (prop->GetVisibility() && !FindSprites(prop))
       {
         rendered += prop->RenderOpaqueGeometry(ren);
       }
@@ -460,6 +491,7 @@ double WidestLineOrPoint(vtkProp* prop)
   }
   return widest;
 }
+
 }
 
 double vtkClusteredLightingDepthPrepass::ComputePixelSlack(const vtkRenderState* s)

@@ -229,12 +229,18 @@ inline std::vector<PixelTiles> ComputePixelTiles(
 {
   std::vector<PixelTiles> out(static_cast<std::size_t>(pixels));
   const double tilesPerPixel = static_cast<double>(tiles) / pixels;
-  const double reach = slack + std::max(pixelSlack, 0.0) * tilesPerPixel;
+  // A slack that is not a number reaches every tile (the conservative choice).
+  const double reach =
+    slack + (pixelSlack > 0.0 || std::isnan(pixelSlack) ? pixelSlack : 0.0) * tilesPerPixel;
   for (int p = 0; p < pixels; ++p)
   {
+    // Clamped as doubles before the cast: a huge or NaN reach gives the first and the
+    // last tile.
     const double u = (p + 0.5) * tilesPerPixel;
-    out[p].Lo = std::clamp(static_cast<int>(std::floor(u - reach)), 0, tiles - 1);
-    out[p].Hi = std::clamp(static_cast<int>(std::floor(u + reach)), 0, tiles - 1);
+    const double lo = std::floor(u - reach);
+    const double hi = std::floor(u + reach);
+    out[p].Lo = lo > 0.0 ? (lo < tiles - 1 ? static_cast<int>(lo) : tiles - 1) : 0;
+    out[p].Hi = hi < tiles - 1 ? (hi > 0.0 ? static_cast<int>(hi) : 0) : tiles - 1;
   }
   return out;
 }

@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <random>
 #include <vector>
@@ -335,6 +336,34 @@ TEST(DepthBounds, LinesAndPointsAreInsideTheClustersOfTheirPositions)
     EXPECT_GE(b.NonEmptyClusters, centred.NonEmptyClusters);
     // Without the slack, fragments half a pixel off their centre miss (the check can fail).
     EXPECT_GT(CountMissesOffCentre(s, centred, g, 0.5 * width), 0) << "width " << width;
+  }
+}
+
+TEST(DepthBounds, AnyPixelSlackGivesTilesOfTheGrid)
+{
+  // Huge, infinite and NaN slacks (a line width nobody bounded) reach every tile; none
+  // leaves the grid (and none overflows the cast to int, which UBSan would report).
+  for (double slack : { 0.0, 0.4, 7.0, 1e30, std::numeric_limits<double>::infinity(),
+         std::numeric_limits<double>::quiet_NaN(), -3.0 })
+  {
+    const std::vector<Detail::PixelTiles> tiles = Detail::ComputePixelTiles(160, 16, 1e-3, slack);
+    for (int p = 0; p < 160; ++p)
+    {
+      const Detail::PixelTiles& t = tiles[static_cast<std::size_t>(p)];
+      ASSERT_LE(0, t.Lo) << slack;
+      ASSERT_LE(t.Lo, p / 10) << slack; // the pixel's own tile (10 pixels each) is in
+      ASSERT_LE(p / 10, t.Hi) << slack;
+      ASSERT_LT(t.Hi, 16) << slack;
+      if (!(slack < 1e6))
+      {
+        ASSERT_EQ(t.Lo, 0) << slack;
+        ASSERT_EQ(t.Hi, 15) << slack;
+      }
+      if (slack <= 0.0)
+      {
+        ASSERT_LE(t.Hi - t.Lo, 1) << slack; // at most a neighbour within 1e-3 tile
+      }
+    }
   }
 }
 

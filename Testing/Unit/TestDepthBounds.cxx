@@ -100,20 +100,31 @@ Synthetic Render(
   return out;
 }
 
-/// Checks that each fragment's exact depth is inside the interval of its cluster, for the
-/// slice the shader could compute in float (the exact one and its neighbours within 1e-6).
-int CountMisses(const Synthetic& s, const ClusterDepthBounds& b, const ClusterGridParams& g)
+/// Calls f(x, y, exact view depth) for every pixel that shows a fragment.
+template <typename F>
+void ForEachFragment(const Synthetic& s, F f)
 {
-  int misses = 0;
   for (int y = 0; y < s.Height; ++y)
   {
     for (int x = 0; x < s.Width; ++x)
     {
       const double d = s.ExactDepth[static_cast<std::size_t>(y) * s.Width + x];
-      if (d == 0.0)
+      if (d != 0.0)
       {
-        continue;
+        f(x, y, d);
       }
+    }
+  }
+}
+
+/// Checks that each fragment's exact depth is inside the interval of its cluster, for the
+/// slice the shader could compute in float (the exact one and its neighbours within 1e-6).
+int CountMisses(const Synthetic& s, const ClusterDepthBounds& b, const ClusterGridParams& g)
+{
+  int misses = 0;
+  ForEachFragment(s,
+    [&](int x, int y, double d)
+    {
       const int tx = ComputeTileIndex(x + 0.5, s.Width, g.TilesX);
       const int ty = ComputeTileIndex(y + 0.5, s.Height, g.TilesY);
       for (double f : { 1.0 - 1e-6, 1.0, 1.0 + 1e-6 })
@@ -125,8 +136,7 @@ int CountMisses(const Synthetic& s, const ClusterDepthBounds& b, const ClusterGr
           ++misses;
         }
       }
-    }
-  }
+    });
   return misses;
 }
 
@@ -138,15 +148,9 @@ int CountMissesOffCentre(
   const Synthetic& s, const ClusterDepthBounds& b, const ClusterGridParams& g, double reach)
 {
   int misses = 0;
-  for (int y = 0; y < s.Height; ++y)
-  {
-    for (int x = 0; x < s.Width; ++x)
+  ForEachFragment(s,
+    [&](int x, int y, double d)
     {
-      const double d = s.ExactDepth[static_cast<std::size_t>(y) * s.Width + x];
-      if (d == 0.0)
-      {
-        continue;
-      }
       const int slice = ComputeSliceIndex(d, g);
       bool missed = false;
       for (int i = -2; i <= 2 && !missed; ++i)
@@ -160,8 +164,7 @@ int CountMissesOffCentre(
         }
       }
       misses += missed ? 1 : 0;
-    }
-  }
+    });
   return misses;
 }
 }

@@ -99,31 +99,39 @@ bool DrawsNoOpaqueDepth(vtkProp* prop)
   return false;
 }
 
-/// The mapper of a visible prop (or of an assembly's part) that draws points as sprites
-/// (vtkPointGaussianMapper's splats, which VTK does not light), or null.
-vtkMapper* FindSprites(vtkProp* prop)
+/// Calls f(actor) for a visible actor, or for each visible actor among a visible
+/// assembly's parts (nested assemblies included).
+template <typename F>
+void ForEachVisibleActor(vtkProp* prop, F&& f)
 {
   if (!prop || !prop->GetVisibility())
   {
-    return nullptr;
+    return;
   }
   if (auto* actor = vtkActor::SafeDownCast(prop))
   {
-    return vtkPointGaussianMapper::SafeDownCast(actor->GetMapper());
+    f(actor);
   }
-  if (auto* assembly = vtkAssembly::SafeDownCast(prop))
+  else if (auto* assembly = vtkAssembly::SafeDownCast(prop))
   {
     vtkProp3DCollection* parts = assembly->GetParts();
     parts->InitTraversal();
     while (vtkProp3D* part = parts->GetNextProp3D())
     {
-      if (vtkMapper* mapper = FindSprites(part))
-      {
-        return mapper;
-      }
+      ForEachVisibleActor(part, f);
     }
   }
-  return nullptr;
+}
+
+/// Whether a visible prop (or an assembly's part) draws points as sprites
+/// (vtkPointGaussianMapper's splats, which VTK does not light).
+bool DrawsSprites(vtkProp* prop)
+{
+  bool sprites = false;
+  ForEachVisibleActor(prop,
+    [&](vtkActor* actor)
+    { sprites = sprites || vtkPointGaussianMapper::SafeDownCast(actor->GetMapper()); });
+  return sprites;
 }
 
 /// 64-bit FNV-1a over the values mixed in.
@@ -283,11 +291,11 @@ int vtkClusteredLightingDepthPrepass::RenderDepth(const vtkRenderState* s,
     this->PreRender(s);
     for (int i = 0; i < s->GetPropArrayCount(); ++i)
     {
-      // Sprites (FindSprites) stay out: drawn here, vtkPointGaussianMapper's splats
+      // Sprites (DrawsSprites) stay out: drawn here, vtkPointGaussianMapper's splats
       // changed the shading render (TestClusteredLightingDepthAware: 242 steps off at 53%
       // of the pixels). Unlit, drawn once against the others' depths, they are right.
       vtkProp* prop = s->GetPropArray()[i];
-      if (prop->GetVisibility() && !FindSprites(prop))
+      if (prop->GetVisibility() && !DrawsSprites(prop))
       {
         rendered += prop->RenderOpaqueGeometry(ren);
       }
@@ -464,34 +472,19 @@ bool MayDrawLinesOrPoints(vtkMapper* mapper)
 double WidestLineOrPoint(vtkProp* prop)
 {
   double widest = 0.0;
-  if (!prop || !prop->GetVisibility())
-  {
-    return widest;
-  }
-  if (auto* actor = vtkActor::SafeDownCast(prop))
-  {
-    vtkProperty* property = actor->GetProperty();
-    const bool lines = property->GetRepresentation() != VTK_SURFACE ||
-      property->GetEdgeVisibility() || property->GetVertexVisibility() ||
-      MayDrawLinesOrPoints(actor->GetMapper());
-    if (lines)
+  ForEachVisibleActor(prop,
+    [&](vtkActor* actor)
     {
-      widest = std::max({ 1.0, static_cast<double>(property->GetLineWidth()),
-        static_cast<double>(property->GetPointSize()) });
-    }
-  }
-  else if (auto* assembly = vtkAssembly::SafeDownCast(prop))
-  {
-    vtkProp3DCollection* parts = assembly->GetParts();
-    parts->InitTraversal();
-    while (vtkProp3D* part = parts->GetNextProp3D())
-    {
-      widest = std::max(widest, WidestLineOrPoint(part));
-    }
-  }
+      vtkProperty* property = actor->GetProperty();
+      if (property->GetRepresentation() != VTK_SURFACE || property->GetEdgeVisibility() ||
+        property->GetVertexVisibility() || MayDrawLinesOrPoints(actor->GetMapper()))
+      {
+        widest = std::max({ widest, 1.0, static_cast<double>(property->GetLineWidth()),
+          static_cast<double>(property->GetPointSize()) });
+      }
+    });
   return widest;
 }
-
 }
 
 double vtkClusteredLightingDepthPrepass::ComputePixelSlack(const vtkRenderState* s)

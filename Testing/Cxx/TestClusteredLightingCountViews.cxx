@@ -145,11 +145,11 @@ int TestClusteredLightingCountViews(int, char*[])
   box->SetRadius(25.0);
   vtkNew<vtkPolyDataMapper2D> boxMapper;
   boxMapper->SetInputConnection(box->GetOutputPort());
-  vtkNew<vtkActor2D> bar;
-  bar->SetMapper(boxMapper);
-  bar->GetProperty()->SetColor(0.9, 0.9, 0.2);
+  vtkNew<vtkActor2D> box2D;
+  box2D->SetMapper(boxMapper);
+  box2D->GetProperty()->SetColor(0.9, 0.9, 0.2);
   ren->AddViewProp(caption);
-  ren->AddViewProp(bar);
+  ren->AddViewProp(box2D);
   const Counts with2D = Count(rw, pass, "with a caption and a 2D polygon");
   Check(SameCounts(with2D, plain) &&
       ClusteredLightingTest::CompareImages(with2D.Image, plain.Image).MaxAbsError == 0.0,
@@ -161,7 +161,7 @@ int TestClusteredLightingCountViews(int, char*[])
     "2D actors: the heat map's scale as without them (" + std::to_string(scale2D) +
       "), and the heat map shows them");
   ren->RemoveViewProp(caption);
-  ren->RemoveViewProp(bar);
+  ren->RemoveViewProp(box2D);
 
   // 2. Unlit points and lines (no normals) over the background beyond the floor's far
   // edge, nearer than the floor's far corners (the slicing range stays).

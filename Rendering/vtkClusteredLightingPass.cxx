@@ -814,12 +814,32 @@ void vtkClusteredLightingPass::RenderDepthPrepass(
   }
   if (depthAware)
   {
-    bool translucent = false;
+    // Where translucent fragments may be: the screen rectangles of the translucent props'
+    // boxes (none: anywhere, when a box is unknown or reaches behind the camera).
+    bool translucent = false, translucentAnywhere = false;
+    std::vector<glm::dvec4> translucentRects;
     for (int i = 0; i < s->GetPropArrayCount(); ++i)
     {
       vtkProp* prop = s->GetPropArray()[i];
-      translucent =
-        translucent || (prop->GetVisibility() && prop->HasTranslucentPolygonalGeometry());
+      if (prop->GetVisibility() && prop->HasTranslucentPolygonalGeometry())
+      {
+        translucent = true;
+        const double* box = prop->GetBounds();
+        glm::dvec4 rect;
+        if (box &&
+          vtkClusteredLighting::ProjectBoxToViewport(box, inputs.View.WCVC, inputs.View.VCDC, rect))
+        {
+          translucentRects.push_back(rect);
+        }
+        else
+        {
+          translucentAnywhere = true;
+        }
+      }
+    }
+    if (translucentAnywhere)
+    {
+      translucentRects.clear();
     }
     std::string problem;
     if (prepass->GetUnknownDepthWrites())
@@ -831,12 +851,6 @@ void vtkClusteredLightingPass::RenderDepthPrepass(
     {
       problem = prepass->GetProblem();
     }
-    else if (translucent && prepass->GetImage().DepthMax)
-    {
-      // A translucent fragment is shaded at the pixel centre too, where its depth may lie
-      // behind every opaque sample of the pixel: no recorded depth bounds it.
-      problem = "the framebuffer is multisampled and has translucent geometry";
-    }
     if (problem.empty())
     {
       this->Internals->Depths = prepass->GetImage();
@@ -845,6 +859,7 @@ void vtkClusteredLightingPass::RenderDepthPrepass(
         vtkClusteredLighting::ComputeWindowMargin(prepass->GetMaximumCoincidentOffset());
       inputs.DepthOptions.PixelSlack = vtkClusteredLightingDepthPrepass::ComputePixelSlack(s);
       inputs.DepthOptions.Translucent = translucent;
+      inputs.DepthOptions.TranslucentRects = std::move(translucentRects);
       this->Internals->ReportedDepthProblem.clear();
     }
     else if (problem != this->Internals->ReportedDepthProblem)

@@ -469,13 +469,14 @@ public:
    * Depth-aware clusters: after the depth prepass, read the viewport's depth back and cut
    * each cluster to the depths its fragments really have (an empty cluster gets no
    * light), and put the depth slices between the nearest and deepest visible surfaces
-   * instead of the camera's clipping range. Conservative: translucent geometry widens
-   * each tile's clusters to everything in front of its deepest opaque surface; in a
-   * multisampled framebuffer (VTK's default window) the prepass records the depths its
-   * fragments have at the pixel centres, where they are shaded
-   * (vtkClusteredLightingSampleDepths); a frame whose depths cannot be used (impostor
-   * mappers that write their own depth, an oblique projection, translucent geometry in
-   * a multisampled framebuffer) falls back to whole clusters, with a warning once.
+   * instead of the camera's clipping range. Conservative: in a multisampled framebuffer
+   * (VTK's default window) the prepass records the depths its fragments have at the
+   * pixel centres, where they are shaded (vtkClusteredLightingSampleDepths); translucent
+   * geometry widens the clusters of the tiles its props' boxes cover on screen to
+   * everything in front of the tile's deepest opaque surface (in a multisampled
+   * framebuffer, to the far plane); a frame whose depths cannot be used (impostor
+   * mappers that write their own depth, an oblique projection) falls back to whole
+   * clusters, with a warning once.
    * Costs the prepass, a depth readback and a CPU pass over its pixels
    * (GetLastDepthPrepassTime, GetLastAssignmentTime); the list and master passes then run
    * whenever the visible depths change. Default is on.

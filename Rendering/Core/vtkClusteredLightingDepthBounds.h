@@ -39,9 +39,13 @@
  *  - A pixel left at the cleared depth 1 may still hold a fragment exactly on the far
  *    plane: its tile's last slice includes [depth(1 - m), GetMaxFragmentDepth()].
  *  - Translucent geometry is not in the opaque depth buffer. With Translucent set, a
- *    tile's clusters hold every depth from the camera's near plane to the tile's deepest
- *    opaque depth (or the far plane where the tile shows background): translucent
- *    fragments are depth-tested against the opaque ones, so none lies deeper.
+ *    tile where a translucent fragment may be (every tile, or those within a pixel of
+ *    TranslucentRects: the screen rectangles of the translucent props' boxes) holds every
+ *    depth from the camera's near plane to the tile's deepest opaque depth (or the far
+ *    plane where the tile shows background): translucent fragments are depth-tested
+ *    against the opaque ones, so none lies deeper. In a multisampled framebuffer such a
+ *    tile holds every depth to the far plane: a translucent fragment is shaded at its
+ *    pixel's centre, whose depth may lie behind every opaque sample of the pixel.
  *
  * The visible range (MeasureVisibleRange: the nearest and deepest opaque pixels) sets
  * the slicing range (ChooseSlicingRange): slices where the geometry is. Slicing is
@@ -78,7 +82,46 @@ struct DepthBoundsOptions
   /// points); a pixel counts in every tile this close.
   double PixelSlack = 0.0;
   bool Translucent = false; ///< translucent geometry is shaded too
+  /// Where translucent fragments may be: rectangles (x0, y0, x1, y1) in the viewport's
+  /// normalized device coordinates (ProjectBoxToViewport). Empty: anywhere.
+  std::vector<glm::dvec4> TranslucentRects;
 };
+
+/**
+ * The screen rectangle of a world box (x0, x1, y0, y1, z0, z1) in the normalized device
+ * coordinates of the view `wcvc`, `vcdc`: the bounds of its projected corners, which
+ * hold the projection of every point of the box when every corner lies in front of the
+ * camera. False (rect: the whole viewport) when a corner does not, or the box is not
+ * valid.
+ */
+inline bool ProjectBoxToViewport(
+  const double box[6], const glm::dmat4& wcvc, const glm::dmat4& vcdc, glm::dvec4& rect)
+{
+  rect = glm::dvec4(-1.0, -1.0, 1.0, 1.0);
+  if (!(box[0] <= box[1] && box[2] <= box[3] && box[4] <= box[5]))
+  {
+    return false;
+  }
+  glm::dvec4 out(std::numeric_limits<double>::max(), std::numeric_limits<double>::max(),
+    -std::numeric_limits<double>::max(), -std::numeric_limits<double>::max());
+  const glm::dmat4 wcdc = vcdc * wcvc;
+  for (int i = 0; i < 8; ++i)
+  {
+    const glm::dvec4 p(box[i & 1], box[2 + ((i >> 1) & 1)], box[4 + (i >> 2)], 1.0);
+    const glm::dvec4 c = wcdc * p;
+    // In front of the camera: positive clip w (perspective), or any point (parallel).
+    if (!(c.w > 0.0) || !std::isfinite(c.x / c.w) || !std::isfinite(c.y / c.w))
+    {
+      return false;
+    }
+    out.x = std::min(out.x, c.x / c.w);
+    out.y = std::min(out.y, c.y / c.w);
+    out.z = std::max(out.z, c.x / c.w);
+    out.w = std::max(out.w, c.y / c.w);
+  }
+  rect = out;
+  return true;
+}
 
 /// The largest |cOffset| of VTK's coincident topology as a window-depth margin.
 inline double ComputeWindowMargin(double maxAbsCoincidentOffset)
@@ -319,6 +362,35 @@ inline void ComputeClusterDepthBoundsRows(const DepthImage& image, const glm::dm
   };
   std::vector<float> tileDeepest(static_cast<std::size_t>(X));
   std::vector<char> tileBackground(static_cast<std::size_t>(X));
+  // Tiles where a translucent fragment may be: those of the rectangles, grown by a pixel
+  // (a multisampled fragment's centre lies up to 0.71 pixel outside its primitive) and
+  // the tile slack; every tile without rectangles.
+  const bool everywhere = options.Translucent && options.TranslucentRects.empty();
+  std::vector<char> tileTranslucent(static_cast<std::size_t>(X) * grid.TilesY, everywhere);
+  for (const glm::dvec4& r : options.TranslucentRects)
+  {
+    const double gx = 1.0 / image.Width * X + options.TileSlack;
+    const double gy = 1.0 / image.Height * grid.TilesY + options.TileSlack;
+    // NDC to tiles (as doubles, clamped before the cast: a huge or NaN corner gives an
+    // edge tile, the conservative choice).
+    auto tileRange = [](double lo, double hi, double grow, int tiles, int& t0, int& t1)
+    {
+      const double a = std::floor((0.5 * lo + 0.5) * tiles - grow);
+      const double b = std::floor((0.5 * hi + 0.5) * tiles + grow);
+      t0 = a > 0.0 ? (a < tiles - 1 ? static_cast<int>(a) : tiles - 1) : 0;
+      t1 = b < tiles - 1 ? (b > 0.0 ? static_cast<int>(b) : 0) : tiles - 1;
+      return !(b < 0.0 || a > tiles - 1);
+    };
+    int x0, x1, y0, y1;
+    if (tileRange(r.x, r.z, gx, X, x0, x1) && tileRange(r.y, r.w, gy, grid.TilesY, y0, y1))
+    {
+      for (int ty = y0; ty <= y1; ++ty)
+      {
+        std::fill(tileTranslucent.begin() + static_cast<std::size_t>(ty) * X + x0,
+          tileTranslucent.begin() + static_cast<std::size_t>(ty) * X + x1 + 1, 1);
+      }
+    }
+  }
   for (int ty = tileRowBegin; ty < tileRowEnd; ++ty)
   {
     std::fill(tileDeepest.begin(), tileDeepest.end(), 0.0f);
@@ -350,7 +422,7 @@ inline void ComputeClusterDepthBoundsRows(const DepthImage& image, const glm::dm
         {
           tileDeepest[tx] = std::max(tileDeepest[tx], interval[1]);
         }
-        if (options.Translucent)
+        if (everywhere)
         {
           continue;
         }
@@ -369,11 +441,13 @@ inline void ComputeClusterDepthBoundsRows(const DepthImage& image, const glm::dm
     const float farLo = static_cast<float>(toView(1.0 - m) * (1.0 - rel));
     for (int tx = 0; tx < X; ++tx)
     {
-      if (options.Translucent)
+      if (tileTranslucent[static_cast<std::size_t>(ty) * X + tx])
       {
-        // Anything from the near plane to the deepest opaque depth (or the far plane).
+        // Anything from the near plane to the deepest opaque depth (or the far plane,
+        // where the tile shows background or the framebuffer is multisampled).
+        const bool toFar = tileBackground[tx] || image.DepthMax;
         const float interval[2] = { static_cast<float>(nearest),
-          tileBackground[tx] ? static_cast<float>(deepest) : tileDeepest[tx] };
+          toFar ? static_cast<float>(deepest) : tileDeepest[tx] };
         if (interval[1] > 0.0f)
         {
           const int s1 = sliceOf(interval[1], Z - 1);

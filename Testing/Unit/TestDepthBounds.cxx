@@ -421,6 +421,142 @@ TEST(DepthBounds, TranslucentGeometryKeepsEverythingInFrontOfTheOpaque)
   }
 }
 
+TEST(DepthBounds, TranslucentRectanglesKeepTheirTilesAndCutTheOthers)
+{
+  // A translucent prop whose screen rectangle covers part of the view: its tiles (and the
+  // tiles within a pixel of it) keep every depth from the near plane to the opaque depth
+  // (to the far plane in a multisampled framebuffer), the other tiles are cut to the
+  // opaque depths as without translucent geometry.
+  const glm::dmat4 P = ClusteredLightingTest::Perspective(40.0, 4.0 / 3.0, 0.5, 40.0);
+  const ClusterGridParams g =
+    ClusteredLightingTest::MakeGrid(16, 8, 32, 160, 120, 0.5, 40.0, SlicingScheme::Exponential);
+  const Synthetic s = Render(P, 160, 120, 1.0);
+  DepthBoundsOptions options;
+  options.Translucent = true;
+  // Tiles of 10 x 15 pixels. x from pixel 41.5 to 82.5: tiles 4 to 8; y from 31.5 to
+  // 59.9: tiles 2 to 3, and 4 (within a pixel of 59.9).
+  options.TranslucentRects.push_back(
+    glm::dvec4(41.5 / 80.0 - 1.0, 31.5 / 60.0 - 1.0, 82.5 / 80.0 - 1.0, 59.9 / 60.0 - 1.0));
+  const ClusterDepthBounds opaque = ComputeClusterDepthBounds(s.Image(), P, g, {});
+  for (const bool multisampled : { false, true })
+  {
+    DepthImage image = s.Image();
+    image.DepthMax = multisampled ? s.Depth.data() : nullptr;
+    const ClusterDepthBounds b = ComputeClusterDepthBounds(image, P, g, options);
+    int kept = 0, cut = 0;
+    for (int ty = 0; ty < g.TilesY; ++ty)
+    {
+      for (int tx = 0; tx < g.TilesX; ++tx)
+      {
+        const bool inside = tx >= 4 && tx <= 8 && ty >= 2 && ty <= 4;
+        // Every pixel of the tile: from the near plane to its opaque depth (multisampled:
+        // to the far plane) inside the tile's clusters, or the tile as without
+        // translucent geometry.
+        for (int y = ty * 15; y < (ty + 1) * 15; ++y)
+        {
+          for (int x = tx * 10; x < (tx + 1) * 10; ++x)
+          {
+            double d = s.ExactDepth[static_cast<std::size_t>(y) * s.Width + x];
+            d = d == 0.0 || multisampled ? g.GetMaxFragmentDepth() : d;
+            for (double t : { 0.0, 0.3, 0.9, 1.0 })
+            {
+              const double z = g.NearVC + t * (d - g.NearVC);
+              double lo = 0.0, hi = 0.0;
+              const bool in = b.GetInterval(tx, ty, ComputeSliceIndex(z, g), g.TilesX, lo, hi) &&
+                lo <= z && hi >= z * (1.0 - 1e-6);
+              if (inside)
+              {
+                ASSERT_TRUE(in) << "tile " << tx << ", " << ty << ", depth " << z;
+              }
+            }
+          }
+        }
+        for (int slice = 0; slice < g.Slices; ++slice)
+        {
+          double lo = 0.0, hi = 0.0, lo0 = 0.0, hi0 = 0.0;
+          const bool has = b.GetInterval(tx, ty, slice, g.TilesX, lo, hi);
+          const bool had = opaque.GetInterval(tx, ty, slice, g.TilesX, lo0, hi0);
+          if (!inside)
+          {
+            ASSERT_EQ(has, had) << "tile " << tx << ", " << ty << ", slice " << slice;
+            if (has)
+            {
+              EXPECT_EQ(lo, lo0);
+              EXPECT_EQ(hi, hi0);
+            }
+          }
+          kept += inside && has ? 1 : 0;
+          cut += !inside && !has ? 1 : 0;
+        }
+      }
+    }
+    // Multisampled, the rectangle's 15 tiles keep all their 32 slices.
+    if (multisampled)
+    {
+      EXPECT_EQ(kept, 15 * g.Slices);
+    }
+    EXPECT_GT(cut, 0);
+  }
+  // A rectangle that is not a number, or reaches past the viewport, gives tiles of the
+  // grid (no out-of-range index); one wholly outside the viewport gives none.
+  for (const glm::dvec4& r : { glm::dvec4(std::nan(""), 0.0, 0.5, std::nan("")),
+         glm::dvec4(-1e300, -1e300, 1e300, 1e300), glm::dvec4(2.0, 2.0, 3.0, 3.0) })
+  {
+    DepthBoundsOptions o;
+    o.Translucent = true;
+    o.TranslucentRects = { r };
+    const ClusterDepthBounds b = ComputeClusterDepthBounds(s.Image(), P, g, o);
+    ASSERT_TRUE(b.Valid);
+    EXPECT_EQ(b.NonEmptyClusters == opaque.NonEmptyClusters, r.x == 2.0);
+  }
+}
+
+TEST(DepthBounds, BoxesProjectToRectanglesHoldingEveryPoint)
+{
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const glm::dmat4 wcvc =
+    glm::lookAt(glm::dvec3(3.0, 2.0, 9.0), glm::dvec3(0.0, 0.0, 0.0), glm::dvec3(0.0, 1.0, 0.0));
+  for (const glm::dmat4& P : { ClusteredLightingTest::Perspective(40.0, 4.0 / 3.0, 0.5, 40.0),
+         ClusteredLightingTest::Parallel(3.0, 4.0 / 3.0, 0.5, 40.0) })
+  {
+    for (int i = 0; i < 200; ++i)
+    {
+      double box[6];
+      for (int a = 0; a < 3; ++a)
+      {
+        const double c = -3.0 + 6.0 * u(rng), h = 2.0 * u(rng); // in front of the camera
+        box[2 * a] = c - h;
+        box[2 * a + 1] = c + h;
+      }
+      glm::dvec4 rect;
+      ASSERT_TRUE(ProjectBoxToViewport(box, wcvc, P, rect));
+      for (int k = 0; k < 50; ++k)
+      {
+        const glm::dvec4 p(box[0] + u(rng) * (box[1] - box[0]), box[2] + u(rng) * (box[3] - box[2]),
+          box[4] + u(rng) * (box[5] - box[4]), 1.0);
+        const glm::dvec4 c = P * wcvc * p;
+        EXPECT_GE(c.x / c.w, rect.x - 1e-12);
+        EXPECT_LE(c.x / c.w, rect.z + 1e-12);
+        EXPECT_GE(c.y / c.w, rect.y - 1e-12);
+        EXPECT_LE(c.y / c.w, rect.w + 1e-12);
+      }
+    }
+  }
+  // A box reaching behind the camera, an invalid box, one that is not a number: the whole
+  // viewport, and false.
+  const glm::dmat4 P = ClusteredLightingTest::Perspective(40.0, 4.0 / 3.0, 0.5, 40.0);
+  const double behind[6] = { -1.0, 1.0, -1.0, 1.0, 5.0, 12.0 };
+  const double invalid[6] = { 1.0, -1.0, 0.0, 1.0, 0.0, 1.0 };
+  const double nan[6] = { std::nan(""), 1.0, 0.0, 1.0, 0.0, 1.0 };
+  for (const double* box : { behind, invalid, nan })
+  {
+    glm::dvec4 rect(0.0);
+    EXPECT_FALSE(ProjectBoxToViewport(box, wcvc, P, rect));
+    EXPECT_EQ(rect, glm::dvec4(-1.0, -1.0, 1.0, 1.0));
+  }
+}
+
 TEST(DepthBounds, SlicingRangeStaysInsideTheCameraRange)
 {
   ClusterGridParams g =

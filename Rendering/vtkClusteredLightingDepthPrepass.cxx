@@ -43,6 +43,7 @@
 #include <cmath>     // for std::abs
 #include <cstdint>   // for std::uintptr_t
 #include <cstring>   // for std::memcpy, std::strcmp
+#include <limits>    // for std::numeric_limits
 #include <vector>    // for std::vector
 
 namespace
@@ -485,6 +486,93 @@ double WidestLineOrPoint(vtkProp* prop)
     });
   return widest;
 }
+}
+
+namespace
+{
+/// Whether the fragments of a translucent prop lie inside its mapper's bounds under its
+/// matrix, and that box in world coordinates.
+bool GetTranslucentBox(vtkProp* prop, double box[6])
+{
+  auto* actor = vtkActor::SafeDownCast(prop);
+  vtkMapper* mapper = actor ? actor->GetMapper() : nullptr;
+  if (!mapper || std::strcmp(actor->GetClassName(), "vtkOpenGLActor") != 0 ||
+    (std::strcmp(mapper->GetClassName(), "vtkOpenGLPolyDataMapper") != 0 &&
+      std::strcmp(mapper->GetClassName(), "vtkCompositePolyDataMapper2") != 0))
+  {
+    return false;
+  }
+  // Shader code or replacements may move a fragment's position anywhere (VTK's impostor
+  // mappers set it in the fragment shader).
+  vtkShaderProperty* shader = actor->GetShaderProperty();
+  if (shader &&
+    (shader->GetNumberOfShaderReplacements() > 0 || shader->HasVertexShaderCode() ||
+      shader->HasGeometryShaderCode() || shader->HasFragmentShaderCode()))
+  {
+    return false;
+  }
+  const double* b = mapper->GetBounds();
+  if (!b || !(b[0] <= b[1] && b[2] <= b[3] && b[4] <= b[5]))
+  {
+    return false;
+  }
+  // The actor's matrix now (a follower's follows the camera), corner by corner.
+  vtkMatrix4x4* m = actor->GetMatrix();
+  for (int a = 0; a < 3; ++a)
+  {
+    box[2 * a] = std::numeric_limits<double>::max();
+    box[2 * a + 1] = -std::numeric_limits<double>::max();
+  }
+  for (int i = 0; i < 8; ++i)
+  {
+    const double in[4] = { b[i & 1], b[2 + ((i >> 1) & 1)], b[4 + (i >> 2)], 1.0 };
+    double out[4];
+    m->MultiplyPoint(in, out);
+    if (!(out[3] > 0.0))
+    {
+      return false;
+    }
+    for (int a = 0; a < 3; ++a)
+    {
+      box[2 * a] = std::min(box[2 * a], out[a] / out[3]);
+      box[2 * a + 1] = std::max(box[2 * a + 1], out[a] / out[3]);
+    }
+  }
+  return true;
+}
+}
+
+bool vtkClusteredLightingDepthPrepass::ComputeTranslucentRects(const vtkRenderState* s,
+  const glm::dmat4& wcvc, const glm::dmat4& vcdc, bool& translucent, std::vector<glm::dvec4>& rects)
+{
+  translucent = false;
+  rects.clear();
+  bool bounded = true;
+  for (int i = 0; i < s->GetPropArrayCount(); ++i)
+  {
+    vtkProp* prop = s->GetPropArray()[i];
+    if (!prop->GetVisibility() || !prop->HasTranslucentPolygonalGeometry())
+    {
+      continue;
+    }
+    translucent = true;
+    double box[6];
+    glm::dvec4 rect;
+    if (bounded && GetTranslucentBox(prop, box) &&
+      vtkClusteredLighting::ProjectBoxToViewport(box, wcvc, vcdc, rect))
+    {
+      rects.push_back(rect);
+    }
+    else
+    {
+      bounded = false;
+    }
+  }
+  if (!bounded)
+  {
+    rects.clear();
+  }
+  return bounded;
 }
 
 double vtkClusteredLightingDepthPrepass::ComputePixelSlack(const vtkRenderState* s)

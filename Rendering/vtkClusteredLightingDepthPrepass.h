@@ -146,6 +146,19 @@ public:
   /// and composite polydata mappers.
   static double ComputePixelSlack(const vtkRenderState* s);
 
+  /// Where the fragments of the state's visible translucent props may be on screen
+  /// (DepthBoundsOptions::TranslucentRects): the rectangle of each one's box under
+  /// `wcvc`, `vcdc` (vtkClusteredLighting::ProjectBoxToViewport), the box being its
+  /// mapper's bounds under the actor's matrix. Only a plain actor (vtkOpenGLActor) whose
+  /// mapper is VTK's polydata or composite polydata mapper and whose shader property holds
+  /// no shader code or replacements keeps its fragments' positions inside that box; for
+  /// any other translucent prop (impostor mappers, followers, ParaView's LOD actors,
+  /// assemblies, custom shaders), or a box reaching behind the camera, it returns false
+  /// with `rects` empty: translucent fragments may be anywhere. `translucent` tells
+  /// whether any visible prop has translucent geometry.
+  static bool ComputeTranslucentRects(const vtkRenderState* s, const glm::dmat4& wcvc,
+    const glm::dmat4& vcdc, bool& translucent, std::vector<glm::dvec4>& rects);
+
   double GetMaximumCoincidentOffset() const { return this->MaxCoincidentOffset; }
   bool GetUnknownDepthWrites() const { return this->UnknownDepthWrites; }
   const std::string& GetProblem() const { return this->Problem; }

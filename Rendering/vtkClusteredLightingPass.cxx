@@ -815,32 +815,11 @@ void vtkClusteredLightingPass::RenderDepthPrepass(
   if (depthAware)
   {
     // Where translucent fragments may be: the screen rectangles of the translucent props'
-    // boxes (none: anywhere, when a box is unknown or reaches behind the camera).
-    bool translucent = false, translucentAnywhere = false;
+    // boxes (none: anywhere).
+    bool translucent = false;
     std::vector<glm::dvec4> translucentRects;
-    for (int i = 0; i < s->GetPropArrayCount(); ++i)
-    {
-      vtkProp* prop = s->GetPropArray()[i];
-      if (prop->GetVisibility() && prop->HasTranslucentPolygonalGeometry())
-      {
-        translucent = true;
-        const double* box = prop->GetBounds();
-        glm::dvec4 rect;
-        if (box &&
-          vtkClusteredLighting::ProjectBoxToViewport(box, inputs.View.WCVC, inputs.View.VCDC, rect))
-        {
-          translucentRects.push_back(rect);
-        }
-        else
-        {
-          translucentAnywhere = true;
-        }
-      }
-    }
-    if (translucentAnywhere)
-    {
-      translucentRects.clear();
-    }
+    vtkClusteredLightingDepthPrepass::ComputeTranslucentRects(
+      s, inputs.View.WCVC, inputs.View.VCDC, translucent, translucentRects);
     std::string problem;
     if (prepass->GetUnknownDepthWrites())
     {

@@ -363,14 +363,19 @@ inline void ComputeClusterDepthBoundsRows(const DepthImage& image, const glm::dm
   std::vector<float> tileDeepest(static_cast<std::size_t>(X));
   std::vector<char> tileBackground(static_cast<std::size_t>(X));
   // Tiles where a translucent fragment may be: those of the rectangles, grown by a pixel
-  // (a multisampled fragment's centre lies up to 0.71 pixel outside its primitive) and
-  // the tile slack; every tile without rectangles.
+  // (a multisampled fragment's centre lies up to 0.71 pixel outside its primitive), the
+  // pixel slack (a wide line's fragments carry its centre line's position, which may lie
+  // off screen) and the tile slack; every tile without rectangles.
   const bool everywhere = options.Translucent && options.TranslucentRects.empty();
-  std::vector<char> tileTranslucent(static_cast<std::size_t>(X) * grid.TilesY, everywhere);
+  std::vector<char> tileTranslucent(
+    static_cast<std::size_t>(X) * grid.TilesY, static_cast<char>(everywhere ? 1 : 0));
+  const double growPixels = 1.0 +
+    (std::isnan(options.PixelSlack) ? std::numeric_limits<double>::max()
+                                    : std::max(0.0, options.PixelSlack));
   for (const glm::dvec4& r : options.TranslucentRects)
   {
-    const double gx = 1.0 / image.Width * X + options.TileSlack;
-    const double gy = 1.0 / image.Height * grid.TilesY + options.TileSlack;
+    const double gx = growPixels / image.Width * X + options.TileSlack;
+    const double gy = growPixels / image.Height * grid.TilesY + options.TileSlack;
     // NDC to tiles (as doubles, clamped before the cast: a huge or NaN corner gives an
     // edge tile, the conservative choice).
     auto tileRange = [](double lo, double hi, double grow, int tiles, int& t0, int& t1)
@@ -386,8 +391,10 @@ inline void ComputeClusterDepthBoundsRows(const DepthImage& image, const glm::dm
     {
       for (int ty = y0; ty <= y1; ++ty)
       {
-        std::fill(tileTranslucent.begin() + static_cast<std::size_t>(ty) * X + x0,
-          tileTranslucent.begin() + static_cast<std::size_t>(ty) * X + x1 + 1, 1);
+        for (int tx = x0; tx <= x1; ++tx)
+        {
+          tileTranslucent[static_cast<std::size_t>(ty) * X + tx] = 1;
+        }
       }
     }
   }

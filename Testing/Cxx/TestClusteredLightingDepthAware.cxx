@@ -31,13 +31,17 @@
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
+#include "vtkCellArray.h"
 #include "vtkClusteredLightSet.h"
 #include "vtkClusteredLightingPass.h"
 #include "vtkLight.h"
 #include "vtkMapper.h"
 #include "vtkNew.h"
+#include "vtkOpenGLSphereMapper.h"
 #include "vtkPointGaussianMapper.h"
 #include "vtkPointSource.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
 #include "vtkRenderWindow.h"
@@ -431,6 +435,31 @@ int TestClusteredLightingDepthAware(int, char*[])
   Check(std::abs(allShaded - (opaque + glassShaded)) < 1e-12,
     "translucent sphere: the total is the sum of the parts");
   ren->RemoveActor(glass);
+
+  // 7b. Translucent impostor spheres (vtkOpenGLSphereMapper): the fragment shader puts each
+  // fragment on its sphere, outside the box of the centres: their fragments may be
+  // anywhere, so every tile keeps the clusters in front of its opaque surfaces.
+  vtkNew<vtkPoints> centres;
+  centres->InsertNextPoint(-1.0, 0.4, 1.4);
+  centres->InsertNextPoint(1.3, 0.0, 1.0);
+  vtkNew<vtkCellArray> centreCells;
+  for (vtkIdType i = 0; i < 2; ++i)
+  {
+    centreCells->InsertNextCell(1, &i);
+  }
+  vtkNew<vtkPolyData> centreData;
+  centreData->SetPoints(centres);
+  centreData->SetVerts(centreCells);
+  vtkNew<vtkOpenGLSphereMapper> impostorMapper;
+  impostorMapper->SetInputData(centreData);
+  impostorMapper->SetRadius(0.8);
+  vtkNew<vtkActor> impostors;
+  impostors->SetMapper(impostorMapper);
+  impostors->GetProperty()->SetOpacity(0.4);
+  ren->AddActor(impostors);
+  ren->ResetCameraClippingRange();
+  CheckCase("translucent impostor spheres", rw, ren, pass, true, true);
+  ren->RemoveActor(impostors);
 
   // 8. A scene far from the origin (the lights and geometry moved by 1e5).
   const double far[3] = { 1e5, -2e5, 1e5 };

@@ -509,6 +509,23 @@ TEST(DepthBounds, TranslucentRectanglesKeepTheirTilesAndCutTheOthers)
     ASSERT_TRUE(b.Valid);
     EXPECT_EQ(b.NonEmptyClusters == opaque.NonEmptyClusters, r.x == 2.0);
   }
+  // A rectangle 2 pixels off the right edge: no tile, unless lines or points 8 pixels
+  // wide may be drawn (PixelSlack 5: a wide line's fragments carry its centre line's
+  // position, which the shader clamps to the edge tile).
+  for (const double slack : { 0.0, 5.0 })
+  {
+    DepthBoundsOptions o;
+    o.Translucent = true;
+    o.PixelSlack = slack;
+    o.TranslucentRects = { glm::dvec4(1.0 + 4.0 / 160.0, -0.5, 1.1, 0.5) };
+    const ClusterDepthBounds b = ComputeClusterDepthBounds(s.Image(), P, g, o);
+    DepthBoundsOptions plain;
+    plain.PixelSlack = slack;
+    const ClusterDepthBounds without = ComputeClusterDepthBounds(s.Image(), P, g, plain);
+    EXPECT_EQ(b.NonEmptyClusters == without.NonEmptyClusters, slack == 0.0);
+    double lo = 0.0, hi = 0.0;
+    EXPECT_EQ(b.GetInterval(g.TilesX - 1, g.TilesY / 2, 0, g.TilesX, lo, hi), slack > 0.0);
+  }
 }
 
 TEST(DepthBounds, BoxesProjectToRectanglesHoldingEveryPoint)

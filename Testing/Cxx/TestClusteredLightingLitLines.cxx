@@ -10,12 +10,14 @@
 // is within its derived bound (cut tails + the far field's stated bound at the pixel's
 // position and normal), with zero false negatives and no NaN pixel (CheckClusteredFrame),
 // with the depth prepass and depth-aware clusters on (the default) and off.
+#include "ClusteredLightingGLTestUtilities.h"
 #include "ClusteredLightingTestUtilities.h"
 
 #include "vtkActorCollection.h"
 #include "vtkCellArray.h"
 #include "vtkClusteredLightSet.h"
 #include "vtkClusteredLightingPass.h"
+#include "vtkMath.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkProperty.h"
@@ -26,16 +28,7 @@
 
 namespace
 {
-int Status = EXIT_SUCCESS;
-
-void Check(bool ok, const std::string& what)
-{
-  std::printf("%s: %s\n", ok ? "ok" : "FAILED", what.c_str());
-  if (!ok)
-  {
-    Status = EXIT_FAILURE;
-  }
-}
+using ClusteredLightingTest::Check;
 
 /// A helix of one polyline around the test scene's sphere (no normals), and a ring of
 /// vertices (no normals) on the floor.
@@ -134,5 +127,5 @@ int TestClusteredLightingLitLines(int, char*[])
             pass, rw, ren, 1.4, what.c_str(), 0, &comparison) == 0,
       what + ": within the derived bound of brute force, zero false negatives, finite");
   }
-  return Status;
+  return ClusteredLightingTest::CheckStatus();
 }

@@ -391,6 +391,27 @@ TEST(DepthBounds, BackgroundKeepsTheFarPlaneInTheLastSlice)
   }
 }
 
+namespace
+{
+/// Whether tile (tx, ty)'s clusters hold every depth from the near plane to `d` (sampled
+/// at 4 points), where a translucent fragment in front of an opaque surface at `d` may be.
+bool HoldsEverythingInFront(
+  const ClusterDepthBounds& b, const ClusterGridParams& g, int tx, int ty, double d)
+{
+  for (double t : { 0.0, 0.3, 0.9, 1.0 })
+  {
+    const double z = g.NearVC + t * (d - g.NearVC);
+    double lo = 0.0, hi = 0.0;
+    if (!b.GetInterval(tx, ty, ComputeSliceIndex(z, g), g.TilesX, lo, hi) || lo > z ||
+      hi < z * (1.0 - 1e-6))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+}
+
 TEST(DepthBounds, TranslucentGeometryKeepsEverythingInFrontOfTheOpaque)
 {
   const glm::dmat4 P = ClusteredLightingTest::Perspective(40.0, 4.0 / 3.0, 0.5, 40.0);
@@ -409,14 +430,7 @@ TEST(DepthBounds, TranslucentGeometryKeepsEverythingInFrontOfTheOpaque)
       d = d == 0.0 ? g.FarVC : d;
       const int tx = ComputeTileIndex(x + 0.5, s.Width, g.TilesX);
       const int ty = ComputeTileIndex(y + 0.5, s.Height, g.TilesY);
-      for (double t : { 0.0, 0.3, 0.9, 1.0 })
-      {
-        const double z = g.NearVC + t * (d - g.NearVC);
-        double lo = 0.0, hi = 0.0;
-        ASSERT_TRUE(b.GetInterval(tx, ty, ComputeSliceIndex(z, g), g.TilesX, lo, hi));
-        EXPECT_LE(lo, z);
-        EXPECT_GE(hi, z * (1.0 - 1e-6));
-      }
+      ASSERT_TRUE(HoldsEverythingInFront(b, g, tx, ty, d)) << "pixel " << x << ", " << y;
     }
   }
 }
@@ -452,23 +466,14 @@ TEST(DepthBounds, TranslucentRectanglesKeepTheirTilesAndCutTheOthers)
         // Every pixel of the tile: from the near plane to its opaque depth (multisampled:
         // to the far plane) inside the tile's clusters, or the tile as without
         // translucent geometry.
-        for (int y = ty * 15; y < (ty + 1) * 15; ++y)
+        for (int y = ty * 15; inside && y < (ty + 1) * 15; ++y)
         {
           for (int x = tx * 10; x < (tx + 1) * 10; ++x)
           {
             double d = s.ExactDepth[static_cast<std::size_t>(y) * s.Width + x];
             d = d == 0.0 || multisampled ? g.GetMaxFragmentDepth() : d;
-            for (double t : { 0.0, 0.3, 0.9, 1.0 })
-            {
-              const double z = g.NearVC + t * (d - g.NearVC);
-              double lo = 0.0, hi = 0.0;
-              const bool in = b.GetInterval(tx, ty, ComputeSliceIndex(z, g), g.TilesX, lo, hi) &&
-                lo <= z && hi >= z * (1.0 - 1e-6);
-              if (inside)
-              {
-                ASSERT_TRUE(in) << "tile " << tx << ", " << ty << ", depth " << z;
-              }
-            }
+            ASSERT_TRUE(HoldsEverythingInFront(b, g, tx, ty, d))
+              << "tile " << tx << ", " << ty << ", pixel " << x << ", " << y;
           }
         }
         for (int slice = 0; slice < g.Slices; ++slice)

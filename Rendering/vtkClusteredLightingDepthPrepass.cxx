@@ -516,7 +516,7 @@ bool GetTranslucentBox(vtkProp* prop, double box[6])
   {
     return false;
   }
-  // The actor's matrix now (a follower's follows the camera), corner by corner.
+  // The actor's matrix as it is now, corner by corner.
   vtkMatrix4x4* m = actor->GetMatrix();
   for (int a = 0; a < 3; ++a)
   {

@@ -542,7 +542,7 @@ bool GetTranslucentBox(vtkProp* prop, double box[6])
 }
 }
 
-bool vtkClusteredLightingDepthPrepass::ComputeTranslucentRects(const vtkRenderState* s,
+void vtkClusteredLightingDepthPrepass::ComputeTranslucentRects(const vtkRenderState* s,
   const glm::dmat4& wcvc, const glm::dmat4& vcdc, bool& translucent, std::vector<glm::dvec4>& rects)
 {
   translucent = false;
@@ -572,7 +572,6 @@ bool vtkClusteredLightingDepthPrepass::ComputeTranslucentRects(const vtkRenderSt
   {
     rects.clear();
   }
-  return bounded;
 }
 
 double vtkClusteredLightingDepthPrepass::ComputePixelSlack(const vtkRenderState* s)

@@ -153,10 +153,10 @@ public:
   /// mapper is VTK's polydata or composite polydata mapper and whose shader property holds
   /// no shader code or replacements keeps its fragments' positions inside that box; for
   /// any other translucent prop (impostor mappers, followers, ParaView's LOD actors,
-  /// assemblies, custom shaders), or a box reaching behind the camera, it returns false
-  /// with `rects` empty: translucent fragments may be anywhere. `translucent` tells
-  /// whether any visible prop has translucent geometry.
-  static bool ComputeTranslucentRects(const vtkRenderState* s, const glm::dmat4& wcvc,
+  /// assemblies, custom shaders), or a box reaching behind the camera, `rects` is left
+  /// empty: translucent fragments may be anywhere. `translucent` tells whether any
+  /// visible prop has translucent geometry.
+  static void ComputeTranslucentRects(const vtkRenderState* s, const glm::dmat4& wcvc,
     const glm::dmat4& vcdc, bool& translucent, std::vector<glm::dvec4>& rects);
 
   double GetMaximumCoincidentOffset() const { return this->MaxCoincidentOffset; }

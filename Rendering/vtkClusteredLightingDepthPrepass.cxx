@@ -491,12 +491,17 @@ double WidestLineOrPoint(vtkProp* prop)
 namespace
 {
 /// Whether the fragments of a translucent prop lie inside its mapper's bounds under its
-/// matrix, and that box in world coordinates.
+/// matrix, and that box in world coordinates. ParaView's vtkPVLODActor draws through an
+/// internal vtkOpenGLActor to which each render copies its matrix and shader property,
+/// with the mapper its GetMapper() returns (the full or the level-of-detail one, chosen
+/// per render): that mapper's bounds under its matrix hold what it draws.
 bool GetTranslucentBox(vtkProp* prop, double box[6])
 {
   auto* actor = vtkActor::SafeDownCast(prop);
   vtkMapper* mapper = actor ? actor->GetMapper() : nullptr;
-  if (!mapper || std::strcmp(actor->GetClassName(), "vtkOpenGLActor") != 0 ||
+  if (!mapper ||
+    (std::strcmp(actor->GetClassName(), "vtkOpenGLActor") != 0 &&
+      std::strcmp(actor->GetClassName(), "vtkPVLODActor") != 0) ||
     (std::strcmp(mapper->GetClassName(), "vtkOpenGLPolyDataMapper") != 0 &&
       std::strcmp(mapper->GetClassName(), "vtkCompositePolyDataMapper2") != 0))
   {

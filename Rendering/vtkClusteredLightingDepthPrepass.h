@@ -149,12 +149,13 @@ public:
   /// Where the fragments of the state's visible translucent props may be on screen
   /// (DepthBoundsOptions::TranslucentRects): the rectangle of each one's box under
   /// `wcvc`, `vcdc` (vtkClusteredLighting::ProjectBoxToViewport), the box being its
-  /// mapper's bounds under the actor's matrix. Only a plain actor (vtkOpenGLActor) whose
-  /// mapper is VTK's polydata or composite polydata mapper and whose shader property holds
-  /// no shader code or replacements keeps its fragments' positions inside that box; for
-  /// any other translucent prop (impostor mappers, followers, ParaView's LOD actors,
-  /// assemblies, custom shaders), or a box reaching behind the camera, `rects` is left
-  /// empty: translucent fragments may be anywhere. `translucent` tells whether any
+  /// mapper's bounds under the actor's matrix. Only a plain actor (vtkOpenGLActor, or
+  /// ParaView's vtkPVLODActor with the mapper it draws in this render) whose mapper is
+  /// VTK's polydata or composite polydata mapper and whose shader property holds no
+  /// shader code or replacements keeps its fragments' positions inside that box; for any
+  /// other translucent prop (impostor mappers, followers, VTK's LOD actors, assemblies,
+  /// custom shaders), or a box reaching behind the camera, `rects` is left empty:
+  /// translucent fragments may be anywhere. `translucent` tells whether any
   /// visible prop has translucent geometry.
   static void ComputeTranslucentRects(const vtkRenderState* s, const glm::dmat4& wcvc,
     const glm::dmat4& vcdc, bool& translucent, std::vector<glm::dvec4>& rects);

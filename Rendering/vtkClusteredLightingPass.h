@@ -474,7 +474,7 @@ public:
    * pixel centres, where they are shaded (vtkClusteredLightingSampleDepths); translucent
    * geometry widens the clusters of the tiles its props' boxes cover on screen (every
    * tile for props whose fragments may leave their box: impostor mappers, custom shader
-   * code, ParaView's LOD actors) to everything in front of the tile's deepest opaque
+   * code, VTK's LOD actors) to everything in front of the tile's deepest opaque
    * surface (in a multisampled framebuffer, to the far plane); a frame whose depths
    * cannot be used (opaque impostor mappers that write their own depth, an oblique
    * projection) falls back to whole clusters, with a warning once. Costs the prepass, a depth

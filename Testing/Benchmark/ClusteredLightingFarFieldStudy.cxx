@@ -13,20 +13,22 @@
 //   ClusteredLightingFarFieldStudy [--scene bunny|house|user|dense] [--always-on]
 //     [--lights N] [--samples S] [--cutoffs 1024,4096] [--nodes 32768] [--cells 2]
 //     [--grouping 0.05] [--hierarchy 0.02,0.1] [--bounds] [--copies] [--worst K]
-//     [--orders] [--blocks 255,2048]
+//     [--orders] [--blocks 255,2048] [--far-cutoffs]
 //
 // Rows: "cut at 1/c" (before the far field: every light cut at its cutoff radius); "far
 // field" (design 1, the product's core code: PlanFarField, ComputeFarFieldMoments, the
 // interpolated moments and clamped kernels) for each node budget, near radius in cells
-// and grouping, with its build time and sources summed per node, and with --bounds the
-// stated bound (ComputeFarFieldErrorBound) at every sample and channel against the actual
-// error, and with --copies the node sums' time in each copy of the build this processor
-// runs (portable, AVX2, AVX-512: ComputeFarFieldMomentsWith), side by side, best of 7
-// rounds that time each copy once, and with --worst K where the far field's error comes
-// from (PrintWorstSamples: the kernels' angular truncation against the grid's
-// interpolation, the image error with each removed, and the K worst samples taken
-// apart), and with --orders as well what more angular resolution would buy: the kernels
-// of orders 2 (the product's), 4, 6 and 8 applied to the exact moments at the point,
+// and grouping, at the first cutoff (with --far-cutoffs at each: a larger cutoff shortens
+// the near radii and hands more of each light to the far field), with its build time and
+// sources summed per node, and with --bounds the stated bound (ComputeFarFieldErrorBound)
+// at every sample and channel against the actual error, and the summary of it over probe
+// points that the pass reports and an error budget is held to (SummarizeFarFieldErrorBound), and
+// with --copies the node sums' time in each copy of the build this processor runs (portable, AVX2,
+// AVX-512: ComputeFarFieldMomentsWith), side by side, best of 7 rounds that time each copy once,
+// and with --worst K where the far field's error comes from (PrintWorstSamples: the kernels'
+// angular truncation against the grid's interpolation, the image error with each removed, and the K
+// worst samples taken apart), and with --orders as well what more angular resolution would buy: the
+// kernels of orders 2 (the product's), 4, 6 and 8 applied to the exact moments at the point,
 // clamped into the order-2 interval, with the grid's share as measured at order 2, and
 // each with the far specular exact; "hierarchy per point" (design 2: the light tree walked at each
 // point, groups taken by their aggregation bound, each shaded exactly; the cost is the lights and
@@ -535,6 +537,7 @@ int main(int argc, char* argv[])
   std::vector<double> blockTolerances;
   bool orders = false;
   bool bounds = false;
+  bool farCutoffs = false;
   bool copies = false;
   int worst = -1;
   auto parseList = [](const char* text, double (*f)(double))
@@ -603,6 +606,10 @@ int main(int argc, char* argv[])
     else if (a == "--bounds")
     {
       bounds = true;
+    }
+    else if (a == "--far-cutoffs")
+    {
+      farCutoffs = true;
     }
     else if (a == "--copies")
     {
@@ -746,139 +753,162 @@ int main(int argc, char* argv[])
   }
 
   // Design 1 (the product): near part exact, far field on the grid (PlanFarField,
-  // ComputeFarFieldMoments), at the first cutoff.
+  // ComputeFarFieldMoments), at the first cutoff (--far-cutoffs: at each).
   const PreparedLights base = PrepareLights(sources, LightPreparationOptions{ cutoffs[0], false });
-  for (double target : nodeTargets)
+  for (std::size_t ci = 0; ci < (farCutoffs ? cutoffs.size() : 1); ++ci)
   {
-    for (double cells : cellsPerRadius)
+    const PreparedLights atCutoff =
+      ci == 0 ? base : PrepareLights(sources, LightPreparationOptions{ cutoffs[ci], false });
+    for (double target : nodeTargets)
     {
-      for (double grouping : groupings)
+      for (double cells : cellsPerRadius)
       {
-        std::vector<PreparedLight> lights = base.Lights;
-        const FarFieldPlan plan = PlanFarField(lights, lo, hi,
-          FarFieldOptions{ true, cells, static_cast<std::int64_t>(target), grouping }, anchor);
-        const std::vector<double> radii = GetFarFieldNearRadii(lights);
-        const FarFieldGrid& grid = plan.Grid;
-        const auto t0 = std::chrono::steady_clock::now();
-        const FarFieldLightTree tree = BuildFarFieldLightTree(lights, radii);
-        std::vector<double> values(
-          static_cast<std::size_t>(grid.GetNumberOfNodes()) * FarFieldFloatsPerNode);
-        const std::array<int, 3> blocks = GetFarFieldBlocks(grid);
-        const std::int64_t slab = static_cast<std::int64_t>(blocks[0]) * blocks[1];
-        std::atomic<std::int64_t> pairs(0);
-        ParallelFor(static_cast<std::size_t>(blocks[2]),
-          [&](std::size_t k)
-          {
-            pairs += ComputeFarFieldMomentsForThisCPU(grid, lights, radii, tree, grouping,
-              static_cast<std::int64_t>(k) * slab, static_cast<std::int64_t>(k + 1) * slab, values);
-          });
-        const double ms =
-          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-        Errors e;
-        std::vector<glm::dvec3> approx(samples.size());
-        double near = 0.0, sumBound = 0.0, maxBound = 0.0, maxRatio = 0.0;
-        std::size_t violations = 0;
-        for (std::size_t i = 0; i < samples.size(); ++i)
+        for (double grouping : groupings)
         {
-          const Sample& smp = samples[i];
-          glm::dvec3 sum(0.0);
-          for (const PreparedLight& l : lights)
-          {
-            const glm::dvec3 v = l.PositionWC - smp.P;
-            const double d = glm::length(v);
-            if (d < l.Radius)
+          std::vector<PreparedLight> lights = atCutoff.Lights;
+          const FarFieldPlan plan = PlanFarField(lights, lo, hi,
+            FarFieldOptions{ true, cells, static_cast<std::int64_t>(target), grouping }, anchor);
+          const std::vector<double> radii = GetFarFieldNearRadii(lights);
+          const FarFieldGrid& grid = plan.Grid;
+          const auto t0 = std::chrono::steady_clock::now();
+          const FarFieldLightTree tree = BuildFarFieldLightTree(lights, radii);
+          std::vector<double> values(
+            static_cast<std::size_t>(grid.GetNumberOfNodes()) * FarFieldFloatsPerNode);
+          const std::array<int, 3> blocks = GetFarFieldBlocks(grid);
+          const std::int64_t slab = static_cast<std::int64_t>(blocks[0]) * blocks[1];
+          std::atomic<std::int64_t> pairs(0);
+          ParallelFor(static_cast<std::size_t>(blocks[2]),
+            [&](std::size_t k)
             {
-              const double w = l.FarField ? EvaluateSplitWindow(d / l.Radius) : 1.0;
-              sum += l.Color * EvaluateAttenuation(d, l.Attenuation) * w * ShadeValue(smp, v / d);
-              near += 1.0;
+              pairs += ComputeFarFieldMomentsForThisCPU(grid, lights, radii, tree, grouping,
+                static_cast<std::int64_t>(k) * slab, static_cast<std::int64_t>(k + 1) * slab,
+                values);
+            });
+          const double ms =
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
+              .count();
+          Errors e;
+          std::vector<glm::dvec3> approx(samples.size());
+          double near = 0.0, sumBound = 0.0, maxBound = 0.0, maxRatio = 0.0;
+          std::size_t violations = 0;
+          for (std::size_t i = 0; i < samples.size(); ++i)
+          {
+            const Sample& smp = samples[i];
+            glm::dvec3 sum(0.0);
+            for (const PreparedLight& l : lights)
+            {
+              const glm::dvec3 v = l.PositionWC - smp.P;
+              const double d = glm::length(v);
+              if (d < l.Radius)
+              {
+                const double w = l.FarField ? EvaluateSplitWindow(d / l.Radius) : 1.0;
+                sum += l.Color * EvaluateAttenuation(d, l.Attenuation) * w * ShadeValue(smp, v / d);
+                near += 1.0;
+              }
             }
-          }
-          if (plan.Active)
-          {
-            const auto m = InterpolateFarMoments(grid, values, smp.P);
-            const glm::dvec3 R = 2.0 * glm::dot(smp.N, smp.V) * smp.N - smp.V;
-            sum += EvaluateFarDiffuse(m, smp.N) * smp.Kd +
-              (smp.Ks > 0.0 ? EvaluateFarSpecular(m, R, smp.Power) * smp.Ks : glm::dvec3(0.0));
-            if (bounds)
+            if (plan.Active)
             {
-              // The stated bound per channel, against the actual (unrounded) error.
-              FarFieldShadingPoint sp;
-              sp.P = smp.P;
-              sp.N = smp.N;
-              sp.R = R;
-              sp.Kd = smp.Kd;
-              sp.Ks = glm::dvec3(smp.Ks);
-              sp.Power = smp.Power;
-              const glm::dvec3 b = ComputeFarFieldErrorBound(
-                sp, FarFieldBuildInputs{ &grid, &lights, &radii, &tree, grouping });
+              const auto m = InterpolateFarMoments(grid, values, smp.P);
+              const glm::dvec3 R = 2.0 * glm::dot(smp.N, smp.V) * smp.N - smp.V;
+              sum += EvaluateFarDiffuse(m, smp.N) * smp.Kd +
+                (smp.Ks > 0.0 ? EvaluateFarSpecular(m, R, smp.Power) * smp.Ks : glm::dvec3(0.0));
+              if (bounds)
+              {
+                // The stated bound per channel, against the actual (unrounded) error.
+                FarFieldShadingPoint sp;
+                sp.P = smp.P;
+                sp.N = smp.N;
+                sp.R = R;
+                sp.Kd = smp.Kd;
+                sp.Ks = glm::dvec3(smp.Ks);
+                sp.Power = smp.Power;
+                const glm::dvec3 b = ComputeFarFieldErrorBound(
+                  sp, FarFieldBuildInputs{ &grid, &lights, &radii, &tree, grouping });
+                for (int c = 0; c < 3; ++c)
+                {
+                  const double err = std::abs(sum[c] - exact[i][c]);
+                  violations += err > b[c] * (1.0 + 1e-9) + 1e-12 ? 1 : 0;
+                  maxRatio = std::max(maxRatio, b[c] > 0.0 ? err / b[c] : 0.0);
+                  sumBound += 255.0 * b[c];
+                  maxBound = std::max(maxBound, 255.0 * b[c]);
+                }
+              }
+            }
+            e.Add(exact[i], sum);
+            approx[i] = sum;
+          }
+          if (worst >= 0 && plan.Active)
+          {
+            PrintWorstSamples(samples, exact, approx, lights, radii, grid, values, worst, orders);
+          }
+          char name[160];
+          if (farCutoffs)
+          {
+            std::snprintf(name, sizeof(name),
+              "far field at 1/%g: %g nodes, h %.3g, r <= %g h, grouping %g", 1.0 / cutoffs[ci],
+              target, grid.Spacing, cells, grouping);
+          }
+          else
+          {
+            std::snprintf(name, sizeof(name), "far field: %g nodes, h %.3g, r <= %g h, grouping %g",
+              target, grid.Spacing, cells, grouping);
+          }
+          e.Print(name, near / samples.size(), grid.GetNumberOfNodes(), ms, "build ms");
+          std::printf("    sources per node %.1f",
+            static_cast<double>(pairs.load()) / std::max<std::int64_t>(grid.GetNumberOfNodes(), 1));
+          if (copies)
+          {
+            // The same sums (the tree is built) in each copy, taking turns, best of 7 rounds.
+            const FarFieldBuildCopy all[] = { FarFieldBuildCopy::Portable, FarFieldBuildCopy::AVX2,
+              FarFieldBuildCopy::AVX512 };
+            double best[3] = { 1e300, 1e300, 1e300 };
+            std::vector<double> scratch(values.size());
+            for (int round = 0; round < 7; ++round)
+            {
               for (int c = 0; c < 3; ++c)
               {
-                const double err = std::abs(sum[c] - exact[i][c]);
-                violations += err > b[c] * (1.0 + 1e-9) + 1e-12 ? 1 : 0;
-                maxRatio = std::max(maxRatio, b[c] > 0.0 ? err / b[c] : 0.0);
-                sumBound += 255.0 * b[c];
-                maxBound = std::max(maxBound, 255.0 * b[c]);
+                if (!CanRunFarFieldBuildCopy(all[c]))
+                {
+                  continue;
+                }
+                const auto c0 = std::chrono::steady_clock::now();
+                ParallelFor(static_cast<std::size_t>(blocks[2]),
+                  [&](std::size_t k)
+                  {
+                    ComputeFarFieldMomentsWith(all[c], grid, lights, radii, tree, grouping,
+                      static_cast<std::int64_t>(k) * slab, static_cast<std::int64_t>(k + 1) * slab,
+                      scratch);
+                  });
+                best[c] = std::min(best[c],
+                  std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - c0)
+                    .count());
               }
             }
-          }
-          e.Add(exact[i], sum);
-          approx[i] = sum;
-        }
-        if (worst >= 0 && plan.Active)
-        {
-          PrintWorstSamples(samples, exact, approx, lights, radii, grid, values, worst, orders);
-        }
-        char name[160];
-        std::snprintf(name, sizeof(name), "far field: %g nodes, h %.3g, r <= %g h, grouping %g",
-          target, grid.Spacing, cells, grouping);
-        e.Print(name, near / samples.size(), grid.GetNumberOfNodes(), ms, "build ms");
-        std::printf("    sources per node %.1f",
-          static_cast<double>(pairs.load()) / std::max<std::int64_t>(grid.GetNumberOfNodes(), 1));
-        if (copies)
-        {
-          // The same sums (the tree is built) in each copy, taking turns, best of 7 rounds.
-          const FarFieldBuildCopy all[] = { FarFieldBuildCopy::Portable, FarFieldBuildCopy::AVX2,
-            FarFieldBuildCopy::AVX512 };
-          double best[3] = { 1e300, 1e300, 1e300 };
-          std::vector<double> scratch(values.size());
-          for (int round = 0; round < 7; ++round)
-          {
+            std::printf("; node sums ms (best of 7, %u threads):",
+              std::max(1u, std::thread::hardware_concurrency()));
             for (int c = 0; c < 3; ++c)
             {
-              if (!CanRunFarFieldBuildCopy(all[c]))
+              if (CanRunFarFieldBuildCopy(all[c]))
               {
-                continue;
+                std::printf(" %s %.2f", GetFarFieldBuildCopyName(all[c]), best[c]);
               }
-              const auto c0 = std::chrono::steady_clock::now();
-              ParallelFor(static_cast<std::size_t>(blocks[2]),
-                [&](std::size_t k)
-                {
-                  ComputeFarFieldMomentsWith(all[c], grid, lights, radii, tree, grouping,
-                    static_cast<std::int64_t>(k) * slab, static_cast<std::int64_t>(k + 1) * slab,
-                    scratch);
-                });
-              best[c] = std::min(best[c],
-                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - c0)
-                  .count());
             }
           }
-          std::printf("; node sums ms (best of 7, %u threads):",
-            std::max(1u, std::thread::hardware_concurrency()));
-          for (int c = 0; c < 3; ++c)
+          if (bounds)
           {
-            if (CanRunFarFieldBuildCopy(all[c]))
+            std::printf("; bound per point and channel: mean %.3f, max %.3f steps; error / bound "
+                        "<= %.3f; %zu above the bound",
+              sumBound / (3.0 * samples.size()), maxBound, maxRatio, violations);
+            if (plan.Active)
             {
-              std::printf(" %s %.2f", GetFarFieldBuildCopyName(all[c]), best[c]);
+              const FarFieldBoundSummary summary = SummarizeFarFieldErrorBound(
+                FarFieldBuildInputs{ &grid, &lights, &radii, &tree, grouping });
+              std::printf(
+                "; the pass's summary over %d probes: %.3f steps", summary.Probes, summary.Max);
             }
           }
+          std::printf("\n");
         }
-        if (bounds)
-        {
-          std::printf("; bound per point and channel: mean %.3f, max %.3f steps; error / bound "
-                      "<= %.3f; %zu above the bound",
-            sumBound / (3.0 * samples.size()), maxBound, maxRatio, violations);
-        }
-        std::printf("\n");
       }
     }
   }

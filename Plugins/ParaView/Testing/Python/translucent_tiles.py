@@ -8,8 +8,8 @@ representation widened every tile of the view. Now its box (the bounds of the ma
 draws in this render, full or level of detail, under its matrix) is projected to the
 screen and only the tiles near that rectangle stay wide.
 
-Scene: an opaque floor and body, a small glass sphere (opacity 0.4, depth peeling) near
-one corner of the view, 576 clustered lights 3 units over the floor (radius 4, windowed falloff),
+Scene: an opaque floor and body, a small glass sphere (opacity 0.4, depth peeling; moved
+by its display's Position) near one corner of the view, 576 clustered lights 3 units over the floor (radius 4, windowed falloff),
 the depth prepass in every frame (Automatic Depth Prepass off).
 
 Checks, on every rank count (the counts are rank 0's, over its own pieces):
@@ -38,7 +38,9 @@ t.setup(__doc__)
 floor = Plane(Origin=[-20.0, -20.0, 0.0], Point1=[20.0, -20.0, 0.0], Point2=[-20.0, 20.0, 0.0],
               XResolution=40, YResolution=40)
 body = Sphere(Radius=4.0, Center=[0.0, 0.0, 4.0], ThetaResolution=64, PhiResolution=32)
-glass = Sphere(Radius=2.5, Center=[-8.0, -9.0, 3.0], ThetaResolution=48, PhiResolution=24)
+# The glass's source is 2 units to the left of where its display's Position puts it: its
+# box must be taken under the actor's matrix.
+glass = Sphere(Radius=2.5, Center=[-10.0, -9.0, 3.0], ThetaResolution=48, PhiResolution=24)
 grid = Plane(Origin=[-18.0, -18.0, 3.0], Point1=[18.0, -18.0, 3.0], Point2=[-18.0, 18.0, 3.0],
              XResolution=24, YResolution=24)
 
@@ -61,6 +63,7 @@ glass_display = Show(glass, view)
 glass_display.ColorArrayName = ["POINTS", ""]
 glass_display.DiffuseColor = [0.9, 0.5, 0.3]
 glass_display.Opacity = 0.4
+glass_display.Position = [2.0, 0.0, 0.0]
 
 lights = Show(CellCenters(Input=grid), view)
 lights.Representation = "Clustered Lights"

@@ -421,6 +421,7 @@ void vtkClusteredLightingAssigner::PrepareLights(const vtkClusteredLightingAssig
   auto nameOf = [&lights](std::size_t i) { return lights.NameOf(i); };
   LightPreparationOptions options = inputs.Preparation;
   double farBudget = 0.0; // the far field's share of the error budget (fraction)
+  bool loosen = false;    // only split lights spend it: it may loosen their cutoff
   if (inputs.ErrorBudget > 0.0)
   {
     // Validate once, share the budget between the culled lights' tails and the far field
@@ -434,12 +435,26 @@ void vtkClusteredLightingAssigner::PrepareLights(const vtkClusteredLightingAssig
     options.Cutoff = vtkClusteredLighting::ChooseBudgetCutoff(
       valid.Lights, shares.CutTails, inputs.FarField.Enabled, options.Cutoff, inputs.Windowed);
     farBudget = shares.FarField;
+    loosen = farBudget > 0.0 &&
+      std::all_of(valid.Lights.begin(), valid.Lights.end(), &vtkClusteredLighting::IsFarFieldLight);
+    // The cutoff the last choice took, while it stands (the same preparation key; the
+    // numbers of lights are checked after preparing, in ChooseFarFieldOptions).
+    if (loosen && this->HaveBudgetChoice && !(this->BudgetChoiceKey != this->LastPreparation))
+    {
+      options.Cutoff = this->BudgetChoice.Cutoff;
+    }
+  }
+  this->Prepared = vtkClusteredLighting::PrepareLights(lights.Sources, options, nameOf);
+  // Near radii and the far field's grid (caps the culling radii of far-field lights); a
+  // new budget choice may take another cutoff for the split lights, and prepare again.
+  const vtkClusteredLighting::FarFieldOptions farOptions =
+    this->ChooseFarFieldOptions(inputs, farBudget, loosen, options);
+  if (loosen && this->HaveBudgetChoice && this->BudgetChoice.Cutoff != options.Cutoff)
+  {
+    options.Cutoff = this->BudgetChoice.Cutoff;
+    this->Prepared = vtkClusteredLighting::PrepareLights(lights.Sources, options, nameOf);
   }
   this->EffectiveCutoff = options.Cutoff;
-  this->Prepared = vtkClusteredLighting::PrepareLights(lights.Sources, options, nameOf);
-  // Near radii and the far field's grid (caps the culling radii of far-field lights).
-  const vtkClusteredLighting::FarFieldOptions farOptions =
-    this->ChooseFarFieldOptions(inputs, farBudget);
   this->FarFieldPlan = PlanFarField(
     this->Prepared.Lights, this->RegionLo, this->RegionHi, farOptions, this->RegionAnchor);
   this->Result.FarFieldNodesTarget = this->FarFieldPlan.Active ? farOptions.TargetNodes : 0;
@@ -466,14 +481,16 @@ void vtkClusteredLightingAssigner::PrepareLights(const vtkClusteredLightingAssig
 
 //------------------------------------------------------------------------------
 // The far field's options for this preparation: the pass's, with the resolution an error
-// budget chooses (vtkClusteredLightingFarFieldBudget.h). The choice is made again only
-// when what it depends on changes (the preparation key: budget, options, region; the
-// number of lights and of split lights), not when lights move or change brightness
-// (the budget was met when chosen; ComputeFarFieldErrorBound gives the bound now): it
-// summarizes the bound at up to 7 resolutions (0.1 to 0.25 s each at 4,096 lights on 2
-// threads).
+// budget chooses, and the split lights' cutoff when `loosen`
+// (vtkClusteredLightingFarFieldBudget.h; the caller prepares again at a new cutoff). The
+// choice is made again only when what it depends on changes (the preparation key:
+// budget, options, region; the number of lights and of split lights), not when lights
+// move or change brightness (the budget was met when chosen; ComputeFarFieldErrorBound
+// gives the bound now): it summarizes the bound at up to 7 resolutions per cutoff tried
+// (0.1 to 0.25 s each at 4,096 lights on 2 threads).
 vtkClusteredLighting::FarFieldOptions vtkClusteredLightingAssigner::ChooseFarFieldOptions(
-  const vtkClusteredLightingAssignerInputs& inputs, double budget)
+  const vtkClusteredLightingAssignerInputs& inputs, double budget, bool loosen,
+  const vtkClusteredLighting::LightPreparationOptions& preparation)
 {
   vtkClusteredLighting::FarFieldOptions options = inputs.FarField;
   vtkClusteredLightingAssignment& r = this->Result;
@@ -489,21 +506,38 @@ vtkClusteredLighting::FarFieldOptions vtkClusteredLightingAssigner::ChooseFarFie
   if (!this->HaveBudgetChoice || this->BudgetChoiceKey != this->LastPreparation ||
     this->BudgetChoiceLights != lights.size() || this->BudgetChoiceSplit != split)
   {
-    const bool warned = this->HaveBudgetChoice && !this->BudgetChoice.Met &&
+    const bool warned = this->HaveBudgetChoice && !this->BudgetChoice.Resolution.Met &&
       this->BudgetChoiceKey.ErrorBudget == this->LastPreparation.ErrorBudget;
-    this->BudgetChoice = vtkClusteredLighting::ChooseFarFieldResolution(lights, this->RegionLo,
-      this->RegionHi, options, this->RegionAnchor, 255.0 * budget, &SummarizeOnThreads);
+    // The lights as prepared at the pass's cutoff (the budget's starting point), or at a
+    // looser one.
+    const vtkClusteredLightingLightCollection& collection = *inputs.Lights;
+    auto nameOf = [&collection](std::size_t i) { return collection.NameOf(i); };
+    const double userCutoff = inputs.Preparation.Cutoff;
+    auto prepare = [&](double cutoff) -> std::vector<PreparedLight>
+    {
+      if (cutoff == preparation.Cutoff)
+      {
+        return lights;
+      }
+      vtkClusteredLighting::LightPreparationOptions at = preparation;
+      at.Cutoff = cutoff;
+      return vtkClusteredLighting::PrepareLights(collection.Sources, at, nameOf).Lights;
+    };
+    this->BudgetChoice = vtkClusteredLighting::ChooseFarFieldCutoffAndResolution(prepare,
+      loosen ? userCutoff : preparation.Cutoff, loosen, this->RegionLo, this->RegionHi, options,
+      this->RegionAnchor, 255.0 * budget, &SummarizeOnThreads);
     this->HaveBudgetChoice = true;
     this->BudgetChoiceKey = this->LastPreparation;
     this->BudgetChoiceLights = lights.size();
     this->BudgetChoiceSplit = split;
     r.FarFieldResolutionChosen = true;
-    if (!this->BudgetChoice.Met && !warned)
+    if (!this->BudgetChoice.Resolution.Met && !warned)
     {
       std::ostringstream os;
       os << "ErrorBudgetInSteps " << 255.0 * inputs.ErrorBudget << ": the far field's stated bound "
-         << "is " << this->BudgetChoice.Bound << " steps (its largest value over probe points) "
-         << "at its best resolution (" << this->BudgetChoice.Nodes << " nodes), above its share "
+         << "is " << this->BudgetChoice.Resolution.Bound
+         << " steps (its largest value over probe points) at its best resolution ("
+         << this->BudgetChoice.Resolution.Nodes << " nodes), above its share "
          << "of the budget (" << 255.0 * budget << " steps); no resolution tried ("
          << vtkClusteredLighting::FarFieldBudgetCoarsestNodes << " to "
          << vtkClusteredLighting::FarFieldBudgetFinestNodes << " nodes) gives less, so that "
@@ -513,8 +547,8 @@ vtkClusteredLighting::FarFieldOptions vtkClusteredLightingAssigner::ChooseFarFie
       r.NewWarnings.push_back(os.str());
     }
   }
-  r.FarFieldBudgetChoice = this->BudgetChoice;
-  options.TargetNodes = this->BudgetChoice.Nodes;
+  r.FarFieldBudgetChoice = this->BudgetChoice.Resolution;
+  options.TargetNodes = this->BudgetChoice.Resolution.Nodes;
   return options;
 }
 

@@ -291,7 +291,8 @@ private:
   void OnWindowDeleted();
   void PrepareLights(const vtkClusteredLightingAssignerInputs& inputs);
   vtkClusteredLighting::FarFieldOptions ChooseFarFieldOptions(
-    const vtkClusteredLightingAssignerInputs& inputs, double budget);
+    const vtkClusteredLightingAssignerInputs& inputs, double budget, bool loosen,
+    const vtkClusteredLighting::LightPreparationOptions& preparation);
   static vtkClusteredLighting::FarFieldBoundSummary SummarizeOnThreads(
     const vtkClusteredLighting::FarFieldBuildInputs& in);
   void UpdateRegion(const vtkClusteredLightingAssignerInputs& inputs);
@@ -312,10 +313,11 @@ private:
   unsigned long long SourceMTime = 0;
   PreparationKey LastPreparation;
   vtkClusteredLighting::PreparedLights Prepared;
-  /// The far field's resolution chosen for the error budget, and what it was chosen for:
-  /// chosen again when the preparation key or the number of (split) lights changes, kept
-  /// while lights move or change brightness (ChooseFarFieldOptions).
-  vtkClusteredLighting::FarFieldResolutionChoice BudgetChoice;
+  /// The split lights' cutoff and the far field's resolution chosen for the error budget,
+  /// and what they were chosen for: chosen again when the preparation key or the number
+  /// of (split) lights changes, kept while lights move or change brightness
+  /// (ChooseFarFieldOptions).
+  vtkClusteredLighting::FarFieldBudgetChoice BudgetChoice;
   PreparationKey BudgetChoiceKey;
   std::size_t BudgetChoiceLights = 0, BudgetChoiceSplit = 0;
   bool HaveBudgetChoice = false;

@@ -194,14 +194,19 @@ public:
    * summed cut tails stay within the budget at sample points spread over the lights'
    * bounding box and at the lights themselves (a conservative bound: N.L is taken as 1).
    * With FarField on, the lights it splits have no cut tail (their far parts are added
-   * back), so only the culled lights (spot lights, explicit radii) choose the cutoff;
-   * with none, ContributionCutoff is kept. The far field's error is held to the budget by
-   * its resolution instead: the pass ignores FarFieldResolution and takes the coarsest
-   * of 4,096 to 262,144 nodes (powers of two) whose stated bound, summarized over probe
-   * points as ComputeFarFieldErrorBound reports it, is within the budget, among those
-   * that evaluate no more near lights than the finest (a coarse grid can force larger
-   * near radii). When both kinds of lights are present, the cut tails and the far field
-   * each get half of the budget. The choice is made when the budget, the far field's
+   * back), so only the culled lights (spot lights, explicit radii) choose the cutoff that
+   * way. The far field's error is held to the budget by its resolution instead: the pass
+   * ignores FarFieldResolution and takes the coarsest of 4,096 to 262,144 nodes (powers
+   * of two) whose stated bound, summarized over probe points as ComputeFarFieldErrorBound
+   * reports it, is within the budget, among those that evaluate no more near lights than
+   * the finest (a coarse grid can force larger near radii). When both kinds of lights are
+   * present, the cut tails and the far field each get half of the budget. When only split
+   * lights are present the budget is the far field's alone, and it may loosen their cutoff
+   * too: from ContributionCutoff by factors of 4 up to 1/16, each step taken while a grid
+   * no finer than FarFieldResolution meets the budget and it evaluates fewer near lights,
+   * the search ending at the first step no such grid meets (shorter near radii, more of
+   * each light in the far field: on the benchmark's bunny 4 steps take 1/256 and 16 steps
+   * 1/64, docs/far-field.md). The choice is made when the budget, the far field's
    * options or region, or the number of lights change (0.1 to 0.25 s per resolution
    * tried at 4,096 lights on 2 threads), not when lights move or change brightness (the
    * budget was met when chosen; ComputeFarFieldErrorBound gives the bound now). When no

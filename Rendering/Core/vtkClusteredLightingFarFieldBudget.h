@@ -30,12 +30,29 @@
  * warns): what remains is the order-2 moments' own uncertainty, which the resolution does
  * not move (at 65,536 lights on the bunny, 8.1 steps at 32,768 and 262,144 nodes alike).
  *
+ * The cutoff of split lights (ChooseFarFieldCutoffAndResolution). A larger cutoff shortens
+ * the near radii the cutoff sets (not those the near field's budget cuts) and hands the
+ * rest of each light to the far field, whose bound grows with it: on the benchmark's bunny
+ * with 4,096 lights 1/256 takes 0.73 near lights per point instead of 4.84 at 1/1024, at
+ * 2.96 steps (4,096 nodes) instead of 1.24 (the CPU study), and a budget of 4 steps that
+ * takes it renders in 0.85 times the time of 1 step, at max 1 step. When only
+ * split lights spend the budget (no cut tails share it), the cutoff is loosened from the
+ * pass's ContributionCutoff by factors of FarFieldBudgetCutoffStep up to
+ * FarFieldBudgetLoosestCutoff, each step taken while some resolution meets the budget and
+ * stopping at the first that none meets; a step is kept only when it evaluates fewer near
+ * lights per point (by more than FarFieldBudgetNearTolerance) than the choice so far.
+ * Loosened cutoffs use grids no finer than FarFieldOptions::TargetNodes (the pass's
+ * FarFieldResolution): a loose cutoff that only a finer grid meets would make every frame
+ * of moving lights rebuild that grid (262,144 nodes: 131 to 206 ms on llvmpipe, against
+ * 20 to 47 at the default 32,768), which the near field's rule does not see.
+ *
  * The summary is not a supremum over every pixel: a pixel's bound depends on its position,
  * normal and material (the GL tests check each pixel against it). It is what the pass
  * reports (ComputeFarFieldErrorBound) and the budget is held to.
  *
  * Cost: one plan per resolution (milliseconds), then a tree and a summary per resolution
- * tried (0.1 to 0.25 s each at 4,096 lights on 2 threads, about 0.7 s at 65,536). The pass
+ * tried (0.1 to 0.25 s each at 4,096 lights on 2 threads, about 0.7 s at 65,536), for each
+ * cutoff tried (a loosened one tries at most the resolutions up to TargetNodes). The pass
  * chooses when the budget, the far field's options, its region or the number of lights
  * change, not when lights move or change brightness: the budget is met when the choice
  * is made, and the pass's ComputeFarFieldErrorBound gives the bound of the current build.
@@ -87,13 +104,23 @@ constexpr std::int64_t FarFieldBudgetFinestNodes = 262144;
 /// finest's) by more than this fraction (the frame would pay for the cheaper build).
 constexpr double FarFieldBudgetNearTolerance = 0.05;
 
-/// The resolutions an error budget chooses from, coarsest first.
-inline std::vector<std::int64_t> GetFarFieldBudgetResolutions()
+/// The cutoffs an error budget may loosen split lights to: the pass's, then this factor
+/// larger at each step, up to FarFieldBudgetLoosestCutoff.
+constexpr double FarFieldBudgetCutoffStep = 4.0;
+constexpr double FarFieldBudgetLoosestCutoff = 1.0 / 16.0;
+
+/// The resolutions an error budget chooses from, coarsest first, none finer than `finest`
+/// (but at least the coarsest).
+inline std::vector<std::int64_t> GetFarFieldBudgetResolutions(
+  std::int64_t finest = FarFieldBudgetFinestNodes)
 {
   std::vector<std::int64_t> nodes;
   for (std::int64_t n = FarFieldBudgetCoarsestNodes; n <= FarFieldBudgetFinestNodes; n *= 2)
   {
-    nodes.push_back(n);
+    if (n <= finest || nodes.empty())
+    {
+      nodes.push_back(n);
+    }
   }
   return nodes;
 }
@@ -117,14 +144,15 @@ struct FarFieldResolutionChoice
  * `summarize(const FarFieldBuildInputs&)` returns the FarFieldBoundSummary of a build
  * (SummarizeFarFieldErrorBound, or the same over threads). Without a far field at any
  * resolution (disabled, no split light, or every light fits whole) it returns the
- * coarsest, bound 0, met.
+ * coarsest, bound 0, met, with no summary. `finestNodes` limits the resolutions tried
+ * (GetFarFieldBudgetResolutions).
  */
 template <typename Summarize>
 FarFieldResolutionChoice ChooseFarFieldResolution(const std::vector<PreparedLight>& lights,
   const glm::dvec3& lo, const glm::dvec3& hi, FarFieldOptions options, const glm::dvec3& anchor,
-  double budgetInSteps, Summarize&& summarize)
+  double budgetInSteps, Summarize&& summarize, std::int64_t finestNodes = FarFieldBudgetFinestNodes)
 {
-  const std::vector<std::int64_t> ladder = GetFarFieldBudgetResolutions();
+  const std::vector<std::int64_t> ladder = GetFarFieldBudgetResolutions(finestNodes);
   FarFieldResolutionChoice choice;
   choice.Nodes = ladder.front();
   // The near field's cost at each resolution (plans only).
@@ -167,6 +195,60 @@ FarFieldResolutionChoice ChooseFarFieldResolution(const std::vector<PreparedLigh
     {
       choice.Met = true;
       return choice;
+    }
+  }
+  return choice;
+}
+
+/// What ChooseFarFieldCutoffAndResolution chose.
+struct FarFieldBudgetChoice
+{
+  double Cutoff = 0.0; ///< the cutoff split lights take (ContributionCutoff or larger)
+  FarFieldResolutionChoice Resolution; ///< the resolution at that cutoff
+  int CutoffsTried = 0;                ///< cutoffs whose resolutions were tried
+};
+
+/**
+ * The error budget's choice of the split lights' cutoff and the far field's resolution
+ * (see the file description): at `cutoff` (the pass's ContributionCutoff)
+ * ChooseFarFieldResolution over every resolution; then, when `loosen` (only split lights
+ * spend the budget) and that choice meets the budget with a far field, cutoffs larger by
+ * FarFieldBudgetCutoffStep up to FarFieldBudgetLoosestCutoff, each with the resolutions up
+ * to `options.TargetNodes`, until one meets the budget at none of them. A looser cutoff is
+ * taken when it meets the budget and its near lights per point are below the choice so
+ * far's by more than FarFieldBudgetNearTolerance (a cutoff that buys no time is passed
+ * over, not taken). `prepare(double cutoff)` returns the prepared lights at a cutoff
+ * (before PlanFarField); `summarize` as for ChooseFarFieldResolution.
+ */
+template <typename Prepare, typename Summarize>
+FarFieldBudgetChoice ChooseFarFieldCutoffAndResolution(Prepare&& prepare, double cutoff,
+  bool loosen, const glm::dvec3& lo, const glm::dvec3& hi, const FarFieldOptions& options,
+  const glm::dvec3& anchor, double budgetInSteps, Summarize&& summarize)
+{
+  FarFieldBudgetChoice choice;
+  choice.Cutoff = cutoff;
+  choice.Resolution =
+    ChooseFarFieldResolution(prepare(cutoff), lo, hi, options, anchor, budgetInSteps, summarize);
+  choice.CutoffsTried = 1;
+  if (!loosen || !choice.Resolution.Met || choice.Resolution.Summaries == 0)
+  {
+    return choice;
+  }
+  for (double c = cutoff * FarFieldBudgetCutoffStep;
+       c <= FarFieldBudgetLoosestCutoff * (1.0 + 1e-12); c *= FarFieldBudgetCutoffStep)
+  {
+    const FarFieldResolutionChoice r = ChooseFarFieldResolution(
+      prepare(c), lo, hi, options, anchor, budgetInSteps, summarize, options.TargetNodes);
+    ++choice.CutoffsTried;
+    if (!r.Met)
+    {
+      break;
+    }
+    if (r.NearLightsPerPoint <
+      choice.Resolution.NearLightsPerPoint * (1.0 - FarFieldBudgetNearTolerance))
+    {
+      choice.Cutoff = c;
+      choice.Resolution = r;
     }
   }
   return choice;

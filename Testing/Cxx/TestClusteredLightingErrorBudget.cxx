@@ -3,11 +3,14 @@
 // vtkClusteredLightingFarFieldBudget.h). Lights as users write them (inverse-square,
 // attenuation (1, 0, 8), no radius) over the test scene. Checks that
 //  - without a budget the far field uses FarFieldResolution and no choice is made;
-//  - a loose budget (16 steps) takes a grid no finer than the default, its bound as the
-//    pass reports it (ComputeFarFieldErrorBound) is within the budget, and the image is
-//    within the stated bound of brute force at every pixel, with zero false negatives
-//    (CheckClusteredFrame): the coarse far field is shaded right;
-//  - moving a light keeps the choice (no new choice); adding one makes a new one;
+//  - a loose budget (16 steps) takes a grid no finer than the default and, only split
+//    lights spending it, a looser cutoff for them than ContributionCutoff (shorter near
+//    radii, more of each light in the far field), its bound as the pass reports it
+//    (ComputeFarFieldErrorBound) is within the budget, and the image is within the stated
+//    bound of brute force at every pixel, with zero false negatives (CheckClusteredFrame):
+//    the coarse far field is shaded right;
+//  - moving a light keeps the choice, cutoff included (no new choice); adding one makes a
+//    new one;
 //  - a tight budget takes a finer grid than the loose one and meets it, or says it does
 //    not; a budget below every resolution's bound warns once, names the option, is
 //    reported by GetFarFieldErrorBudgetMet and PrintSelf, and its frame is still within
@@ -38,12 +41,12 @@ void Check(bool ok, const char* what)
 
 void Report(vtkClusteredLightingPass* pass, const char* what)
 {
-  std::printf("%s: budget %g steps, far field %d nodes (%dx%dx%d), bound %.4f steps, %s, "
-              "%d choices\n",
-    what, pass->GetErrorBudgetInSteps(), pass->GetFarFieldResolutionInUse(),
-    pass->GetFarFieldDimensions()[0], pass->GetFarFieldDimensions()[1],
-    pass->GetFarFieldDimensions()[2], pass->ComputeFarFieldErrorBound(),
-    pass->GetFarFieldErrorBudgetMet() ? "met" : "not met",
+  std::printf("%s: budget %g steps, cutoff %g, far field %d nodes (%dx%dx%d), bound %.4f steps, "
+              "%s, %d choices\n",
+    what, pass->GetErrorBudgetInSteps(), pass->GetEffectiveCutoff(),
+    pass->GetFarFieldResolutionInUse(), pass->GetFarFieldDimensions()[0],
+    pass->GetFarFieldDimensions()[1], pass->GetFarFieldDimensions()[2],
+    pass->ComputeFarFieldErrorBound(), pass->GetFarFieldErrorBudgetMet() ? "met" : "not met",
     pass->GetNumberOfFarFieldResolutionChoices());
 }
 }
@@ -78,6 +81,9 @@ int TestClusteredLightingErrorBudget(int, char*[])
   const int loose = pass->GetFarFieldResolutionInUse();
   Check(pass->GetNumberOfFarFieldResolutionChoices() == 1, "16 steps: one choice");
   Check(loose > 0 && loose <= pass->GetFarFieldResolution(), "16 steps: no finer than the default");
+  const double looseCutoff = pass->GetEffectiveCutoff();
+  Check(looseCutoff > pass->GetContributionCutoff(),
+    "16 steps: a looser cutoff for the split lights than ContributionCutoff");
   Check(pass->GetFarFieldErrorBudgetMet() && pass->ComputeFarFieldErrorBound() <= 16.0,
     "16 steps: met, the reported bound within it");
   Check(ClusteredLightingTest::CheckClusteredFrame(pass, rw, ren, 1.4, "16 steps") == 0,
@@ -89,8 +95,8 @@ int TestClusteredLightingErrorBudget(int, char*[])
   lights->SetPosition(6, -1.0, 0.5, 0.8);
   rw->Render();
   Check(pass->GetNumberOfFarFieldResolutionChoices() == 1 &&
-      pass->GetFarFieldResolutionInUse() == loose,
-    "moved lights: the same choice, not made again");
+      pass->GetFarFieldResolutionInUse() == loose && pass->GetEffectiveCutoff() == looseCutoff,
+    "moved lights: the same choice (resolution and cutoff), not made again");
   auto addUserLight = [&lights](double x, double y, double z)
   {
     const vtkIdType i = lights->AddLight(x, y, z);
@@ -140,8 +146,9 @@ int TestClusteredLightingErrorBudget(int, char*[])
   pass->SetErrorBudgetInSteps(0.0);
   rw->Render();
   Check(pass->GetFarFieldResolutionInUse() == pass->GetFarFieldResolution() &&
-      pass->GetFarFieldErrorBudgetMet(),
-    "budget 0: FarFieldResolution again");
+      pass->GetFarFieldErrorBudgetMet() &&
+      pass->GetEffectiveCutoff() == pass->GetContributionCutoff(),
+    "budget 0: FarFieldResolution and ContributionCutoff again");
 
   // 7. Spot lights (culled, never split) among the split lights: their cutoff is chosen for
   // half of the budget, the same as for those spot lights alone at half the budget.

@@ -4,7 +4,9 @@
 // the resolution chosen is the coarsest whose stated bound (summarized independently
 // here, build by build) meets the budget, never one whose near field costs more than the
 // finest one's; an unreachable budget takes the smallest bound and says it is not met;
-// lights that need no far field need no choice.
+// lights that need no far field need no choice; with only split lights the budget
+// loosens their cutoff while a grid no finer than the option's meets it, and only where
+// that evaluates fewer near lights.
 #include "vtkClusteredLightingFarFieldBudget.h"
 
 #include <gtest/gtest.h>
@@ -22,9 +24,9 @@ namespace
 {
 
 /// n inverse-square lights without radius (as users write them), uniform in [lo, hi],
-/// white at `intensity`, attenuation (1, 0, quadratic).
-std::vector<PreparedLight> MakeUniformLights(
-  int n, const glm::dvec3& lo, const glm::dvec3& hi, double intensity, double quadratic)
+/// white at `intensity`, attenuation (1, 0, quadratic), prepared at `cutoff`.
+std::vector<PreparedLight> MakeUniformLights(int n, const glm::dvec3& lo, const glm::dvec3& hi,
+  double intensity, double quadratic, double cutoff = 1.0 / 1024.0)
 {
   std::vector<LightSource> sources(static_cast<std::size_t>(n));
   std::mt19937 rng(5);
@@ -36,8 +38,30 @@ std::vector<PreparedLight> MakeUniformLights(
     s.Intensity = intensity;
     s.Attenuation = glm::dvec3(1.0, 0.0, quadratic);
   }
-  return PrepareLights(sources, LightPreparationOptions{ 1.0 / 1024.0, false }).Lights;
+  return PrepareLights(sources, LightPreparationOptions{ cutoff, false }).Lights;
 }
+
+/// The serial summary, as ChooseFarFieldResolution's own overload takes it.
+FarFieldBoundSummary Summarize(const FarFieldBuildInputs& in)
+{
+  return SummarizeFarFieldErrorBound(in);
+}
+
+/// Faint lights whose near radii the cutoff sets (not the near field's budget): 600 of
+/// intensity 0.05, attenuation (1, 0, 8), in a 10 x 4 x 10 box, prepared at any cutoff.
+struct FaintScene
+{
+  glm::dvec3 Lo{ -5.0, 0.0, -5.0 }, Hi{ 5.0, 4.0, 5.0 };
+  std::vector<PreparedLight> At(double cutoff) const
+  {
+    return MakeUniformLights(600, this->Lo, this->Hi, 0.05, 8.0, cutoff);
+  }
+  FarFieldBudgetChoice Choose(double budget, bool loosen, const FarFieldOptions& options) const
+  {
+    return ChooseFarFieldCutoffAndResolution([this](double c) { return this->At(c); }, 1.0 / 1024.0,
+      loosen, this->Lo, this->Hi, options, this->Lo, budget, &Summarize);
+  }
+};
 
 /// What one resolution gives, computed here from scratch: its plan's near lights per point
 /// and its bound's summary (the core's serial SummarizeFarFieldErrorBound).
@@ -228,4 +252,89 @@ TEST(FarFieldBudget, LightsThatNeedNoFarFieldNeedNoChoice)
   c = ChooseFarFieldResolution(Scene().Lights, lo, hi, off, lo, 0.1);
   EXPECT_TRUE(c.Met);
   EXPECT_EQ(c.Summaries, 0);
+}
+
+TEST(FarFieldBudget, LoosensTheSplitLightsCutoffWhileAGridNoFinerThanTheOptionMeetsIt)
+{
+  const FaintScene scene;
+  FarFieldOptions options;
+  options.TargetNodes = 8192; // loosened cutoffs try 4,096 and 8,192 nodes only
+  const double user = 1.0 / 1024.0;
+  const FarFieldResolutionChoice atUser = ChooseFarFieldResolution(
+    scene.At(user), scene.Lo, scene.Hi, options, scene.Lo, 1e9, &Summarize);
+  ASSERT_TRUE(atUser.Met);
+  ASSERT_GT(atUser.Summaries, 0) << "the scene must have a far field";
+
+  // A budget every cutoff meets: the loosest step that still cuts near lights.
+  FarFieldBudgetChoice c = scene.Choose(1e9, true, options);
+  std::printf("any budget: cutoff 1/%g, %lld nodes, bound %.3f steps, near lights per point "
+              "%.3f (%.3f at 1/1024), %d cutoffs tried\n",
+    1.0 / c.Cutoff, static_cast<long long>(c.Resolution.Nodes), c.Resolution.Bound,
+    c.Resolution.NearLightsPerPoint, atUser.NearLightsPerPoint, c.CutoffsTried);
+  EXPECT_GT(c.Cutoff, user);
+  EXPECT_LE(c.Cutoff, FarFieldBudgetLoosestCutoff);
+  EXPECT_EQ(c.CutoffsTried, 4) << "1/1024, 1/256, 1/64, 1/16: none fails";
+  EXPECT_LE(c.Resolution.Nodes, options.TargetNodes);
+  EXPECT_LT(c.Resolution.NearLightsPerPoint,
+    (1.0 - FarFieldBudgetNearTolerance) * atUser.NearLightsPerPoint);
+
+  // The bound of each step's choice (grids up to 8,192 nodes), computed here.
+  std::vector<double> cutoffs, bounds, near;
+  for (double cutoff = user; cutoff <= FarFieldBudgetLoosestCutoff * 1.000001; cutoff *= 4.0)
+  {
+    const FarFieldResolutionChoice r = ChooseFarFieldResolution(scene.At(cutoff), scene.Lo,
+      scene.Hi, options, scene.Lo, 1e9, &Summarize, options.TargetNodes);
+    cutoffs.push_back(cutoff);
+    bounds.push_back(r.Bound);
+    near.push_back(r.NearLightsPerPoint);
+    std::printf("  1/%g: coarsest bound %.3f steps, near lights per point %.3f\n", 1.0 / cutoff,
+      r.Bound, r.NearLightsPerPoint);
+  }
+  ASSERT_EQ(cutoffs.size(), 4u);
+  // The scene's shape: at 1/1024 and 1/256 the near field's budget sets the radii (the
+  // same near lights and bound), from 1/64 on the cutoff does.
+  ASSERT_EQ(near[1], near[0]);
+  ASSERT_EQ(bounds[1], bounds[0]);
+  ASSERT_LT(near[2], (1.0 - FarFieldBudgetNearTolerance) * near[0]);
+  ASSERT_LT(bounds[0], bounds[2]) << "a looser cutoff hands more light to the far field";
+  ASSERT_LT(bounds[2], bounds[3]);
+
+  // A budget between 1/64's and 1/16's bounds: 1/64, and the search stops at 1/16.
+  const double between = 0.5 * (bounds[2] + bounds[3]);
+  c = scene.Choose(between, true, options);
+  EXPECT_EQ(c.Cutoff, cutoffs[2]);
+  EXPECT_TRUE(c.Resolution.Met);
+  EXPECT_LE(c.Resolution.Bound, between);
+  EXPECT_LE(c.Resolution.Nodes, options.TargetNodes);
+  EXPECT_EQ(c.CutoffsTried, 4);
+  const FarFieldResolutionChoice again = ChooseFarFieldResolution(scene.At(cutoffs[2]), scene.Lo,
+    scene.Hi, options, scene.Lo, between, &Summarize, options.TargetNodes);
+  EXPECT_EQ(c.Resolution.Nodes, again.Nodes);
+  EXPECT_EQ(c.Resolution.Bound, again.Bound) << "that cutoff's own choice, bit for bit";
+
+  // A budget that 1/256 meets and 1/64 does not: 1/256 buys no near light, so it is passed
+  // over, and the pass's cutoff stays (with every resolution).
+  c = scene.Choose(0.5 * (bounds[0] + bounds[2]), true, options);
+  EXPECT_EQ(c.Cutoff, user);
+  EXPECT_EQ(c.CutoffsTried, 3);
+  EXPECT_TRUE(c.Resolution.Met);
+}
+
+TEST(FarFieldBudget, TheCutoffStaysWhereTheBudgetIsNotOnlyTheSplitLights)
+{
+  const FaintScene scene;
+  const FarFieldOptions options;
+  // Not loosened (cut tails share the budget): the pass's cutoff, every resolution.
+  const FarFieldBudgetChoice c = scene.Choose(1e9, false, options);
+  const FarFieldResolutionChoice r = ChooseFarFieldResolution(
+    scene.At(1.0 / 1024.0), scene.Lo, scene.Hi, options, scene.Lo, 1e9, &Summarize);
+  EXPECT_EQ(c.Cutoff, 1.0 / 1024.0);
+  EXPECT_EQ(c.CutoffsTried, 1);
+  EXPECT_EQ(c.Resolution.Nodes, r.Nodes);
+  EXPECT_EQ(c.Resolution.Bound, r.Bound);
+  // A budget the pass's cutoff does not meet: no looser one is tried.
+  const FarFieldBudgetChoice unmet = scene.Choose(1e-6, true, options);
+  EXPECT_EQ(unmet.Cutoff, 1.0 / 1024.0);
+  EXPECT_EQ(unmet.CutoffsTried, 1);
+  EXPECT_FALSE(unmet.Resolution.Met);
 }

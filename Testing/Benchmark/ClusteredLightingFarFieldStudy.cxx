@@ -207,6 +207,26 @@ glm::dvec3 ShadeValue(const Sample& s, const glm::dvec3& toLight)
   return sh.x * s.Kd + glm::dvec3(sh.y * s.Ks);
 }
 
+/// The near parts of the lights at a sample, each exact (the split window of a far-field
+/// light applied); `count` grows by the lights evaluated.
+glm::dvec3 SumNearParts(
+  const std::vector<PreparedLight>& lights, const Sample& smp, std::int64_t& count)
+{
+  glm::dvec3 sum(0.0);
+  for (const PreparedLight& l : lights)
+  {
+    const glm::dvec3 v = l.PositionWC - smp.P;
+    const double d = glm::length(v);
+    if (d < l.Radius)
+    {
+      const double w = l.FarField ? EvaluateSplitWindow(d / l.Radius) : 1.0;
+      sum += l.Color * EvaluateAttenuation(d, l.Attenuation) * w * ShadeValue(smp, v / d);
+      ++count;
+    }
+  }
+  return sum;
+}
+
 int Quantize(double v)
 {
   return static_cast<int>(std::lround(255.0 * std::min(1.0, std::max(0.0, v))));
@@ -794,18 +814,9 @@ int main(int argc, char* argv[])
           for (std::size_t i = 0; i < samples.size(); ++i)
           {
             const Sample& smp = samples[i];
-            glm::dvec3 sum(0.0);
-            for (const PreparedLight& l : lights)
-            {
-              const glm::dvec3 v = l.PositionWC - smp.P;
-              const double d = glm::length(v);
-              if (d < l.Radius)
-              {
-                const double w = l.FarField ? EvaluateSplitWindow(d / l.Radius) : 1.0;
-                sum += l.Color * EvaluateAttenuation(d, l.Attenuation) * w * ShadeValue(smp, v / d);
-                near += 1.0;
-              }
-            }
+            std::int64_t count = 0;
+            glm::dvec3 sum = SumNearParts(lights, smp, count);
+            near += static_cast<double>(count);
             if (plan.Active)
             {
               const auto m = InterpolateFarMoments(grid, values, smp.P);
@@ -976,19 +987,8 @@ int main(int argc, char* argv[])
       [&](std::size_t i)
       {
         const Sample& smp = samples[i];
-        glm::dvec3 sum(0.0);
         std::int64_t count = 0;
-        for (const PreparedLight& l : lights)
-        {
-          const glm::dvec3 v = l.PositionWC - smp.P;
-          const double d = glm::length(v);
-          if (d < l.Radius)
-          {
-            const double w = l.FarField ? EvaluateSplitWindow(d / l.Radius) : 1.0;
-            sum += l.Color * EvaluateAttenuation(d, l.Attenuation) * w * ShadeValue(smp, v / d);
-            ++count;
-          }
-        }
+        glm::dvec3 sum = SumNearParts(lights, smp, count);
         std::vector<int> stack;
         if (!tree.Nodes.empty())
         {

@@ -435,8 +435,7 @@ void vtkClusteredLightingAssigner::PrepareLights(const vtkClusteredLightingAssig
     options.Cutoff = vtkClusteredLighting::ChooseBudgetCutoff(
       valid.Lights, shares.CutTails, inputs.FarField.Enabled, options.Cutoff, inputs.Windowed);
     farBudget = shares.FarField;
-    loosen = farBudget > 0.0 &&
-      std::all_of(valid.Lights.begin(), valid.Lights.end(), &vtkClusteredLighting::IsFarFieldLight);
+    loosen = shares.FarFieldOnly;
     // The cutoff the last choice took, while it stands (the same preparation key; the
     // numbers of lights are checked after preparing, in ChooseFarFieldOptions).
     if (loosen && this->HaveBudgetChoice && !(this->BudgetChoiceKey != this->LastPreparation))

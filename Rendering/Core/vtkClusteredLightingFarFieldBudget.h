@@ -74,6 +74,9 @@ struct ErrorBudgetShares
 {
   double CutTails = 0.0; ///< for the culled lights' tails (ChooseBudgetCutoff)
   double FarField = 0.0; ///< for the far field's stated bound (ChooseFarFieldResolution)
+  /// only split lights spend it: their cutoff may be loosened too
+  /// (ChooseFarFieldCutoffAndResolution)
+  bool FarFieldOnly = false;
 };
 
 /**
@@ -93,6 +96,7 @@ inline ErrorBudgetShares ShareErrorBudget(
   ErrorBudgetShares shares;
   shares.CutTails = share;
   shares.FarField = anySplit ? share : 0.0;
+  shares.FarFieldOnly = anySplit && !anyCulled;
   return shares;
 }
 

@@ -120,6 +120,7 @@ TEST(FarFieldBudget, SharedOnlyWhenTailsAndTheFarFieldAreBothPresent)
   ErrorBudgetShares s = ShareErrorBudget(scene.Lights, budget, true);
   EXPECT_EQ(s.CutTails, budget);
   EXPECT_EQ(s.FarField, budget) << "only split lights: the far field gets all of it";
+  EXPECT_TRUE(s.FarFieldOnly);
   s = ShareErrorBudget(scene.Lights, budget, false);
   EXPECT_EQ(s.CutTails, budget);
   EXPECT_EQ(s.FarField, 0.0) << "far field off: every light is culled";
@@ -129,6 +130,7 @@ TEST(FarFieldBudget, SharedOnlyWhenTailsAndTheFarFieldAreBothPresent)
   s = ShareErrorBudget(mixed, budget, true);
   EXPECT_EQ(s.CutTails, 0.5 * budget);
   EXPECT_EQ(s.FarField, 0.5 * budget) << "both present: their errors add, half each";
+  EXPECT_FALSE(s.FarFieldOnly);
   std::vector<PreparedLight> culled(1, mixed[3]);
   s = ShareErrorBudget(culled, budget, true);
   EXPECT_EQ(s.CutTails, budget);

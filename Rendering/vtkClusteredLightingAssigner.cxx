@@ -284,6 +284,7 @@ const vtkClusteredLightingAssignment& vtkClusteredLightingAssigner::Update(
   }
   const PreparedLights& prepared = this->Prepared;
   r.EffectiveCutoff = this->EffectiveCutoff;
+  r.EffectiveFarFieldCutoff = this->EffectiveFarFieldCutoff;
   r.NumberOfLights = static_cast<int>(prepared.Lights.size());
   r.NumberOfRejected = static_cast<int>(prepared.Problems.size());
   r.NumberOfAlwaysOn = static_cast<int>(prepared.NumberOfAlwaysOn);
@@ -421,7 +422,6 @@ void vtkClusteredLightingAssigner::PrepareLights(const vtkClusteredLightingAssig
   auto nameOf = [&lights](std::size_t i) { return lights.NameOf(i); };
   LightPreparationOptions options = inputs.Preparation;
   double farBudget = 0.0; // the far field's share of the error budget (fraction)
-  bool loosen = false;    // only split lights spend it: it may loosen their cutoff
   if (inputs.ErrorBudget > 0.0)
   {
     // Validate once, share the budget between the culled lights' tails and the far field
@@ -435,25 +435,32 @@ void vtkClusteredLightingAssigner::PrepareLights(const vtkClusteredLightingAssig
     options.Cutoff = vtkClusteredLighting::ChooseBudgetCutoff(
       valid.Lights, shares.CutTails, inputs.FarField.Enabled, options.Cutoff, inputs.Windowed);
     farBudget = shares.FarField;
-    loosen = shares.FarFieldOnly;
-    // The cutoff the last choice took, while it stands (the same preparation key; the
-    // numbers of lights are checked after preparing, in ChooseFarFieldOptions).
-    if (loosen && this->HaveBudgetChoice && !(this->BudgetChoiceKey != this->LastPreparation))
+    if (farBudget > 0.0)
     {
-      options.Cutoff = this->BudgetChoice.Cutoff;
+      // The split lights' cutoff is their own, chosen with the far field's share
+      // (ChooseFarFieldOptions) from ContributionCutoff; the last choice's while it stands
+      // (the same preparation key; the numbers of lights are checked after preparing).
+      options.FarFieldCutoff = inputs.Preparation.Cutoff;
+      if (this->HaveBudgetChoice && !(this->BudgetChoiceKey != this->LastPreparation))
+      {
+        options.FarFieldCutoff = this->BudgetChoice.Cutoff;
+      }
     }
   }
   this->Prepared = vtkClusteredLighting::PrepareLights(lights.Sources, options, nameOf);
   // Near radii and the far field's grid (caps the culling radii of far-field lights); a
   // new budget choice may take another cutoff for the split lights, and prepare again.
   const vtkClusteredLighting::FarFieldOptions farOptions =
-    this->ChooseFarFieldOptions(inputs, farBudget, loosen, options);
-  if (loosen && this->HaveBudgetChoice && this->BudgetChoice.Cutoff != options.Cutoff)
+    this->ChooseFarFieldOptions(inputs, farBudget, options);
+  if (farBudget > 0.0 && this->HaveBudgetChoice &&
+    this->BudgetChoice.Cutoff != options.FarFieldCutoff)
   {
-    options.Cutoff = this->BudgetChoice.Cutoff;
+    options.FarFieldCutoff = this->BudgetChoice.Cutoff;
     this->Prepared = vtkClusteredLighting::PrepareLights(lights.Sources, options, nameOf);
   }
   this->EffectiveCutoff = options.Cutoff;
+  this->EffectiveFarFieldCutoff =
+    options.FarFieldCutoff > 0.0 ? options.FarFieldCutoff : options.Cutoff;
   this->FarFieldPlan = PlanFarField(
     this->Prepared.Lights, this->RegionLo, this->RegionHi, farOptions, this->RegionAnchor);
   this->Result.FarFieldNodesTarget = this->FarFieldPlan.Active ? farOptions.TargetNodes : 0;
@@ -479,8 +486,8 @@ void vtkClusteredLightingAssigner::PrepareLights(const vtkClusteredLightingAssig
 }
 
 //------------------------------------------------------------------------------
-// The far field's options for this preparation: the pass's, with the resolution an error
-// budget chooses, and the split lights' cutoff when `loosen`
+// The far field's options for this preparation: the pass's, with the resolution and the
+// split lights' cutoff an error budget chooses with the far field's share `budget`
 // (vtkClusteredLightingFarFieldBudget.h; the caller prepares again at a new cutoff). The
 // choice is made again only when what it depends on changes (the preparation key:
 // budget, options, region; the number of lights and of split lights), not when lights
@@ -488,7 +495,7 @@ void vtkClusteredLightingAssigner::PrepareLights(const vtkClusteredLightingAssig
 // gives the bound now): it summarizes the bound at up to 7 resolutions per cutoff tried
 // (0.1 to 0.25 s each at 4,096 lights on 2 threads).
 vtkClusteredLighting::FarFieldOptions vtkClusteredLightingAssigner::ChooseFarFieldOptions(
-  const vtkClusteredLightingAssignerInputs& inputs, double budget, bool loosen,
+  const vtkClusteredLightingAssignerInputs& inputs, double budget,
   const vtkClusteredLighting::LightPreparationOptions& preparation)
 {
   vtkClusteredLighting::FarFieldOptions options = inputs.FarField;
@@ -507,24 +514,23 @@ vtkClusteredLighting::FarFieldOptions vtkClusteredLightingAssigner::ChooseFarFie
   {
     const bool warned = this->HaveBudgetChoice && !this->BudgetChoice.Resolution.Met &&
       this->BudgetChoiceKey.ErrorBudget == this->LastPreparation.ErrorBudget;
-    // The lights as prepared at the pass's cutoff (the budget's starting point), or at a
-    // looser one.
+    // The lights as prepared with the split lights at the pass's cutoff (the budget's
+    // starting point), or at a looser one; the culled lights keep theirs.
     const vtkClusteredLightingLightCollection& collection = *inputs.Lights;
     auto nameOf = [&collection](std::size_t i) { return collection.NameOf(i); };
-    const double userCutoff = inputs.Preparation.Cutoff;
     auto prepare = [&](double cutoff) -> std::vector<PreparedLight>
     {
-      if (cutoff == preparation.Cutoff)
+      if (cutoff == preparation.FarFieldCutoff)
       {
         return lights;
       }
       vtkClusteredLighting::LightPreparationOptions at = preparation;
-      at.Cutoff = cutoff;
+      at.FarFieldCutoff = cutoff;
       return vtkClusteredLighting::PrepareLights(collection.Sources, at, nameOf).Lights;
     };
     this->BudgetChoice = vtkClusteredLighting::ChooseFarFieldCutoffAndResolution(prepare,
-      loosen ? userCutoff : preparation.Cutoff, loosen, this->RegionLo, this->RegionHi, options,
-      this->RegionAnchor, 255.0 * budget, &SummarizeOnThreads);
+      inputs.Preparation.Cutoff, this->RegionLo, this->RegionHi, options, this->RegionAnchor,
+      255.0 * budget, &SummarizeOnThreads);
     this->HaveBudgetChoice = true;
     this->BudgetChoiceKey = this->LastPreparation;
     this->BudgetChoiceLights = lights.size();

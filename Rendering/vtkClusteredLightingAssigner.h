@@ -106,8 +106,9 @@ struct vtkClusteredLightingAssignerInputs
 {
   vtkClusteredLightingLightCollection* Lights = nullptr; ///< Read() is called when needed
   vtkClusteredLighting::LightPreparationOptions Preparation;
-  /// > 0: choose the cutoff of culled lights and the far field's resolution for it
-  /// (Preparation.Cutoff and FarField.TargetNodes ignored; vtkClusteredLightingFarFieldBudget.h)
+  /// > 0: choose the cutoffs of culled and of split lights and the far field's resolution
+  /// for it (from Preparation.Cutoff; FarField.TargetNodes ignored;
+  /// vtkClusteredLightingFarFieldBudget.h)
   double ErrorBudget = 0.0;
   bool Windowed = false; ///< windowed falloff (the error budget accounts for it)
   vtkClusteredLighting::FarFieldOptions FarField;
@@ -150,9 +151,10 @@ struct vtkClusteredLightingAssignment
                              ///< the lights)
   bool Bypassed = false;     ///< clustered shading asked, every light reaches every cluster:
                              ///< shaded by the plain loop (same image, less work)
-  double MeanLightsPerCluster = 0.0; ///< at the last assignment, before per-cluster culling
-  double EffectiveCutoff = 1.0 / 1024.0;
-  double AssignmentTime = 0.0;  ///< ms, when Reassigned
+  double MeanLightsPerCluster = 0.0;     ///< at the last assignment, before per-cluster culling
+  double EffectiveCutoff = 1.0 / 1024.0; ///< of the culled lights
+  double EffectiveFarFieldCutoff = 1.0 / 1024.0; ///< of the lights the far field may split
+  double AssignmentTime = 0.0;                   ///< ms, when Reassigned
   double LightUpdateTime = 0.0; ///< ms: reading, preparing and uploading changed lights,
                                 ///< building the far field included
   // Depth-aware clusters (vtkClusteredLightingDepthBounds.h).
@@ -291,7 +293,7 @@ private:
   void OnWindowDeleted();
   void PrepareLights(const vtkClusteredLightingAssignerInputs& inputs);
   vtkClusteredLighting::FarFieldOptions ChooseFarFieldOptions(
-    const vtkClusteredLightingAssignerInputs& inputs, double budget, bool loosen,
+    const vtkClusteredLightingAssignerInputs& inputs, double budget,
     const vtkClusteredLighting::LightPreparationOptions& preparation);
   static vtkClusteredLighting::FarFieldBoundSummary SummarizeOnThreads(
     const vtkClusteredLighting::FarFieldBuildInputs& in);
@@ -321,7 +323,7 @@ private:
   PreparationKey BudgetChoiceKey;
   std::size_t BudgetChoiceLights = 0, BudgetChoiceSplit = 0;
   bool HaveBudgetChoice = false;
-  double EffectiveCutoff = 1.0 / 1024.0;
+  double EffectiveCutoff = 1.0 / 1024.0, EffectiveFarFieldCutoff = 1.0 / 1024.0;
   std::set<std::string> ReportedProblems;
   std::string ReportedError;
   std::string ReportedGridWarning;

@@ -1004,6 +1004,7 @@ void vtkClusteredLightingPass::ReportAssignment(const vtkClusteredLightingAssign
   this->ClusteringBypassed = r.Enabled && r.Bypassed;
   this->MeanLightsPerCluster = r.Enabled ? r.MeanLightsPerCluster : 0.0;
   this->EffectiveCutoff = r.EffectiveCutoff;
+  this->EffectiveFarFieldCutoff = r.EffectiveFarFieldCutoff;
   this->NumberOfClusteredLights = r.NumberOfLights;
   this->NumberOfRejectedLights = r.NumberOfRejected;
   this->NumberOfAlwaysOnLights = r.NumberOfAlwaysOn;
@@ -1489,6 +1490,7 @@ void vtkClusteredLightingPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ContributionCutoff: " << this->ContributionCutoff << "\n";
   os << indent << "ErrorBudgetInSteps: " << this->GetErrorBudgetInSteps() << "\n";
   os << indent << "EffectiveCutoff: " << this->EffectiveCutoff << "\n";
+  os << indent << "EffectiveFarFieldCutoff: " << this->EffectiveFarFieldCutoff << "\n";
   os << indent << "Falloff: " << this->GetFalloffAsString() << "\n";
   os << indent << "FarField: " << (this->FarField ? "On" : "Off") << "\n";
   os << indent << "FarFieldResolution: " << this->FarFieldResolution << "\n";

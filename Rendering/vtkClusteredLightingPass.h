@@ -200,22 +200,24 @@ public:
    * of two) whose stated bound, summarized over probe points as ComputeFarFieldErrorBound
    * reports it, is within the budget, among those that evaluate no more near lights than
    * the finest (a coarse grid can force larger near radii). When both kinds of lights are
-   * present, the cut tails and the far field each get half of the budget. When only split
-   * lights are present the budget is the far field's alone, and it may loosen their cutoff
-   * too: from ContributionCutoff by factors of 4 up to 1/16, each step taken while a grid
-   * no finer than FarFieldResolution meets the budget and it evaluates fewer near lights,
-   * the search ending at the first step no such grid meets (shorter near radii, more of
-   * each light in the far field: on the benchmark's bunny 4 steps take 1/256 and 16 steps
-   * 1/64, docs/far-field.md). The choice is made when the budget, the far field's
-   * options or region, or the number of lights change (0.1 to 0.25 s per resolution
-   * tried at 4,096 lights on 2 threads), not when lights move or change brightness (the
+   * present, the cut tails and the far field each get half of the budget. The split
+   * lights' cutoff is their own, and the far field's share may loosen it: from
+   * ContributionCutoff by factors of 4 up to 1/16, each step taken while a grid no finer
+   * than FarFieldResolution meets the share and it evaluates fewer near lights, the search
+   * ending at the first step no such grid meets (shorter near radii, more of each light in
+   * the far field: on the benchmark's bunny 4 steps take 1/256 and 16 steps 1/64,
+   * docs/far-field.md); the culled lights' tails choose theirs with their share. The
+   * choice is made when the budget, the far field's options or region, or the number of
+   * lights change (0.1 to 0.25 s per resolution tried at 4,096 lights on 2 threads; 0.8
+   * to 1.9 s for a first frame with 2,000 lights as a new user writes them, with and
+   * without spot lights), not when lights move or change brightness (the
    * budget was met when chosen; ComputeFarFieldErrorBound gives the bound now). When no
    * resolution meets it (the rest of the bound is the order-2 moments' own, which
    * NearFieldBudget moves somewhat and the resolution does not), the pass takes the one
    * with the smallest bound and warns once.
-   * GetEffectiveCutoff(), GetFarFieldResolutionInUse() and GetFarFieldErrorBudgetMet()
-   * report the choices. Range [0, 255]. Default is 0 (use ContributionCutoff and
-   * FarFieldResolution).
+   * GetEffectiveCutoff(), GetEffectiveFarFieldCutoff(), GetFarFieldResolutionInUse() and
+   * GetFarFieldErrorBudgetMet() report the choices. Range [0, 255]. Default is 0 (use
+   * ContributionCutoff and FarFieldResolution).
    */
   void SetErrorBudgetInSteps(double steps);
   double GetErrorBudgetInSteps() { return 255.0 * this->ErrorBudget; }
@@ -231,10 +233,20 @@ public:
   //@}
 
   /**
-   * The contribution cutoff the last light update used (ContributionCutoff, or the one
-   * the error budget chose), as a fraction of full brightness.
+   * The contribution cutoff the last light update gave the lights it culls (spot lights,
+   * explicit radii; every light with FarField off): ContributionCutoff, or the one the
+   * error budget chose for their tails. A fraction of full brightness.
    */
   vtkGetMacro(EffectiveCutoff, double);
+
+  /**
+   * The contribution cutoff the last light update gave the lights the far field may split
+   * (no explicit radius, not spot lights; their near radii): ContributionCutoff, or the
+   * one the error budget chose for the far field (ErrorBudgetInSteps). With no light to
+   * split (FarField off, or every light culled) the same as GetEffectiveCutoff(). A
+   * fraction of full brightness.
+   */
+  vtkGetMacro(EffectiveFarFieldCutoff, double);
 
   enum Falloffs
   {
@@ -845,6 +857,7 @@ protected:
   double ContributionCutoff = 1.0 / 1024.0;
   double ErrorBudget = 0.0; ///< fraction of full brightness (ErrorBudgetInSteps / 255)
   double EffectiveCutoff = 1.0 / 1024.0;
+  double EffectiveFarFieldCutoff = 1.0 / 1024.0;
   int Falloff = FALLOFF_HARD_CUT;
   int ShadingMode = SHADING_CLUSTERED;
   int DebugView = DEBUG_NONE;

@@ -13,7 +13,11 @@ light, exact); prints each frame time and the clustered images' error against br
 force in 8-bit steps and writes the three images. Exits with status 1 if the far field
 does not bring the image closer to brute force. --pbr METALLIC (and --roughness) makes
 both actors PBR. --budget STEPS (repeatable) also renders with that ErrorBudgetInSteps,
-writes its image and prints the far field's resolution it chose and its stated bound.
+writes its image and prints the cutoffs and the far field's resolution it chose and its
+stated bound. --spots FRACTION makes that fraction of the lights spot lights (culled by
+their cutoff, never split: the budget shares itself between their tails and the far
+field); --counts prints the lights evaluated and reaching per pixel of each clustered
+render.
 
     PYTHONPATH=build/lib/python3/dist-packages \\
       scripts/with-display.sh /usr/bin/python3 Examples/Python/user_lights.py
@@ -23,7 +27,8 @@ import argparse
 import time
 
 from clusteredlighting import vtkClusteredLightingPass, vtkClusteredLightSet
-from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
+from vtkmodules.vtkCommonDataModel import vtkPolyData
 from vtkmodules.vtkFiltersSources import vtkPlaneSource, vtkPointSource, vtkSphereSource
 from vtkmodules.vtkIOImage import vtkPNGWriter
 from vtkmodules.vtkRenderingCore import (
@@ -69,6 +74,15 @@ def write_png(image_filter, path):
     writer.Write()
 
 
+def light_counts(window, pass_):
+    """Lights evaluated and reaching per pixel, from the pass's evaluated-count view."""
+    pass_.SetDebugView(vtkClusteredLightingPass.DEBUG_EVALUATED_COUNT)
+    window.Render()
+    counts = (pass_.GetMeanLightsEvaluatedPerPixel(), pass_.GetMeanLightsReachingPerPixel())
+    pass_.SetDebugView(vtkClusteredLightingPass.DEBUG_NONE)
+    return counts
+
+
 def timed_render(window, frames):
     window.Render()  # shaders, assignment, far field
     times = []
@@ -90,6 +104,12 @@ def main():
     parser.add_argument("--roughness", type=float, default=0.5, help="with --pbr")
     parser.add_argument("--budget", type=float, metavar="STEPS", action="append", default=[],
                         help="also render with ErrorBudgetInSteps STEPS (repeatable)")
+    parser.add_argument("--spots", type=float, default=0.0, metavar="FRACTION",
+                        help="make this fraction of the lights spot lights (cone 60 degrees, "
+                        "pointing down; default: none)")
+    parser.add_argument("--counts", action="store_true",
+                        help="also print the lights evaluated and reaching per pixel of each "
+                        "clustered render (the pass's evaluated-count view, one more render)")
     args = parser.parse_args()
     pbr = None if args.pbr is None else (args.pbr, args.roughness)
 
@@ -112,7 +132,20 @@ def main():
     points.SetRadius(3.0)
     # Every point a white light (no arrays: the set's defaults), as a new user writes it.
     lights = vtkClusteredLightSet()
-    lights.SetInputConnection(points.GetOutputPort())
+    if args.spots > 0.0:
+        # Every k-th light a spot light pointing down (a ConeAngle array; 180: point light).
+        points.Update()
+        cloud = vtkPolyData()
+        cloud.ShallowCopy(points.GetOutput())
+        cones = numpy.full(args.lights, 180.0)
+        cones[:: max(1, int(round(1.0 / args.spots)))] = 60.0
+        array = numpy_to_vtk(cones, deep=True)
+        array.SetName("ConeAngle")
+        cloud.GetPointData().AddArray(array)
+        lights.SetInputData(cloud)
+        lights.SetDefaultSpotDirection(0.0, -1.0, 0.0)
+    else:
+        lights.SetInputConnection(points.GetOutputPort())
     lights.SetDefaultAttenuation(1.0, 0.0, 8.0)
     lights.SetDefaultIntensity(args.intensity)
     pass_ = vtkClusteredLightingPass()
@@ -129,6 +162,7 @@ def main():
     renderer.ResetCameraClippingRange()
 
     results = {}
+    counts = {}
     for name, setup in (
         ("brute", lambda: pass_.SetShadingMode(vtkClusteredLightingPass.SHADING_BRUTE_FORCE)),
         ("default", lambda: pass_.SetShadingMode(vtkClusteredLightingPass.SHADING_CLUSTERED)),
@@ -139,6 +173,8 @@ def main():
         image, pixels = grab(window)
         write_png(image, "%s-%s.png" % (args.prefix, name))
         results[name] = (ms, pixels)
+        if args.counts and name != "brute":
+            counts[name] = light_counts(window, pass_)
     pass_.SetFarField(True)
     budgets = {}
     for steps in args.budget:
@@ -151,14 +187,18 @@ def main():
         name = "budget-%g" % steps
         write_png(image, "%s-%s.png" % (args.prefix, name))
         results[name] = (ms, pixels)
-        budgets[name] = (choice_ms, pass_.GetFarFieldResolutionInUse(),
+        if args.counts:
+            counts[name] = light_counts(window, pass_)
+        budgets[name] = (choice_ms, pass_.GetEffectiveFarFieldCutoff(),
+                         pass_.GetEffectiveCutoff(), pass_.GetFarFieldResolutionInUse(),
                          pass_.ComputeFarFieldErrorBound(), pass_.GetFarFieldErrorBudgetMet(),
                          pass_.GetLastFarFieldBuildTime())
     pass_.SetErrorBudgetInSteps(0)
     brute_ms, brute = results["brute"]
     rmse = {}
-    print("%d lights, %d clustered, attenuation (1, 0, 8), intensity %g"
-          % (args.lights, pass_.GetNumberOfClusteredLights(), args.intensity))
+    print("%d lights (%d spot lights), %d clustered, attenuation (1, 0, 8), intensity %g"
+          % (args.lights, pass_.GetNumberOfSpotLights(), pass_.GetNumberOfClusteredLights(),
+             args.intensity))
     print("brute force: %.1f ms" % brute_ms)
     for name in ["default", "farfield-off"] + list(budgets):
         ms, pixels = results[name]
@@ -166,11 +206,16 @@ def main():
         rmse[name] = numpy.sqrt((diff.astype(float) ** 2).mean())
         print("%-12s %8.1f ms (%.1fx faster than brute force)  max err %d steps  RMSE %.2f"
               % (name, ms, brute_ms / ms, diff.max(), numpy.sqrt((diff.astype(float) ** 2).mean())))
+        if name in counts:
+            print("             %.2f lights evaluated, %.2f reaching per pixel" % counts[name])
         if name in budgets:
-            choice_ms, nodes, bound, met, build_ms = budgets[name]
-            print("             far field %d nodes (build %.1f ms), stated bound %.2f steps over "
-                  "probes, %s; first frame %.0f ms" % (nodes, build_ms, bound,
-                                                      "met" if met else "NOT met", choice_ms))
+            choice_ms, cutoff, culled_cutoff, nodes, bound, met, build_ms = budgets[name]
+            spots = (", spot lights' cutoff 1/%.0f" % (1.0 / culled_cutoff)
+                     if args.spots > 0.0 else "")
+            print("             cutoff 1/%.0f%s, far field %d nodes (build %.1f ms), stated "
+                  "bound %.2f steps over probes, %s; first frame %.0f ms"
+                  % (1.0 / cutoff, spots, nodes, build_ms, bound,
+                     "met" if met else "NOT met", choice_ms))
     if not rmse["default"] < rmse["farfield-off"]:
         print("the far field did not bring the image closer to brute force")
         return 1

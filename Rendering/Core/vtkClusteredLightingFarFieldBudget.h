@@ -35,12 +35,17 @@
  * rest of each light to the far field, whose bound grows with it: on the benchmark's bunny
  * with 4,096 lights 1/256 takes 0.73 near lights per point instead of 4.84 at 1/1024, at
  * 2.96 steps (4,096 nodes) instead of 1.24 (the CPU study), and a budget of 4 steps that
- * takes it renders in 0.85 times the time of 1 step, at max 1 step. When only
- * split lights spend the budget (no cut tails share it), the cutoff is loosened from the
- * pass's ContributionCutoff by factors of FarFieldBudgetCutoffStep up to
- * FarFieldBudgetLoosestCutoff, each step taken while some resolution meets the budget and
- * stopping at the first that none meets; a step is kept only when it evaluates fewer near
- * lights per point (by more than FarFieldBudgetNearTolerance) than the choice so far.
+ * takes it renders in 0.85 times the time of 1 step, at max 1 step. The split lights'
+ * cutoff (LightPreparationOptions::FarFieldCutoff) is their own: the culled lights' tails
+ * choose theirs with their share (ChooseBudgetCutoff), and the split lights' is loosened
+ * with the far field's share from the pass's ContributionCutoff by factors of
+ * FarFieldBudgetCutoffStep up to FarFieldBudgetLoosestCutoff, each step taken while some
+ * resolution meets the share and stopping at the first that none meets; a step is kept
+ * only when it evaluates fewer near lights per point (by more than
+ * FarFieldBudgetNearTolerance) than the choice so far. (When one cutoff served both kinds,
+ * the split lights beside spot lights took the one the spot lights' tails asked for: with
+ * 200 spot lights among 2,000 lights as users write them, a budget of 16 steps evaluated
+ * 100 lights per pixel instead of 82, docs/far-field.md.)
  * Loosened cutoffs use grids no finer than FarFieldOptions::TargetNodes (the pass's
  * FarFieldResolution): a loose cutoff that only a finer grid meets would make every frame
  * of moving lights rebuild that grid (262,144 nodes: 131 to 206 ms on llvmpipe, against
@@ -73,10 +78,9 @@ namespace vtkClusteredLighting
 struct ErrorBudgetShares
 {
   double CutTails = 0.0; ///< for the culled lights' tails (ChooseBudgetCutoff)
-  double FarField = 0.0; ///< for the far field's stated bound (ChooseFarFieldResolution)
-  /// only split lights spend it: their cutoff may be loosened too
-  /// (ChooseFarFieldCutoffAndResolution)
-  bool FarFieldOnly = false;
+  /// for the far field's stated bound (ChooseFarFieldCutoffAndResolution: the split
+  /// lights' cutoff and the resolution)
+  double FarField = 0.0;
 };
 
 /**
@@ -96,7 +100,6 @@ inline ErrorBudgetShares ShareErrorBudget(
   ErrorBudgetShares shares;
   shares.CutTails = share;
   shares.FarField = anySplit ? share : 0.0;
-  shares.FarFieldOnly = anySplit && !anyCulled;
   return shares;
 }
 
@@ -215,18 +218,18 @@ struct FarFieldBudgetChoice
 /**
  * The error budget's choice of the split lights' cutoff and the far field's resolution
  * (see the file description): at `cutoff` (the pass's ContributionCutoff)
- * ChooseFarFieldResolution over every resolution; then, when `loosen` (only split lights
- * spend the budget) and that choice meets the budget with a far field, cutoffs larger by
+ * ChooseFarFieldResolution over every resolution; then, when that choice meets the
+ * budget with a far field, cutoffs larger by
  * FarFieldBudgetCutoffStep up to FarFieldBudgetLoosestCutoff, each with the resolutions up
  * to `options.TargetNodes`, until one meets the budget at none of them. A looser cutoff is
  * taken when it meets the budget and its near lights per point are below the choice so
  * far's by more than FarFieldBudgetNearTolerance (a cutoff that buys no time is passed
- * over, not taken). `prepare(double cutoff)` returns the prepared lights at a cutoff
- * (before PlanFarField); `summarize` as for ChooseFarFieldResolution.
+ * over, not taken). `prepare(double cutoff)` returns the prepared lights with the split
+ * lights at that cutoff (before PlanFarField); `summarize` as for ChooseFarFieldResolution.
  */
 template <typename Prepare, typename Summarize>
 FarFieldBudgetChoice ChooseFarFieldCutoffAndResolution(Prepare&& prepare, double cutoff,
-  bool loosen, const glm::dvec3& lo, const glm::dvec3& hi, const FarFieldOptions& options,
+  const glm::dvec3& lo, const glm::dvec3& hi, const FarFieldOptions& options,
   const glm::dvec3& anchor, double budgetInSteps, Summarize&& summarize)
 {
   FarFieldBudgetChoice choice;
@@ -234,7 +237,7 @@ FarFieldBudgetChoice ChooseFarFieldCutoffAndResolution(Prepare&& prepare, double
   choice.Resolution =
     ChooseFarFieldResolution(prepare(cutoff), lo, hi, options, anchor, budgetInSteps, summarize);
   choice.CutoffsTried = 1;
-  if (!loosen || !choice.Resolution.Met || choice.Resolution.Summaries == 0)
+  if (!choice.Resolution.Met || choice.Resolution.Summaries == 0)
   {
     return choice;
   }

@@ -85,6 +85,10 @@ struct LightPreparationOptions
 {
   double Cutoff = 1.0 / 1024.0;
   bool MortonOrder = true;
+  /// > 0: the cutoff of the lights a far field may split (no explicit radius, not spot
+  /// lights: IsFarFieldLight once prepared), whose error a budget holds apart from the
+  /// culled lights' tails (vtkClusteredLightingFarFieldBudget.h); 0: Cutoff for every light.
+  double FarFieldCutoff = 0.0;
 };
 
 struct PreparedLights
@@ -235,7 +239,8 @@ inline std::string ValidateLightSource(const LightSource& l, const std::string& 
   return msg;
 }
 
-/// Validates, derives radii and sorts (always-on lights first, then Morton order).
+/// Validates, derives radii (at options.Cutoff, or FarFieldCutoff for the lights a far field
+/// may split when it is set) and sorts (always-on lights first, then Morton order).
 /// nameOf(i) names source i in messages (default: "light i").
 inline PreparedLights PrepareLights(const std::vector<LightSource>& sources,
   const LightPreparationOptions& options,
@@ -258,7 +263,9 @@ inline PreparedLights PrepareLights(const std::vector<LightSource>& sources,
     p.PositionWC = s.PositionWC;
     p.Color = s.Color * s.Intensity;
     const double peak = std::max(p.Color.x, std::max(p.Color.y, p.Color.z));
-    double r = ComputeInfluenceRadius(peak, s.Attenuation, options.Cutoff);
+    const bool splittable = !s.HasRadius && !s.IsSpot();
+    double r = ComputeInfluenceRadius(peak, s.Attenuation,
+      splittable && options.FarFieldCutoff > 0.0 ? options.FarFieldCutoff : options.Cutoff);
     if (s.HasRadius)
     {
       r = std::min(r, s.Radius);

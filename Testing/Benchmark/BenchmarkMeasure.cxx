@@ -225,7 +225,7 @@ void Context::ResetPassDefaults()
 std::string Context::CheckPassDefaults()
 {
   // The options as PrintSelf lists them, from ShadingMode to the last render's statistics,
-  // less the effective cutoff (a result).
+  // less the effective cutoffs (results).
   auto options = [](vtkClusteredLightingPass* pass)
   {
     std::ostringstream all;
@@ -240,7 +240,8 @@ std::string Context::CheckPassDefaults()
       {
         break;
       }
-      if (inside && line.find("EffectiveCutoff:") == std::string::npos)
+      if (inside && line.find("EffectiveCutoff:") == std::string::npos &&
+        line.find("EffectiveFarFieldCutoff:") == std::string::npos)
       {
         out.push_back(line);
       }
@@ -494,6 +495,7 @@ Row Context::Measure(const Step& step)
     row.MasterMiB = this->Pass->GetMasterTextureBytes() / 1048576.0;
     row.LightsMiB = this->Pass->GetLightBufferBytes() / 1048576.0;
     row.Cutoff = this->Pass->GetEffectiveCutoff();
+    row.FarCutoff = this->Pass->GetEffectiveFarFieldCutoff();
     row.Budget = this->Pass->GetErrorBudget() > 0.0 ? this->Pass->GetErrorBudget() : NAN;
     row.BudgetMet =
       std::isnan(row.Budget) ? NAN : (this->Pass->GetFarFieldErrorBudgetMet() ? 1 : 0);

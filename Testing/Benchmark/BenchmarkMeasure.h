@@ -72,6 +72,7 @@ struct Row
   double SignedError = NAN; ///< mean of (image - reference): negative = darker than exact
   double ListMiB = NAN, MasterMiB = NAN, LightsMiB = NAN;
   double Cutoff = NAN, Budget = NAN;
+  double FarCutoff = NAN; ///< the split lights' cutoff (GetEffectiveFarFieldCutoff)
   double BudgetMet = NAN; ///< 1: the pass met the budget (GetFarFieldErrorBudgetMet), 0: it warned
   std::string Note;
 };

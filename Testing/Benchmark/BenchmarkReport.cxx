@@ -98,6 +98,7 @@ const std::vector<Column>& Columns()
     CL_NUMBER_COLUMN("master_mib", MasterMiB),
     CL_NUMBER_COLUMN("lights_mib", LightsMiB),
     CL_NUMBER_COLUMN("cutoff", Cutoff),
+    CL_NUMBER_COLUMN("far_cutoff", FarCutoff),
     CL_NUMBER_COLUMN("budget", Budget),
     CL_NUMBER_COLUMN("budget_met", BudgetMet),
     { "note", [](const Row& r) { return r.Note; } },

@@ -3,9 +3,9 @@
 // vtkClusteredLightingFarFieldBudget.h). Lights as users write them (inverse-square,
 // attenuation (1, 0, 8), no radius) over the test scene. Checks that
 //  - without a budget the far field uses FarFieldResolution and no choice is made;
-//  - a loose budget (16 steps) takes a grid no finer than the default and, only split
-//    lights spending it, a looser cutoff for them than ContributionCutoff (shorter near
-//    radii, more of each light in the far field), its bound as the pass reports it
+//  - a loose budget (16 steps) takes a grid no finer than the default and a looser cutoff
+//    for the split lights than ContributionCutoff (shorter near radii, more of each light
+//    in the far field; GetEffectiveFarFieldCutoff), its bound as the pass reports it
 //    (ComputeFarFieldErrorBound) is within the budget, and the image is within the stated
 //    bound of brute force at every pixel, with zero false negatives (CheckClusteredFrame):
 //    the coarse far field is shaded right;
@@ -16,7 +16,11 @@
 //    reported by GetFarFieldErrorBudgetMet and PrintSelf, and its frame is still within
 //    the stated bound of brute force;
 //  - a budget of 0 gives FarFieldResolution back;
-//  - spot lights (culled) among split lights get their cutoff for half of the budget.
+//  - spot lights (culled) among split lights get their cutoff for half of the budget
+//    (GetEffectiveCutoff), and the split lights theirs and the far field's resolution as
+//    alone at half the budget: each kind spends its own share with its own cutoff (one
+//    cutoff for both made the split lights take the spot lights'); that frame is within
+//    the stated bound of brute force.
 #include "ClusteredLightingTestUtilities.h"
 
 #include "vtkClusteredLightSet.h"
@@ -41,12 +45,13 @@ void Check(bool ok, const char* what)
 
 void Report(vtkClusteredLightingPass* pass, const char* what)
 {
-  std::printf("%s: budget %g steps, cutoff %g, far field %d nodes (%dx%dx%d), bound %.4f steps, "
-              "%s, %d choices\n",
+  std::printf("%s: budget %g steps, cutoff %g (split lights %g), far field %d nodes (%dx%dx%d), "
+              "bound %.4f steps, %s, %d choices\n",
     what, pass->GetErrorBudgetInSteps(), pass->GetEffectiveCutoff(),
-    pass->GetFarFieldResolutionInUse(), pass->GetFarFieldDimensions()[0],
-    pass->GetFarFieldDimensions()[1], pass->GetFarFieldDimensions()[2],
-    pass->ComputeFarFieldErrorBound(), pass->GetFarFieldErrorBudgetMet() ? "met" : "not met",
+    pass->GetEffectiveFarFieldCutoff(), pass->GetFarFieldResolutionInUse(),
+    pass->GetFarFieldDimensions()[0], pass->GetFarFieldDimensions()[1],
+    pass->GetFarFieldDimensions()[2], pass->ComputeFarFieldErrorBound(),
+    pass->GetFarFieldErrorBudgetMet() ? "met" : "not met",
     pass->GetNumberOfFarFieldResolutionChoices());
 }
 }
@@ -81,9 +86,11 @@ int TestClusteredLightingErrorBudget(int, char*[])
   const int loose = pass->GetFarFieldResolutionInUse();
   Check(pass->GetNumberOfFarFieldResolutionChoices() == 1, "16 steps: one choice");
   Check(loose > 0 && loose <= pass->GetFarFieldResolution(), "16 steps: no finer than the default");
-  const double looseCutoff = pass->GetEffectiveCutoff();
+  const double looseCutoff = pass->GetEffectiveFarFieldCutoff();
   Check(looseCutoff > pass->GetContributionCutoff(),
     "16 steps: a looser cutoff for the split lights than ContributionCutoff");
+  Check(pass->GetEffectiveCutoff() == pass->GetContributionCutoff(),
+    "16 steps: no culled light, their cutoff stays ContributionCutoff");
   Check(pass->GetFarFieldErrorBudgetMet() && pass->ComputeFarFieldErrorBound() <= 16.0,
     "16 steps: met, the reported bound within it");
   Check(ClusteredLightingTest::CheckClusteredFrame(pass, rw, ren, 1.4, "16 steps") == 0,
@@ -95,7 +102,8 @@ int TestClusteredLightingErrorBudget(int, char*[])
   lights->SetPosition(6, -1.0, 0.5, 0.8);
   rw->Render();
   Check(pass->GetNumberOfFarFieldResolutionChoices() == 1 &&
-      pass->GetFarFieldResolutionInUse() == loose && pass->GetEffectiveCutoff() == looseCutoff,
+      pass->GetFarFieldResolutionInUse() == loose &&
+      pass->GetEffectiveFarFieldCutoff() == looseCutoff,
     "moved lights: the same choice (resolution and cutoff), not made again");
   auto addUserLight = [&lights](double x, double y, double z)
   {
@@ -147,11 +155,19 @@ int TestClusteredLightingErrorBudget(int, char*[])
   rw->Render();
   Check(pass->GetFarFieldResolutionInUse() == pass->GetFarFieldResolution() &&
       pass->GetFarFieldErrorBudgetMet() &&
-      pass->GetEffectiveCutoff() == pass->GetContributionCutoff(),
+      pass->GetEffectiveCutoff() == pass->GetContributionCutoff() &&
+      pass->GetEffectiveFarFieldCutoff() == pass->GetContributionCutoff(),
     "budget 0: FarFieldResolution and ContributionCutoff again");
 
-  // 7. Spot lights (culled, never split) among the split lights: their cutoff is chosen for
-  // half of the budget, the same as for those spot lights alone at half the budget.
+  // The split lights alone at 4 steps, for 7.
+  pass->SetErrorBudgetInSteps(4.0);
+  rw->Render();
+  Report(pass, "4 steps");
+  const double splitCutoff4 = pass->GetEffectiveFarFieldCutoff();
+  const int splitNodes4 = pass->GetFarFieldResolutionInUse();
+
+  // 7. Spot lights (culled, never split) among the split lights: each kind's cutoff is
+  // chosen for half of the budget, the same as for that kind alone at half the budget.
   auto addSpots = [](vtkClusteredLightSet* set)
   {
     for (int k = 0; k < 64; ++k)
@@ -165,7 +181,14 @@ int TestClusteredLightingErrorBudget(int, char*[])
   addSpots(lights);
   pass->SetErrorBudgetInSteps(8.0);
   rw->Render();
+  Report(pass, "8 steps, spot lights among the split lights");
   const double mixed = pass->GetEffectiveCutoff();
+  Check(pass->GetEffectiveFarFieldCutoff() == splitCutoff4 &&
+      pass->GetFarFieldResolutionInUse() == splitNodes4,
+    "with spot lights beside them, the split lights' cutoff and the far field's resolution "
+    "are those of the split lights alone at half the budget");
+  Check(ClusteredLightingTest::CheckClusteredFrame(pass, rw, ren, 1.4, "8 steps, mixed") == 0,
+    "8 steps with spot lights: within the stated bound of brute force, zero false negatives");
   vtkNew<vtkClusteredLightSet> spotsAlone;
   addSpots(spotsAlone);
   pass->RemoveLightSet(lights);

@@ -56,10 +56,10 @@ struct FaintScene
   {
     return MakeUniformLights(600, this->Lo, this->Hi, 0.05, 8.0, cutoff);
   }
-  FarFieldBudgetChoice Choose(double budget, bool loosen, const FarFieldOptions& options) const
+  FarFieldBudgetChoice Choose(double budget, const FarFieldOptions& options) const
   {
     return ChooseFarFieldCutoffAndResolution([this](double c) { return this->At(c); }, 1.0 / 1024.0,
-      loosen, this->Lo, this->Hi, options, this->Lo, budget, &Summarize);
+      this->Lo, this->Hi, options, this->Lo, budget, &Summarize);
   }
 };
 
@@ -120,7 +120,6 @@ TEST(FarFieldBudget, SharedOnlyWhenTailsAndTheFarFieldAreBothPresent)
   ErrorBudgetShares s = ShareErrorBudget(scene.Lights, budget, true);
   EXPECT_EQ(s.CutTails, budget);
   EXPECT_EQ(s.FarField, budget) << "only split lights: the far field gets all of it";
-  EXPECT_TRUE(s.FarFieldOnly);
   s = ShareErrorBudget(scene.Lights, budget, false);
   EXPECT_EQ(s.CutTails, budget);
   EXPECT_EQ(s.FarField, 0.0) << "far field off: every light is culled";
@@ -130,7 +129,6 @@ TEST(FarFieldBudget, SharedOnlyWhenTailsAndTheFarFieldAreBothPresent)
   s = ShareErrorBudget(mixed, budget, true);
   EXPECT_EQ(s.CutTails, 0.5 * budget);
   EXPECT_EQ(s.FarField, 0.5 * budget) << "both present: their errors add, half each";
-  EXPECT_FALSE(s.FarFieldOnly);
   std::vector<PreparedLight> culled(1, mixed[3]);
   s = ShareErrorBudget(culled, budget, true);
   EXPECT_EQ(s.CutTails, budget);
@@ -268,7 +266,7 @@ TEST(FarFieldBudget, LoosensTheSplitLightsCutoffWhileAGridNoFinerThanTheOptionMe
   ASSERT_GT(atUser.Summaries, 0) << "the scene must have a far field";
 
   // A budget every cutoff meets: the loosest step that still cuts near lights.
-  FarFieldBudgetChoice c = scene.Choose(1e9, true, options);
+  FarFieldBudgetChoice c = scene.Choose(1e9, options);
   std::printf("any budget: cutoff 1/%g, %lld nodes, bound %.3f steps, near lights per point "
               "%.3f (%.3f at 1/1024), %d cutoffs tried\n",
     1.0 / c.Cutoff, static_cast<long long>(c.Resolution.Nodes), c.Resolution.Bound,
@@ -303,7 +301,7 @@ TEST(FarFieldBudget, LoosensTheSplitLightsCutoffWhileAGridNoFinerThanTheOptionMe
 
   // A budget between 1/64's and 1/16's bounds: 1/64, and the search stops at 1/16.
   const double between = 0.5 * (bounds[2] + bounds[3]);
-  c = scene.Choose(between, true, options);
+  c = scene.Choose(between, options);
   EXPECT_EQ(c.Cutoff, cutoffs[2]);
   EXPECT_TRUE(c.Resolution.Met);
   EXPECT_LE(c.Resolution.Bound, between);
@@ -316,26 +314,18 @@ TEST(FarFieldBudget, LoosensTheSplitLightsCutoffWhileAGridNoFinerThanTheOptionMe
 
   // A budget that 1/256 meets and 1/64 does not: 1/256 buys no near light, so it is passed
   // over, and the pass's cutoff stays (with every resolution).
-  c = scene.Choose(0.5 * (bounds[0] + bounds[2]), true, options);
+  c = scene.Choose(0.5 * (bounds[0] + bounds[2]), options);
   EXPECT_EQ(c.Cutoff, user);
   EXPECT_EQ(c.CutoffsTried, 3);
   EXPECT_TRUE(c.Resolution.Met);
 }
 
-TEST(FarFieldBudget, TheCutoffStaysWhereTheBudgetIsNotOnlyTheSplitLights)
+TEST(FarFieldBudget, TheCutoffStaysWhereThePassCutoffDoesNotMeetTheBudget)
 {
   const FaintScene scene;
   const FarFieldOptions options;
-  // Not loosened (cut tails share the budget): the pass's cutoff, every resolution.
-  const FarFieldBudgetChoice c = scene.Choose(1e9, false, options);
-  const FarFieldResolutionChoice r = ChooseFarFieldResolution(
-    scene.At(1.0 / 1024.0), scene.Lo, scene.Hi, options, scene.Lo, 1e9, &Summarize);
-  EXPECT_EQ(c.Cutoff, 1.0 / 1024.0);
-  EXPECT_EQ(c.CutoffsTried, 1);
-  EXPECT_EQ(c.Resolution.Nodes, r.Nodes);
-  EXPECT_EQ(c.Resolution.Bound, r.Bound);
   // A budget the pass's cutoff does not meet: no looser one is tried.
-  const FarFieldBudgetChoice unmet = scene.Choose(1e-6, true, options);
+  const FarFieldBudgetChoice unmet = scene.Choose(1e-6, options);
   EXPECT_EQ(unmet.Cutoff, 1.0 / 1024.0);
   EXPECT_EQ(unmet.CutoffsTried, 1);
   EXPECT_FALSE(unmet.Resolution.Met);

@@ -162,6 +162,32 @@ TEST(LightPreparation, ExplicitRadiusCapsDerivedRadius)
   EXPECT_EQ(PrepareLights({ l }, LightPreparationOptions()).Lights[0].Radius, 0.0);
 }
 
+TEST(LightPreparation, FarFieldCutoffSetsOnlyTheRadiiOfLightsAFarFieldMaySplit)
+{
+  LightSource point; // inverse-square, no radius: a far field may split it
+  point.Attenuation = glm::dvec3(1, 0, 1);
+  LightSource spot = point;
+  spot.ConeAngle = 30.0;
+  LightSource capped = point;
+  capped.HasRadius = true;
+  capped.Radius = 1e6; // larger than either cutoff needs: the cutoff sets its radius
+  LightPreparationOptions options{ 1.0 / 1024.0, false };
+  const double tight = ComputeInfluenceRadius(1.0, point.Attenuation, options.Cutoff);
+  const double loose = ComputeInfluenceRadius(1.0, point.Attenuation, 1.0 / 64.0);
+  ASSERT_GT(tight, loose);
+  options.FarFieldCutoff = 1.0 / 64.0;
+  const PreparedLights p = PrepareLights({ point, spot, capped }, options);
+  ASSERT_EQ(p.Lights.size(), 3u);
+  EXPECT_DOUBLE_EQ(p.Lights[0].Radius, loose) << "a splittable light takes FarFieldCutoff";
+  EXPECT_DOUBLE_EQ(p.Lights[1].Radius, tight) << "a spot light keeps Cutoff";
+  EXPECT_DOUBLE_EQ(p.Lights[2].Radius, tight) << "a light with an explicit radius keeps Cutoff";
+  options.FarFieldCutoff = 0.0; // unset: Cutoff for every light
+  for (const PreparedLight& l : PrepareLights({ point, spot, capped }, options).Lights)
+  {
+    EXPECT_DOUBLE_EQ(l.Radius, tight);
+  }
+}
+
 TEST(ErrorBudget, TailShrinksAsTheCutoffShrinks)
 {
   std::vector<LightSource> lights(200);

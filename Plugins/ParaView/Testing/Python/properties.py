@@ -213,9 +213,18 @@ t.check(t.info(view, "EffectiveCutoff") == 1.0 / 64.0,
         "ContributionCutoff 1/64: effective cutoff %g" % t.info(view, "EffectiveCutoff"))
 view.ErrorBudget = 4.0 / 255.0
 Render(view)
+# The renderer light ParaView adds is a spot light: culled, never split. The budget is
+# halved between its tail (its own cutoff) and the far field of the 72 split lights
+# (theirs, from Contribution Cutoff outwards).
+t.check(t.info(view, "NumberOfSpotLights") == 1,
+        "one spot light (the renderer's): %d" % t.info(view, "NumberOfSpotLights"))
 chosen = t.info(view, "EffectiveCutoff")
 t.check(chosen != 1.0 / 64.0 and chosen > 0.0,
-        "Error Budget 4/255: the pass chose cutoff %g instead of ContributionCutoff" % chosen)
+        "Error Budget 4/255: the pass chose cutoff %g for the spot light's tail instead of "
+        "Contribution Cutoff" % chosen)
+split = t.info(view, "EffectiveFarFieldCutoff")
+t.check(split >= 1.0 / 64.0,
+        "Error Budget 4/255: the split lights' cutoff %g is Contribution Cutoff or looser" % split)
 view.ErrorBudget = 0.0
 view.ContributionCutoff = 1.0 / 1024.0
 

@@ -432,8 +432,8 @@ void vtkClusteredLightingAssigner::PrepareLights(const vtkClusteredLightingAssig
     const PreparedLights valid = vtkClusteredLighting::PrepareLights(lights.Sources, probe, nameOf);
     const vtkClusteredLighting::ErrorBudgetShares shares = vtkClusteredLighting::ShareErrorBudget(
       valid.Lights, inputs.ErrorBudget, inputs.FarField.Enabled);
-    options.Cutoff = vtkClusteredLighting::ChooseBudgetCutoff(
-      valid.Lights, shares.CutTails, inputs.FarField.Enabled, options.Cutoff, inputs.Windowed);
+    options.Cutoff = vtkClusteredLighting::ChooseBudgetCutoff(valid.Lights, shares.CutTails,
+      inputs.FarField.Enabled, options.Cutoff, inputs.Windowed, this->RegionLo, this->RegionHi);
     farBudget = shares.FarField;
     if (farBudget > 0.0)
     {

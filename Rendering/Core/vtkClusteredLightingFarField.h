@@ -107,15 +107,19 @@ inline bool IsFarFieldLight(const PreparedLight& l)
  * part is added back, within the far field's own stated bound (ComputeFarFieldErrorBound).
  * So only the lights that are culled (spot lights and lights with an explicit radius; every
  * light with the far field off) choose the cutoff, with ChooseCutoffForErrorBudget over
- * their tails; with none, `cutoff` (the pass's ContributionCutoff) is kept. Lowering the
+ * their tails at ComputeErrorBudgetSamples (with [regionLo, regionHi], the box of the
+ * geometry to shade, when valid); with none, `cutoff` (the pass's ContributionCutoff) is
+ * kept. Lowering the
  * cutoff of split lights would only move work from the far field to the near field.
  */
 inline double ChooseBudgetCutoff(const std::vector<PreparedLight>& lights, double budget,
-  bool farField, double cutoff, bool windowed = false)
+  bool farField, double cutoff, bool windowed = false, const glm::dvec3& regionLo = glm::dvec3(1.0),
+  const glm::dvec3& regionHi = glm::dvec3(-1.0))
 {
   if (!farField)
   {
-    return ChooseCutoffForErrorBudget(lights, budget, ComputeErrorBudgetSamples(lights), windowed);
+    return ChooseCutoffForErrorBudget(
+      lights, budget, ComputeErrorBudgetSamples(lights, regionLo, regionHi), windowed);
   }
   std::vector<PreparedLight> culled;
   std::copy_if(lights.begin(), lights.end(), std::back_inserter(culled),
@@ -124,7 +128,8 @@ inline double ChooseBudgetCutoff(const std::vector<PreparedLight>& lights, doubl
   {
     return cutoff;
   }
-  return ChooseCutoffForErrorBudget(culled, budget, ComputeErrorBudgetSamples(culled), windowed);
+  return ChooseCutoffForErrorBudget(
+    culled, budget, ComputeErrorBudgetSamples(culled, regionLo, regionHi), windowed);
 }
 
 /// A regular grid of nodes over an axis-aligned box.

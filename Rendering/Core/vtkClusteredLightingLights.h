@@ -388,8 +388,36 @@ inline glm::dvec3 ComputeCutoffTailBound(const glm::dvec3& pointVC,
 }
 
 /**
+ * VTK's spot factor of light `l` at world point p, as the shading code evaluates it: 1 for
+ * a point light (and at the light itself), 0 outside the cone, pow(cos(angle), Exponent)
+ * inside. A cosine within 1e-6 of the cone's counts as inside, with the cosine taken 1e-6
+ * larger (an upper bound of the factor the float shading code may compute there).
+ */
+inline double EvaluateSpotFactor(const glm::dvec3& p, const PreparedLight& l)
+{
+  if (!(l.CosCone > -1.5))
+  {
+    return 1.0;
+  }
+  const glm::dvec3 toP = p - l.PositionWC;
+  const double d = glm::length(toP);
+  if (!(d > 0.0) || !std::isfinite(d))
+  {
+    return 1.0;
+  }
+  const double cosAngle = glm::dot(toP / d, l.DirectionWC);
+  if (cosAngle < l.CosCone - 1e-6)
+  {
+    return 0.0;
+  }
+  return std::pow(std::min(std::max(cosAngle + 1e-6, 0.0), 1.0), l.Exponent);
+}
+
+/**
  * Error budget. The image error of the cutoff at a point p is at most the sum of the cut
- * tails there (ComputeCutoffTailBound, for a white material with Diffuse + Specular <= 1).
+ * tails there (ComputeCutoffTailBound, for a white material with Diffuse + Specular <= 1;
+ * here with each spot light's own factor at p, EvaluateSpotFactor: a spot light's tail
+ * reaches only the points inside its cone).
  * As the cutoff decreases every radius grows, so that sum can only decrease: the largest
  * cutoff whose bound stays within `budget` at every sample point is found by bisection on
  * log(cutoff) in [minCutoff, maxCutoff]. Returns minCutoff if even that is not enough
@@ -409,7 +437,7 @@ inline double ComputeTailAtCutoff(
       continue; // culled where the model ends: nothing is cut
     }
     const double d = glm::length(p - l.PositionWC);
-    const double c = peak * EvaluateAttenuation(d, l.Attenuation);
+    const double c = peak * EvaluateAttenuation(d, l.Attenuation) * EvaluateSpotFactor(p, l);
     if (d >= r)
     {
       tail += EvaluateLightModel(c, d, l, windowed);
@@ -423,14 +451,33 @@ inline double ComputeTailAtCutoff(
 }
 
 /// Sample points for the error budget: a 6 x 6 x 6 grid over the lights' bounding box
-/// (grown by 10%) and up to 64 light positions, where dense groups put their tails.
-inline std::vector<glm::dvec3> ComputeErrorBudgetSamples(const std::vector<PreparedLight>& lights)
+/// (grown by 10%), up to 64 light positions, where dense groups put their tails, and, when
+/// [regionLo, regionHi] is a valid box (the geometry to shade), a 6 x 6 x 6 grid over it:
+/// a spot light's tail reaches only its cone (EvaluateSpotFactor), which may miss every
+/// point near the lights (spot lights in a plane, shining away from it) and light the
+/// geometry.
+inline std::vector<glm::dvec3> ComputeErrorBudgetSamples(const std::vector<PreparedLight>& lights,
+  const glm::dvec3& regionLo = glm::dvec3(1.0), const glm::dvec3& regionHi = glm::dvec3(-1.0))
 {
   std::vector<glm::dvec3> samples;
   if (lights.empty())
   {
     return samples;
   }
+  auto addGrid = [&samples](const glm::dvec3& lo, const glm::dvec3& hi)
+  {
+    for (int i = 0; i < 6; ++i)
+    {
+      for (int j = 0; j < 6; ++j)
+      {
+        for (int k = 0; k < 6; ++k)
+        {
+          samples.push_back(
+            lo + (hi - lo) * glm::dvec3((i + 0.5) / 6, (j + 0.5) / 6, (k + 0.5) / 6));
+        }
+      }
+    }
+  };
   glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
   for (const PreparedLight& l : lights)
   {
@@ -438,22 +485,21 @@ inline std::vector<glm::dvec3> ComputeErrorBudgetSamples(const std::vector<Prepa
     hi = glm::max(hi, l.PositionWC);
   }
   const glm::dvec3 grow = 0.05 * (hi - lo);
-  lo -= grow;
-  hi += grow;
-  for (int i = 0; i < 6; ++i)
-  {
-    for (int j = 0; j < 6; ++j)
-    {
-      for (int k = 0; k < 6; ++k)
-      {
-        samples.push_back(lo + (hi - lo) * glm::dvec3((i + 0.5) / 6, (j + 0.5) / 6, (k + 0.5) / 6));
-      }
-    }
-  }
+  addGrid(lo - grow, hi + grow);
   const std::size_t step = std::max<std::size_t>(1, lights.size() / 64);
   for (std::size_t i = 0; i < lights.size() && samples.size() < 216 + 64; i += step)
   {
     samples.push_back(lights[i].PositionWC);
+  }
+  bool region = true;
+  for (int a = 0; a < 3; ++a)
+  {
+    region = region && std::isfinite(regionLo[a]) && std::isfinite(regionHi[a]) &&
+      regionLo[a] <= regionHi[a];
+  }
+  if (region)
+  {
+    addGrid(regionLo, regionHi);
   }
   return samples;
 }

@@ -236,6 +236,67 @@ TEST(ErrorBudget, ChosenCutoffMeetsTheBudgetAndIsTight)
   EXPECT_DOUBLE_EQ(ChooseCutoffForErrorBudget(p.Lights, 1e6, samples), 1.0 / 16.0);
 }
 
+TEST(ErrorBudget, ASpotLightsTailReachesOnlyThePointsInsideItsCone)
+{
+  LightSource spot;
+  spot.Attenuation = glm::dvec3(1, 0, 1);
+  spot.DirectionWC = glm::dvec3(0, -2, 0);
+  spot.ConeAngle = 30.0;
+  spot.Exponent = 2.0;
+  LightSource point = spot;
+  point.ConeAngle = 180.0;
+  const LightPreparationOptions options{ 1.0 / 16.0, false };
+  const PreparedLight s = PrepareLights({ spot }, options).Lights[0];
+  const PreparedLight q = PrepareLights({ point }, options).Lights[0];
+  const double pi = 3.14159265358979323846;
+  auto at = [](double degrees, double d)
+  {
+    const double a = degrees * 3.14159265358979323846 / 180.0;
+    return glm::dvec3(d * std::sin(a), -d * std::cos(a), 0.0); // degrees from the axis
+  };
+  const double d = 5.0; // beyond both radii at 1/16
+  ASSERT_LT(s.Radius, d);
+  const double full = ComputeTailAtCutoff(at(0.0, d), { q }, options.Cutoff, false);
+  ASSERT_GT(full, 0.0);
+  EXPECT_NEAR(ComputeTailAtCutoff(at(0.0, d), { s }, options.Cutoff, false), full, 1e-5 * full)
+    << "on the axis the spot factor is 1";
+  const double c20 = std::cos(20.0 * pi / 180.0);
+  EXPECT_NEAR(
+    ComputeTailAtCutoff(at(20.0, d), { s }, options.Cutoff, false), full * c20 * c20, 1e-5 * full)
+    << "inside the cone: pow(cos, exponent)";
+  EXPECT_EQ(ComputeTailAtCutoff(at(45.0, d), { s }, options.Cutoff, false), 0.0)
+    << "outside the cone: no tail";
+  EXPECT_EQ(ComputeTailAtCutoff(at(180.0, d), { s }, options.Cutoff, false), 0.0);
+  EXPECT_NEAR(ComputeTailAtCutoff(at(45.0, d), { q }, options.Cutoff, false), full, 1e-12)
+    << "a point light's tail reaches every direction";
+
+  // So spot lights need a looser cutoff for the same budget than the same lights as point
+  // lights (here 200 spot lights of 60 degrees pointing down in a ball, 1.11 times looser:
+  // below the ball most of them shine on the same points).
+  std::vector<LightSource> spots(200), points(200);
+  for (std::size_t i = 0; i < spots.size(); ++i)
+  {
+    spots[i] = spot;
+    spots[i].ConeAngle = 60.0;
+    spots[i].Exponent = 1.0;
+    spots[i].Attenuation = glm::dvec3(1, 0, 8);
+    spots[i].PositionWC =
+      glm::dvec3(std::sin(i * 2.3) * 3, std::cos(i * 1.1) * 3, std::sin(i * 0.37) * 3);
+    points[i] = spots[i];
+    points[i].ConeAngle = 180.0;
+  }
+  const PreparedLights ps = PrepareLights(spots, LightPreparationOptions());
+  const PreparedLights pp = PrepareLights(points, LightPreparationOptions());
+  const std::vector<glm::dvec3> samples = ComputeErrorBudgetSamples(pp.Lights);
+  const double spotCutoff = ChooseCutoffForErrorBudget(ps.Lights, 4.0 / 255.0, samples);
+  const double pointCutoff = ChooseCutoffForErrorBudget(pp.Lights, 4.0 / 255.0, samples);
+  EXPECT_GT(spotCutoff, 1.05 * pointCutoff);
+  for (const glm::dvec3& x : samples)
+  {
+    EXPECT_LE(ComputeTailAtCutoff(x, ps.Lights, spotCutoff, false), 4.0 / 255.0);
+  }
+}
+
 TEST(LightModel, ExplicitRadiusEndsTheLightAndWindowsThere)
 {
   LightSource s;

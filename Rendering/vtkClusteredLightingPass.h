@@ -192,7 +192,8 @@ public:
    * white material with Diffuse + Specular at most 1). When above 0, the pass ignores
    * ContributionCutoff and, whenever the lights change, picks the largest cutoff whose
    * summed cut tails stay within the budget at sample points spread over the lights'
-   * bounding box and at the lights themselves (a conservative bound: N.L is taken as 1).
+   * bounding box, at the lights themselves and over the box of the geometry to shade (N.L
+   * taken as 1; a spot light's tail counted only inside its cone).
    * With FarField on, the lights it splits have no cut tail (their far parts are added
    * back), so only the culled lights (spot lights, explicit radii) choose the cutoff that
    * way. The far field's error is held to the budget by its resolution instead: the pass

@@ -459,8 +459,7 @@ void vtkClusteredLightingAssigner::PrepareLights(const vtkClusteredLightingAssig
     this->Prepared = vtkClusteredLighting::PrepareLights(lights.Sources, options, nameOf);
   }
   this->EffectiveCutoff = options.Cutoff;
-  this->EffectiveFarFieldCutoff =
-    options.FarFieldCutoff > 0.0 ? options.FarFieldCutoff : options.Cutoff;
+  this->EffectiveFarFieldCutoff = options.GetFarFieldCutoff();
   this->FarFieldPlan = PlanFarField(
     this->Prepared.Lights, this->RegionLo, this->RegionHi, farOptions, this->RegionAnchor);
   this->Result.FarFieldNodesTarget = this->FarFieldPlan.Active ? farOptions.TargetNodes : 0;

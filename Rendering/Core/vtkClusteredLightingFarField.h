@@ -109,8 +109,8 @@ inline bool IsFarFieldLight(const PreparedLight& l)
  * light with the far field off) choose the cutoff, with ChooseCutoffForErrorBudget over
  * their tails at ComputeErrorBudgetSamples (with [regionLo, regionHi], the box of the
  * geometry to shade, when valid); with none, `cutoff` (the pass's ContributionCutoff) is
- * kept. Lowering the
- * cutoff of split lights would only move work from the far field to the near field.
+ * kept. Lowering the cutoff of split lights would only move work from the far field to the
+ * near field.
  */
 inline double ChooseBudgetCutoff(const std::vector<PreparedLight>& lights, double budget,
   bool farField, double cutoff, bool windowed = false, const glm::dvec3& regionLo = glm::dvec3(1.0),

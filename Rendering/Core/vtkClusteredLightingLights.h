@@ -89,6 +89,12 @@ struct LightPreparationOptions
   /// lights: IsFarFieldLight once prepared), whose error a budget holds apart from the
   /// culled lights' tails (vtkClusteredLightingFarFieldBudget.h); 0: Cutoff for every light.
   double FarFieldCutoff = 0.0;
+
+  /// The cutoff the lights a far field may split take: FarFieldCutoff when set, else Cutoff.
+  double GetFarFieldCutoff() const
+  {
+    return this->FarFieldCutoff > 0.0 ? this->FarFieldCutoff : this->Cutoff;
+  }
 };
 
 struct PreparedLights
@@ -264,8 +270,8 @@ inline PreparedLights PrepareLights(const std::vector<LightSource>& sources,
     p.Color = s.Color * s.Intensity;
     const double peak = std::max(p.Color.x, std::max(p.Color.y, p.Color.z));
     const bool splittable = !s.HasRadius && !s.IsSpot();
-    double r = ComputeInfluenceRadius(peak, s.Attenuation,
-      splittable && options.FarFieldCutoff > 0.0 ? options.FarFieldCutoff : options.Cutoff);
+    double r = ComputeInfluenceRadius(
+      peak, s.Attenuation, splittable ? options.GetFarFieldCutoff() : options.Cutoff);
     if (s.HasRadius)
     {
       r = std::min(r, s.Radius);
@@ -413,6 +419,49 @@ inline double EvaluateSpotFactor(const glm::dvec3& p, const PreparedLight& l)
   return std::pow(std::min(std::max(cosAngle + 1e-6, 0.0), 1.0), l.Exponent);
 }
 
+/// Each light's culling radius at `cutoff` (the radius PrepareLights gives it, capped at its
+/// explicit radius), as ComputeTailAtRadii takes them.
+inline std::vector<double> ComputeCutoffRadii(
+  const std::vector<PreparedLight>& lights, double cutoff)
+{
+  std::vector<double> radii(lights.size());
+  for (std::size_t i = 0; i < lights.size(); ++i)
+  {
+    const PreparedLight& l = lights[i];
+    const double peak = std::max(l.Color.x, std::max(l.Color.y, l.Color.z));
+    radii[i] = std::min(ComputeInfluenceRadius(peak, l.Attenuation, cutoff), l.ExplicitRadius);
+  }
+  return radii;
+}
+
+/// ComputeTailAtCutoff with the lights' radii at that cutoff (ComputeCutoffRadii) given.
+inline double ComputeTailAtRadii(const glm::dvec3& p, const std::vector<PreparedLight>& lights,
+  const std::vector<double>& radii, bool windowed)
+{
+  double tail = 0.0;
+  for (std::size_t i = 0; i < lights.size(); ++i)
+  {
+    const PreparedLight& l = lights[i];
+    const double r = radii[i];
+    if (r >= l.ExplicitRadius)
+    {
+      continue; // culled where the model ends: nothing is cut
+    }
+    const double peak = std::max(l.Color.x, std::max(l.Color.y, l.Color.z));
+    const double d = glm::length(p - l.PositionWC);
+    const double c = peak * EvaluateAttenuation(d, l.Attenuation) * EvaluateSpotFactor(p, l);
+    if (d >= r)
+    {
+      tail += EvaluateLightModel(c, d, l, windowed);
+    }
+    else if (windowed && std::isinf(l.ExplicitRadius))
+    {
+      tail += c * (1.0 - EvaluateFalloffWindow(d, r));
+    }
+  }
+  return tail;
+}
+
 /**
  * Error budget. The image error of the cutoff at a point p is at most the sum of the cut
  * tails there (ComputeCutoffTailBound, for a white material with Diffuse + Specular <= 1;
@@ -426,28 +475,7 @@ inline double EvaluateSpotFactor(const glm::dvec3& p, const PreparedLight& l)
 inline double ComputeTailAtCutoff(
   const glm::dvec3& p, const std::vector<PreparedLight>& lights, double cutoff, bool windowed)
 {
-  double tail = 0.0;
-  for (const PreparedLight& l : lights)
-  {
-    const double peak = std::max(l.Color.x, std::max(l.Color.y, l.Color.z));
-    const double r =
-      std::min(ComputeInfluenceRadius(peak, l.Attenuation, cutoff), l.ExplicitRadius);
-    if (r >= l.ExplicitRadius)
-    {
-      continue; // culled where the model ends: nothing is cut
-    }
-    const double d = glm::length(p - l.PositionWC);
-    const double c = peak * EvaluateAttenuation(d, l.Attenuation) * EvaluateSpotFactor(p, l);
-    if (d >= r)
-    {
-      tail += EvaluateLightModel(c, d, l, windowed);
-    }
-    else if (windowed && std::isinf(l.ExplicitRadius))
-    {
-      tail += c * (1.0 - EvaluateFalloffWindow(d, r));
-    }
-  }
-  return tail;
+  return ComputeTailAtRadii(p, lights, ComputeCutoffRadii(lights, cutoff), windowed);
 }
 
 /// Sample points for the error budget: a 6 x 6 x 6 grid over the lights' bounding box
@@ -508,28 +536,27 @@ inline double ChooseCutoffForErrorBudget(const std::vector<PreparedLight>& light
   const std::vector<glm::dvec3>& samples, bool windowed = false, double minCutoff = 1e-7,
   double maxCutoff = 1.0 / 16.0)
 {
-  auto worst = [&](double cutoff)
+  // Whether the tails at `cutoff` stay within the budget at every sample: the radii once per
+  // cutoff, and the first sample over the budget decides.
+  auto meets = [&](double cutoff)
   {
-    double w = 0.0;
-    for (const glm::dvec3& p : samples)
-    {
-      w = std::max(w, ComputeTailAtCutoff(p, lights, cutoff, windowed));
-    }
-    return w;
+    const std::vector<double> radii = ComputeCutoffRadii(lights, cutoff);
+    return std::none_of(samples.begin(), samples.end(),
+      [&](const glm::dvec3& p) { return ComputeTailAtRadii(p, lights, radii, windowed) > budget; });
   };
-  if (worst(maxCutoff) <= budget)
+  if (meets(maxCutoff))
   {
     return maxCutoff;
   }
-  if (worst(minCutoff) > budget)
+  if (!meets(minCutoff))
   {
     return minCutoff;
   }
-  double lo = std::log(minCutoff), hi = std::log(maxCutoff); // worst(lo) <= budget < worst(hi)
+  double lo = std::log(minCutoff), hi = std::log(maxCutoff); // meets(lo), not meets(hi)
   for (int it = 0; it < 24; ++it)
   {
     const double mid = 0.5 * (lo + hi);
-    (worst(std::exp(mid)) <= budget ? lo : hi) = mid;
+    (meets(std::exp(mid)) ? lo : hi) = mid;
   }
   return std::exp(lo);
 }

@@ -195,7 +195,7 @@ public:
    * bounding box, at the lights themselves and over the box of the geometry to shade (N.L
    * taken as 1; a spot light's tail counted only inside its cone).
    * With FarField on, the lights it splits have no cut tail (their far parts are added
-   * back), so only the culled lights (spot lights, explicit radii) choose the cutoff that
+   * back), so only the culled lights (explicit radii) choose the cutoff that
    * way. The far field's error is held to the budget by its resolution instead: the pass
    * ignores FarFieldResolution and takes the coarsest of 4,096 to 262,144 nodes (powers
    * of two) whose stated bound, summarized over probe points as ComputeFarFieldErrorBound
@@ -234,15 +234,15 @@ public:
   //@}
 
   /**
-   * The contribution cutoff the last light update gave the lights it culls (spot lights,
-   * explicit radii; every light with FarField off): ContributionCutoff, or the one the
+   * The contribution cutoff the last light update gave the lights it culls (explicit
+   * radii; every light with FarField off): ContributionCutoff, or the one the
    * error budget chose for their tails. A fraction of full brightness.
    */
   vtkGetMacro(EffectiveCutoff, double);
 
   /**
    * The contribution cutoff the last light update gave the lights the far field may split
-   * (no explicit radius, not spot lights; their near radii): ContributionCutoff, or the
+   * (no explicit radius, spot lights included; their near radii): ContributionCutoff, or the
    * one the error budget chose for the far field (ErrorBudgetInSteps). With no light to
    * split (FarField off, or every light culled) the same as GetEffectiveCutoff(). A
    * fraction of full brightness.
@@ -271,7 +271,8 @@ public:
   /**
    * Far field: what each light's near radius cuts off is added back, not dropped. Every
    * light without an explicit radius (VTK's inverse-square lights, always-on lights with
-   * attenuation (1, 0, 0), ...), except spot lights, is split smoothly at its near radius:
+   * attenuation (1, 0, 0), spot lights, ...) is split smoothly at its near radius (a spot
+   * light at its cutoff radius, its cone in both parts):
    * the near part is evaluated exactly through the clusters, the far part is summed on a
    * world-space grid over the visible geometry (order-2 moments of its directions per node)
    * and added to every fragment by trilinear interpolation, diffuse and Phong specular.

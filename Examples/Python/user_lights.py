@@ -14,10 +14,11 @@ force in 8-bit steps and writes the three images. Exits with status 1 if the far
 does not bring the image closer to brute force. --pbr METALLIC (and --roughness) makes
 both actors PBR. --budget STEPS (repeatable) also renders with that ErrorBudgetInSteps,
 writes its image and prints the cutoffs and the far field's resolution it chose and its
-stated bound. --spots FRACTION makes that fraction of the lights spot lights (culled by
-their cutoff, never split: the budget shares itself between their tails and the far
-field); --counts prints the lights evaluated and reaching per pixel of each clustered
-render.
+stated bound. --spots FRACTION makes that fraction of the lights spot lights (split by
+the far field like the others since 2026-11-30, at their cutoff radius, cones included);
+--counts prints the lights evaluated and reaching per pixel of each clustered render. The
+default render's line also gives the far field's build time and how many lights it
+splits.
 
     PYTHONPATH=build/lib/python3/dist-packages \\
       scripts/with-display.sh /usr/bin/python3 Examples/Python/user_lights.py
@@ -173,6 +174,8 @@ def main():
         image, pixels = grab(window)
         write_png(image, "%s-%s.png" % (args.prefix, name))
         results[name] = (ms, pixels)
+        if name == "default":
+            default_build = (pass_.GetLastFarFieldBuildTime(), pass_.GetNumberOfFarFieldLights())
         if args.counts and name != "brute":
             counts[name] = light_counts(window, pass_)
     pass_.SetFarField(True)
@@ -206,15 +209,17 @@ def main():
         rmse[name] = numpy.sqrt((diff.astype(float) ** 2).mean())
         print("%-12s %8.1f ms (%.1fx faster than brute force)  max err %d steps  RMSE %.2f"
               % (name, ms, brute_ms / ms, diff.max(), numpy.sqrt((diff.astype(float) ** 2).mean())))
+        if name == "default":
+            print("             far field build %.1f ms, %d lights split" % default_build)
         if name in counts:
             print("             %.2f lights evaluated, %.2f reaching per pixel" % counts[name])
         if name in budgets:
             choice_ms, cutoff, culled_cutoff, nodes, bound, met, build_ms = budgets[name]
-            spots = (", spot lights' cutoff 1/%.0f" % (1.0 / culled_cutoff)
-                     if args.spots > 0.0 else "")
+            culled = (", culled lights' cutoff 1/%.0f" % (1.0 / culled_cutoff)
+                      if culled_cutoff != pass_.GetContributionCutoff() else "")
             print("             cutoff 1/%.0f%s, far field %d nodes (build %.1f ms), stated "
                   "bound %.2f steps over probes, %s; first frame %.0f ms"
-                  % (1.0 / cutoff, spots, nodes, build_ms, bound,
+                  % (1.0 / cutoff, culled, nodes, build_ms, bound,
                      "met" if met else "NOT met", choice_ms))
     if not rmse["default"] < rmse["farfield-off"]:
         print("the far field did not bring the image closer to brute force")

@@ -78,9 +78,10 @@ struct ViewData
   double ClusterCoverage = 0.0;
 };
 
-/// clLightData: (color * intensity, exponent), (a0, a1, a2, cos(cone) or -2). The exponent
-/// of a point light is unused by the shading code; -1 there marks a light split into a
-/// near and a far part (PreparedLight::FarField): its near part is windowed at its radius.
+/// clLightData: (color * intensity, exponent), (a0, a1, a2, cos(cone) or -2). A negative
+/// exponent slot marks a light split into a near and a far part (PreparedLight::FarField):
+/// its near part is windowed at its radius, and a spot light's exponent e is stored as
+/// -1 - e (exponents are >= 0; a point light's is unused and stored as 1).
 inline std::vector<float> PackLightData(const std::vector<PreparedLight>& lights)
 {
   std::vector<float> out(lights.size() * FloatsPerLightRecord);
@@ -91,7 +92,7 @@ inline std::vector<float> PackLightData(const std::vector<PreparedLight>& lights
     o[0] = static_cast<float>(l.Color.x);
     o[1] = static_cast<float>(l.Color.y);
     o[2] = static_cast<float>(l.Color.z);
-    o[3] = l.FarField ? -1.0f : static_cast<float>(l.Exponent);
+    o[3] = static_cast<float>(l.FarField ? -1.0 - l.Exponent : l.Exponent);
     o[4] = static_cast<float>(l.Attenuation.x);
     o[5] = static_cast<float>(l.Attenuation.y);
     o[6] = static_cast<float>(l.Attenuation.z);

@@ -35,8 +35,12 @@
  * What the far field holds. Lights without an explicit radius (VTK's inverse-square and
  * other attenuations, and always-on lights, attenuation (1, 0, 0)) are split at their near
  * radius. Lights with an explicit radius are left out: the radius ends the light, nothing
- * is cut. Spot lights are left out as well (their hard cone edge does not interpolate);
- * they are cut at their cutoff radius as before, with the per-light bound of the cutoff.
+ * is cut. Spot lights are split too, with their spot factor in both parts, but at their
+ * cutoff radius: the far field holds only the tail the cutoff used to drop. Their far part
+ * has the cone's hard edge, which trilinear interpolation spreads over a cell; the stated
+ * bound counts that spot light by spot light (each is a source of its own in the build,
+ * never grouped), and keeping the near radius at the cutoff keeps what spreads as faint
+ * as the tail (since 2026-11-30; before, spot tails were dropped).
  *
  * Error. Three sources: the angular truncation (order 2 of the kernel: the pointwise
  * error of the diffuse kernel lies in [-0.040, +0.094] per unit g, far less when the far
@@ -95,22 +99,38 @@ inline double EvaluateFarPart(double c, double d, double nearRadius)
   return c * (1.0 - EvaluateSplitWindow(d / nearRadius));
 }
 
-/// Whether a light's far part goes to the far field (see the file description).
+/// Whether a light's far part goes to the far field (see the file description): every
+/// light without an explicit radius, spot lights included.
 inline bool IsFarFieldLight(const PreparedLight& l)
 {
-  return std::isinf(l.ExplicitRadius) && l.CosCone < -1.5;
+  return std::isinf(l.ExplicitRadius);
+}
+
+/// A spot light the far field splits: it keeps its cutoff radius as its near radius
+/// (PlanFarField never caps it, nor counts it in the near field's budget), is never grouped
+/// with other lights in the build (vtkClusteredLightingFarFieldTree.h), and its far part
+/// holds its spot factor (ComputeFarContribution).
+inline bool IsFarFieldSpot(const PreparedLight& l)
+{
+  return IsFarFieldLight(l) && l.CosCone > -1.5;
+}
+
+/// A far-field light whose near radius PlanFarField chooses (not a spot light).
+inline bool IsFarFieldPointLight(const PreparedLight& l)
+{
+  return IsFarFieldLight(l) && !(l.CosCone > -1.5);
 }
 
 /**
  * The cutoff an error budget asks for (vtkClusteredLightingPass::ErrorBudget). The budget
  * bounds the cut tails. With the far field on, a light it splits has no cut tail: its far
  * part is added back, within the far field's own stated bound (ComputeFarFieldErrorBound).
- * So only the lights that are culled (spot lights and lights with an explicit radius; every
- * light with the far field off) choose the cutoff, with ChooseCutoffForErrorBudget over
- * their tails at ComputeErrorBudgetSamples (with [regionLo, regionHi], the box of the
- * geometry to shade, when valid); with none, `cutoff` (the pass's ContributionCutoff) is
- * kept. Lowering the cutoff of split lights would only move work from the far field to the
- * near field.
+ * So only the lights that are culled (lights with an explicit radius; every light with the
+ * far field off; since 2026-11-30 spot lights are split too) choose the cutoff, with
+ * ChooseCutoffForErrorBudget over their tails at ComputeErrorBudgetSamples (with [regionLo,
+ * regionHi], the box of the geometry to shade, when valid); with none, `cutoff` (the pass's
+ * ContributionCutoff) is kept. Lowering the cutoff of split lights would only move work from the
+ * far field to the near field.
  */
 inline double ChooseBudgetCutoff(const std::vector<PreparedLight>& lights, double budget,
   bool farField, double cutoff, bool windowed = false, const glm::dvec3& regionLo = glm::dvec3(1.0),
@@ -278,8 +298,8 @@ inline FarFieldGrid ComputeFarFieldGrid(const glm::dvec3& lo, const glm::dvec3& 
  * Decides the far field for a set of prepared lights and a region (the world box of the
  * geometry to be shaded). The grid comes first: its spacing h gives `TargetNodes` nodes
  * over the region (each axis counted at least 1/16 of the longest, so that flat regions
- * keep a sensible spacing). Then every far-field light (IsFarFieldLight: no explicit
- * radius, not a spot) gets its near radius:
+ * keep a sensible spacing). Then every far-field point light (IsFarFieldPointLight: no
+ * explicit radius, not a spot) gets its near radius:
  *
  *   r_j = min(cutoff radius_j, max(CellsPerRadius * h, R))
  *
@@ -301,8 +321,11 @@ inline FarFieldGrid ComputeFarFieldGrid(const glm::dvec3& lo, const glm::dvec3& 
  * accuracy, see the code) and R is chosen for NearBudget among the others. Lights below
  * the cutoff everywhere (radius 0) go to the far field whole. Their
  * PreparedLight::Radius (the culling radius) becomes the near radius and
- * PreparedLight::FarField is set. Does nothing when disabled, when no light qualifies or
- * when every qualifying light's sphere holds the whole region within the budget. The grid
+ * PreparedLight::FarField is set. Spot lights (IsFarFieldSpot) keep their cutoff radius
+ * whatever the budget and are not counted in it (their near field costs what it did when
+ * their tails were dropped); each whose sphere does not hold the whole region is split
+ * there. Does nothing when disabled, when no light qualifies or when every qualifying
+ * light's sphere holds the whole region within the budget. The grid
  * has node planes through `anchor` (ComputeFarFieldGrid; the pass gives the geometry's
  * lower corner, the overload without one the region's).
  */
@@ -362,7 +385,7 @@ inline FarFieldPlan PlanFarField(std::vector<PreparedLight>& lights, glm::dvec3 
     double sum = 0.0;
     for (const PreparedLight& l : lights)
     {
-      if (IsFarFieldLight(l))
+      if (IsFarFieldPointLight(l))
       {
         const double r = std::min(l.Radius, std::max(smallest, R));
         sum += std::min(r * r * r, unit);
@@ -395,7 +418,7 @@ inline FarFieldPlan PlanFarField(std::vector<PreparedLight>& lights, glm::dvec3 
     return l.Radius >= glm::length(corner);
   };
   const bool allHoldTheRegion = std::all_of(lights.begin(), lights.end(),
-    [&](const PreparedLight& l) { return !IsFarFieldLight(l) || holdsRegion(l); });
+    [&](const PreparedLight& l) { return !IsFarFieldPointLight(l) || holdsRegion(l); });
   if (whole <= budget || (whole <= exactBudget && allHoldTheRegion))
   {
     // Every light keeps its cutoff radius; the far field holds only the tails past it, of
@@ -436,7 +459,8 @@ inline FarFieldPlan PlanFarField(std::vector<PreparedLight>& lights, glm::dvec3 
   // error for most of the budget (300 always-on lights, near budget 16 -> 1: RMSE 1.0 ->
   // 1.05 steps, 411 -> 288 ms), so they keep the smallest radius and the budget goes to
   // the lights that fall off.
-  auto alwaysOn = [](const PreparedLight& l) { return IsFarFieldLight(l) && std::isinf(l.Radius); };
+  auto alwaysOn = [](const PreparedLight& l)
+  { return IsFarFieldPointLight(l) && std::isinf(l.Radius); };
   if (std::any_of(lights.begin(), lights.end(), alwaysOn))
   {
     const double exactR = fillBudget(exactBudget);
@@ -456,13 +480,19 @@ inline FarFieldPlan PlanFarField(std::vector<PreparedLight>& lights, glm::dvec3 
   }
   plan.NearRadiusCap = std::max(smallest, R);
   plan.NearLightsPerPoint = cubes(R) / unit;
+  plan.NumberOfFarFieldLights = 0;
   for (PreparedLight& l : lights)
   {
-    if (IsFarFieldLight(l))
+    if (IsFarFieldPointLight(l))
     {
       l.Radius = std::min(l.Radius, plan.NearRadiusCap);
       l.FarField = true;
     }
+    else if (IsFarFieldSpot(l))
+    {
+      l.FarField = !holdsRegion(l);
+    }
+    plan.NumberOfFarFieldLights += l.FarField ? 1 : 0;
   }
   plan.SharedColor = options.SharedColor ? FindFarFieldSharedColor(lights) : glm::dvec3(0.0);
   return plan;
@@ -513,19 +543,35 @@ inline void AccumulateFarMoments(
   }
 }
 
-/// The far part of light l at point p, its unit direction from p, and whether it has one.
+/// The far part of light l at point p (a spot light's with VTK's spot factor at p,
+/// EvaluateSpotFactor without slack: 0 outside the cone), its unit direction from p, and
+/// whether it has one. The far-field build sums spot lights with this very function, so
+/// that the stated bound sees at each node what the build stored.
 inline bool ComputeFarContribution(
   const PreparedLight& l, double nearRadius, const glm::dvec3& p, double& far, glm::dvec3& toLight)
 {
   const glm::dvec3 v = l.PositionWC - p;
   const double d = glm::length(v);
-  far = EvaluateFarPart(EvaluateAttenuation(d, l.Attenuation), d, nearRadius);
-  if (!(far > 0.0) || !(d > 0.0))
+  far = 0.0;
+  if (!(d > 0.0))
   {
     return false;
   }
   toLight = v / d;
-  return true;
+  double spot = 1.0;
+  if (l.CosCone > -1.5)
+  {
+    // The cosine from the axis to p: -toLight, as EvaluateSpotFactor takes it.
+    const double c = -glm::dot(toLight, l.DirectionWC);
+    if (c < l.CosCone)
+    {
+      return false;
+    }
+    const double clamped = std::min(std::max(c, 0.0), 1.0);
+    spot = l.Exponent == 1.0 ? clamped : std::pow(clamped, l.Exponent);
+  }
+  far = spot * EvaluateFarPart(EvaluateAttenuation(d, l.Attenuation), d, nearRadius);
+  return far > 0.0;
 }
 
 /**

@@ -299,6 +299,37 @@ inline void ComputeFarFieldErrorBounds(const FarFieldShadingPoint* points, int c
 
   // The interpolated grid value, atom by atom, and the float term's far light.
   glm::dvec3 farLightAtCorners(0.0);
+  // A spot light at a corner within 1e-5 of its cone's cosine: the build's single
+  // precision may have put the corner on either side of the edge (AccumulateSpotBlock),
+  // so its value there, taken as inside, counts in full for each point's quantities.
+  std::vector<double> edge(std::size_t{ 3 } * Q * n, 0.0);
+  auto addEdge = [&](const Corner& c, std::size_t l)
+  {
+    const PreparedLight& spot = lights[l];
+    if (!(spot.CosCone > -1.5))
+    {
+      return;
+    }
+    PreparedLight wider = spot;
+    wider.CosCone -= 1e-5;
+    double far;
+    glm::dvec3 u;
+    if (!ComputeFarContribution(wider, radii[l], c.Position, far, u) ||
+      !(-glm::dot(u, spot.DirectionWC) < spot.CosCone + 1e-5))
+    {
+      return;
+    }
+    for (std::size_t k = 0; k < n; ++k)
+    {
+      double scratch[3 * Q] = {};
+      Detail::AddBoundQuantities(points[k], qd, qn[k], spot.Color, far, u, scratch);
+      for (int q = 0; q < 3 * Q; ++q)
+      {
+        edge[std::size_t{ 3 } * Q * k + static_cast<std::size_t>(q)] +=
+          c.Weight * std::abs(scratch[q]);
+      }
+    }
+  };
   for (const Corner& c : corners)
   {
     for (const Source& src : *c.List)
@@ -329,6 +360,7 @@ inline void ComputeFarFieldErrorBounds(const FarFieldShadingPoint* points, int c
       else
       {
         const std::size_t l = static_cast<std::size_t>(src.Light);
+        addEdge(c, l);
         if (!ComputeFarContribution(lights[l], radii[l], c.Position, far, u))
         {
           continue;
@@ -355,13 +387,16 @@ inline void ComputeFarFieldErrorBounds(const FarFieldShadingPoint* points, int c
   }
 
   // The exact values at the point, atom by atom; the angular term light by light. Every
-  // light of the tree is in every corner's list, so its atom has a slot already.
+  // light of the tree is in every corner's list, so its atom has a slot already; a spot
+  // light whose cone reaches no corner's block gets one here (its grid value is 0).
   std::vector<double> exact(interpolated.size(), 0.0);
   std::vector<glm::dvec3> angularDiffuse(n, glm::dvec3(0.0)), angularSpecular(n, glm::dvec3(0.0));
   std::vector<glm::dvec3> exactNN(n, glm::dvec3(0.0)), exactRR(n, glm::dvec3(0.0));
   glm::dvec3 exactS(0.0); // the far light at the point: S exactly
-  for (int l : tree.Order)
+  const std::size_t inTree = tree.Order.size();
+  for (std::size_t q = 0; q < inTree + tree.Spots.size(); ++q)
   {
+    const int l = q < inTree ? tree.Order[q] : tree.Spots[q - inTree];
     const std::size_t li = static_cast<std::size_t>(l);
     double far;
     glm::dvec3 u;
@@ -396,6 +431,10 @@ inline void ComputeFarFieldErrorBounds(const FarFieldShadingPoint* points, int c
     for (int ch = 0; ch < 3; ++ch)
     {
       double delta[Q] = {};
+      for (int q = 0; q < Q; ++q)
+      {
+        delta[q] = edge[std::size_t{ 3 } * Q * k + static_cast<std::size_t>(ch * Q + q)];
+      }
       for (std::size_t a = 0; a < atoms; ++a)
       {
         for (int q = 0; q < Q; ++q)
@@ -456,11 +495,12 @@ struct FarFieldBoundSummary
 inline int GetFarFieldBoundProbeCount(
   const FarFieldBuildInputs& in, double lightEvaluations = 16777216.0)
 {
-  if (!in.Grid || !in.Lights || !in.Tree || in.Tree->Nodes.empty())
+  if (!in.Grid || !in.Lights || !in.Tree || (in.Tree->Nodes.empty() && in.Tree->Spots.empty()))
   {
     return 0;
   }
-  const double perProbe = 6.0 * (static_cast<double>(in.Tree->Order.size()) + 1.0);
+  const double perProbe =
+    6.0 * (static_cast<double>(in.Tree->Order.size() + in.Tree->Spots.size()) + 1.0);
   return static_cast<int>(std::min(256.0, std::max(8.0, std::floor(lightEvaluations / perProbe))));
 }
 

@@ -5,9 +5,9 @@
  *
  * An error budget (vtkClusteredLightingPass::ErrorBudgetInSteps) states the largest error
  * a user accepts. Two approximations spend it (ShareErrorBudget: half each when both are
- * present): the tails of culled lights (spot lights, explicit radii: ChooseBudgetCutoff
- * picks their cutoff) and the far field of split lights, whose error has a stated bound
- * (ComputeFarFieldErrorBound) that depends on the far field's resolution: a finer grid
+ * present): the tails of culled lights (explicit radii, or every light with the far field
+ * off: ChooseBudgetCutoff picks their cutoff) and the far field of split lights, whose error has a
+ * stated bound (ComputeFarFieldErrorBound) that depends on the far field's resolution: a finer grid
  * interpolates the far light better and groups its lights more finely. On the benchmark's
  * bunny with 4,096 lights the bound's summary over probe points is 1.72 steps at 4,096
  * nodes, 0.889 at 16,384, 0.694 at 32,768 and 0.511 at 131,072, while a build (every frame
@@ -85,9 +85,10 @@ struct ErrorBudgetShares
 
 /**
  * The shares of `budget` (a fraction of full brightness) for the two approximations that
- * spend it. Their errors add at a pixel, so when there are both culled lights (spot
- * lights, explicit radii; every light with the far field off) and lights the far field
- * splits (IsFarFieldLight), each gets half; otherwise the one present gets all of it.
+ * spend it. Their errors add at a pixel, so when there are both culled lights (explicit
+ * radii; every light with the far field off) and lights the far field splits
+ * (IsFarFieldLight, spot lights included), each gets half; otherwise the one present gets
+ * all of it.
  */
 inline ErrorBudgetShares ShareErrorBudget(
   const std::vector<PreparedLight>& lights, double budget, bool farField)

@@ -32,6 +32,12 @@
  * computed group by group, so `grouping` trades build time for accuracy without ever
  * making the bound false. Grouping 0 sums every light one by one.
  *
+ * Spot lights (IsFarFieldSpot) are not in the tree: a group has no cone. Each is a source
+ * of its own for every block that some point of its cone may reach (SpotConeMayReachBox),
+ * summed in double precision with its spot factor (ComputeFarContribution) after the
+ * vectorized sums: a few hundred spot lights cost far less than the thousands of lights
+ * the tree groups.
+ *
  * Blocks. The tree is walked once per block of 4 x 4 x 4 nodes (CollectFarFieldSources),
  * giving one list of sources (groups and single lights, windowed where a node of the block
  * may lie inside the light's near radius) for all 64 nodes (the groups' spread terms,
@@ -76,6 +82,7 @@ struct FarFieldLightTree
   std::vector<Node> Nodes; ///< Nodes[0] is the root
   std::vector<int> Order;  ///< light indices, each node's lights contiguous
   std::vector<int> LeafOf; ///< per light: its leaf node, -1 for lights not in the tree
+  std::vector<int> Spots;  ///< the spot lights with a far part (not in the tree)
   int LeafSize = 8;
 };
 
@@ -178,7 +185,8 @@ inline int BuildTreeNode(FarFieldLightTree& t, std::vector<TreeItem>& items,
 }
 } // namespace Detail
 
-/// The light tree over the lights with a far part (finite near radius) among `lights`.
+/// The light tree over the lights with a far part (finite near radius) among `lights`,
+/// spot lights apart (FarFieldLightTree::Spots).
 inline FarFieldLightTree BuildFarFieldLightTree(
   const std::vector<PreparedLight>& lights, const std::vector<double>& nearRadii, int leafSize = 8)
 {
@@ -188,7 +196,15 @@ inline FarFieldLightTree BuildFarFieldLightTree(
   std::vector<Detail::TreeItem> items;
   for (std::size_t i = 0; i < lights.size(); ++i)
   {
-    if (!std::isinf(nearRadii[i]))
+    if (std::isinf(nearRadii[i]))
+    {
+      continue;
+    }
+    if (lights[i].CosCone > -1.5)
+    {
+      t.Spots.push_back(static_cast<int>(i));
+    }
+    else
     {
       items.push_back(Detail::TreeItem{ lights[i].PositionWC, static_cast<int>(i) });
     }
@@ -285,10 +301,32 @@ inline void ComputeGroupSpreadTerms(
 }
 
 /**
+ * Whether some point of the box [lo, hi] may lie inside spot light l's cone (false only
+ * where the spot factor is 0 at every point of it). The box's bounding sphere, of radius
+ * rho about its centre at distance D from the light, is seen from the light within an
+ * angle asin(rho / D) of the direction to its centre; the box is outside the cone when
+ * even that nearest direction is 1e-6 radians past the cone's angle.
+ */
+inline bool SpotConeMayReachBox(const PreparedLight& l, const glm::dvec3& lo, const glm::dvec3& hi)
+{
+  const glm::dvec3 v = 0.5 * (lo + hi) - l.PositionWC;
+  const double rho = 0.5 * glm::length(hi - lo);
+  const double D = glm::length(v);
+  if (!(D > rho) || !(l.CosCone > -1.5))
+  {
+    return true;
+  }
+  const double toCentre = std::acos(std::min(std::max(glm::dot(v / D, l.DirectionWC), -1.0), 1.0));
+  const double cone = std::acos(std::min(std::max(l.CosCone, -1.0), 1.0));
+  return toCentre - std::asin(std::min(rho / D, 1.0)) <= cone + 1e-6;
+}
+
+/**
  * The sources of the far field for the nodes in the box [lo, hi]: walks the tree and
  * calls onGroup(node index) for each group taken whole (AcceptFarFieldGroup) and
  * onLight(light index, windowed) for each light taken alone, windowed when some point of
- * the box may lie inside its near radius. `stack` is scratch space.
+ * the box may lie inside its near radius; then onLight for each spot light whose cone may
+ * reach the box (SpotConeMayReachBox). `stack` is scratch space.
  */
 template <typename OnGroup, typename OnLight>
 void CollectFarFieldSources(const FarFieldLightTree& tree, const std::vector<PreparedLight>& lights,
@@ -324,6 +362,17 @@ void CollectFarFieldSources(const FarFieldLightTree& tree, const std::vector<Pre
     }
     stack.push_back(n.Left);
     stack.push_back(n.Right);
+  }
+  for (int l : tree.Spots)
+  {
+    const PreparedLight& spot = lights[static_cast<std::size_t>(l)];
+    if (SpotConeMayReachBox(spot, lo, hi))
+    {
+      const glm::dvec3& x = spot.PositionWC;
+      const double r = nearRadii[static_cast<std::size_t>(l)];
+      const double d = glm::length(glm::max(glm::max(lo - x, x - hi), glm::dvec3(0.0)));
+      onLight(l, r > 0.0 && d < r);
+    }
   }
 }
 
@@ -511,6 +560,89 @@ inline void AccumulateBlock(const FarFieldSources& s, const float* px, const flo
   }
 }
 
+/// Spot lights' exponents the vectorized sums take: whole numbers up to this (VTK's
+/// default is 1); others are summed in double precision with ComputeFarContribution.
+constexpr int FarFieldVectorSpotExponent = 8;
+
+/// Whether a spot light's exponent is one the vectorized sums take.
+inline bool IsVectorSpotExponent(double e)
+{
+  return e >= 0.0 && e <= FarFieldVectorSpotExponent && e == std::floor(e);
+}
+
+/// Spot lights of one block (structure of arrays, positions relative to the block's
+/// centre): a source's fields, and its unit axis, cos(cone) and exponent.
+struct FarFieldSpotSources
+{
+  FarFieldSources Base;
+  std::vector<float> AX, AY, AZ, CosCone, Exponent;
+  void Clear()
+  {
+    Base.Clear();
+    for (std::vector<float>* v : { &AX, &AY, &AZ, &CosCone, &Exponent })
+    {
+      v->clear();
+    }
+  }
+  void Add(const glm::dvec3& relative, const glm::dvec3& color, const PreparedLight& l,
+    double inverseNearRadius)
+  {
+    Base.Add(relative, color, l.Attenuation, inverseNearRadius);
+    AX.push_back(static_cast<float>(l.DirectionWC.x));
+    AY.push_back(static_cast<float>(l.DirectionWC.y));
+    AZ.push_back(static_cast<float>(l.DirectionWC.z));
+    CosCone.push_back(static_cast<float>(l.CosCone));
+    Exponent.push_back(static_cast<float>(l.Exponent));
+  }
+  std::size_t Size() const { return Base.Size(); }
+};
+
+/**
+ * Adds spot lights into the moments of the block's nodes, source by source over the nodes
+ * (vectorized across them): a source's terms (ComputeFarFieldTerms) times VTK's spot
+ * factor, pow(c, e) for the cosine c = -u.axis from the axis to the node when c >=
+ * cos(cone), else 0, the whole exponent e taken as up to FarFieldVectorSpotExponent
+ * masked multiplies (branch-free). In single precision a node within about 1e-6 of a
+ * cone's edge may fall on either side of it; the stated bound counts that
+ * (ComputeFarFieldErrorBounds).
+ */
+template <bool Windowed, int Channels>
+inline void AccumulateSpotBlock(const FarFieldSpotSources& s, const float* px, const float* py,
+  const float* pz, float (*acc)[FarFieldBlockNodes])
+{
+  constexpr int M = FarFieldMomentsPerChannel;
+  for (std::size_t q = 0; q < s.Size(); ++q)
+  {
+    const FarFieldSource src = s.Base.Get(q);
+    const float ax = s.AX[q], ay = s.AY[q], az = s.AZ[q], cone = s.CosCone[q], e = s.Exponent[q];
+    for (int i = 0; i < FarFieldBlockNodes; ++i)
+    {
+      const float dx = src.X - px[i], dy = src.Y - py[i], dz = src.Z - pz[i];
+      float t[M];
+      ComputeFarFieldTerms<Windowed>(dx, dy, dz, src.A0, src.A1, src.A2, src.InverseNearRadius, t);
+      const float d = std::sqrt(dx * dx + dy * dy + dz * dz);
+      const float c = -(dx * ax + dy * ay + dz * az) / (d + 1e-30f);
+      const float cc = std::min(c, 1.0f);
+      float f = 1.0f;
+      for (int k = 0; k < FarFieldVectorSpotExponent; ++k)
+      {
+        f *= static_cast<float>(k) < e ? cc : 1.0f;
+      }
+      f = c >= cone ? f : 0.0f;
+      for (int m = 0; m < M; ++m)
+      {
+        const float v = f * t[m];
+        acc[m][i] += src.R * v;
+        if (Channels == 3)
+        {
+          acc[M + m][i] += src.G * v;
+          acc[2 * M + m][i] += src.B * v;
+        }
+      }
+    }
+  }
+}
+
 /// ComputeFarFieldMoments for Channels 3 (every channel) or 1 (channel `channel` only).
 template <int Lanes, int Channels>
 std::int64_t ComputeFarFieldMomentsOf(const FarFieldGrid& grid,
@@ -531,6 +663,8 @@ std::int64_t ComputeFarFieldMomentsOf(const FarFieldGrid& grid,
   // The groups' spread terms of a block. On the heap: ASan's fake stack does not keep the
   // 64-byte alignment GCC gives a local array in the AVX-512 copy (its zeroing crashed).
   std::vector<double> spread(FarFieldFloatsPerNode);
+  Detail::FarFieldSpotSources spotsWhole, spotsWindowed; // vectorized spot lights
+  std::vector<int> spots; // the other spot lights, summed apart in double precision
   std::int64_t pairs = 0;
   for (std::int64_t b = b0; b < b1; ++b)
   {
@@ -557,6 +691,9 @@ std::int64_t ComputeFarFieldMomentsOf(const FarFieldGrid& grid,
     }
     whole.Clear();
     windowed.Clear();
+    spotsWhole.Clear();
+    spotsWindowed.Clear();
+    spots.clear();
     std::fill(spread.begin(), spread.end(), 0.0);
     CollectFarFieldSources(
       tree, lights, nearRadii, grouping, lo, hi, stack,
@@ -577,6 +714,20 @@ std::int64_t ComputeFarFieldMomentsOf(const FarFieldGrid& grid,
       [&](int light, bool isWindowed)
       {
         const PreparedLight& l = lights[static_cast<std::size_t>(light)];
+        if (l.CosCone > -1.5)
+        {
+          if (IsVectorSpotExponent(l.Exponent))
+          {
+            (isWindowed ? spotsWindowed : spotsWhole)
+              .Add(l.PositionWC - center, colorOf(l.Color), l,
+                isWindowed ? 1.0 / nearRadii[static_cast<std::size_t>(light)] : 0.0);
+          }
+          else
+          {
+            spots.push_back(light);
+          }
+          return;
+        }
         (isWindowed ? windowed : whole)
           .Add(l.PositionWC - center, colorOf(l.Color), l.Attenuation,
             isWindowed ? 1.0 / nearRadii[static_cast<std::size_t>(light)] : 0.0);
@@ -587,7 +738,11 @@ std::int64_t ComputeFarFieldMomentsOf(const FarFieldGrid& grid,
     }
     AccumulateBlock<false, Lanes, Channels>(whole, px, py, pz, acc);
     AccumulateBlock<true, Lanes, Channels>(windowed, px, py, pz, acc);
-    pairs += static_cast<std::int64_t>(whole.Size() + windowed.Size()) * ni * nj * nk;
+    AccumulateSpotBlock<false, Channels>(spotsWhole, px, py, pz, acc);
+    AccumulateSpotBlock<true, Channels>(spotsWindowed, px, py, pz, acc);
+    pairs += static_cast<std::int64_t>(whole.Size() + windowed.Size() + spotsWhole.Size() +
+               spotsWindowed.Size() + spots.size()) *
+      ni * nj * nk;
     for (int dk = 0; dk < nk; ++dk)
     {
       for (int dj = 0; dj < nj; ++dj)
@@ -601,6 +756,29 @@ std::int64_t ComputeFarFieldMomentsOf(const FarFieldGrid& grid,
           {
             const int at = first + q;
             o[at] = acc[q][n] + spread[static_cast<std::size_t>(at)];
+          }
+          // Spot lights: ComputeFarContribution at the node itself, as the bound takes them.
+          const glm::dvec3 node = grid.NodePosition(i0 + di, j0 + dj, k0 + dk);
+          for (int light : spots)
+          {
+            const PreparedLight& l = lights[static_cast<std::size_t>(light)];
+            double far;
+            glm::dvec3 u;
+            if (ComputeFarContribution(l, nearRadii[static_cast<std::size_t>(light)], node, far, u))
+            {
+              const glm::dvec3 color = colorOf(l.Color);
+              const double t[FarFieldMomentsPerChannel] = { 1.0, u.x, u.y, u.z, u.x * u.x,
+                u.y * u.y, u.x * u.y, u.x * u.z, u.y * u.z };
+              for (int c = 0; c < Channels; ++c)
+              {
+                const double g = far * color[c];
+                double* row = o + first + c * FarFieldMomentsPerChannel;
+                for (int m = 0; m < FarFieldMomentsPerChannel; ++m)
+                {
+                  row[m] += g * t[m];
+                }
+              }
+            }
           }
         }
       }

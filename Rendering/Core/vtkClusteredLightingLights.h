@@ -85,8 +85,8 @@ struct LightPreparationOptions
 {
   double Cutoff = 1.0 / 1024.0;
   bool MortonOrder = true;
-  /// > 0: the cutoff of the lights a far field may split (no explicit radius, not spot
-  /// lights: IsFarFieldLight once prepared), whose error a budget holds apart from the
+  /// > 0: the cutoff of the lights a far field may split (no explicit radius:
+  /// IsFarFieldLight once prepared), whose error a budget holds apart from the
   /// culled lights' tails (vtkClusteredLightingFarFieldBudget.h); 0: Cutoff for every light.
   double FarFieldCutoff = 0.0;
 
@@ -269,7 +269,7 @@ inline PreparedLights PrepareLights(const std::vector<LightSource>& sources,
     p.PositionWC = s.PositionWC;
     p.Color = s.Color * s.Intensity;
     const double peak = std::max(p.Color.x, std::max(p.Color.y, p.Color.z));
-    const bool splittable = !s.HasRadius && !s.IsSpot();
+    const bool splittable = !s.HasRadius;
     double r = ComputeInfluenceRadius(
       peak, s.Attenuation, splittable ? options.GetFarFieldCutoff() : options.Cutoff);
     if (s.HasRadius)
@@ -396,10 +396,11 @@ inline glm::dvec3 ComputeCutoffTailBound(const glm::dvec3& pointVC,
 /**
  * VTK's spot factor of light `l` at world point p, as the shading code evaluates it: 1 for
  * a point light (and at the light itself), 0 outside the cone, pow(cos(angle), Exponent)
- * inside. A cosine within 1e-6 of the cone's counts as inside, with the cosine taken 1e-6
- * larger (an upper bound of the factor the float shading code may compute there).
+ * inside. A cosine within `slack` of the cone's counts as inside, with the cosine taken
+ * `slack` larger: the default 1e-6 gives an upper bound of the factor the float shading
+ * code may compute there (for the tails' bounds), 0 VTK's formula itself (the far field).
  */
-inline double EvaluateSpotFactor(const glm::dvec3& p, const PreparedLight& l)
+inline double EvaluateSpotFactor(const glm::dvec3& p, const PreparedLight& l, double slack = 1e-6)
 {
   if (!(l.CosCone > -1.5))
   {
@@ -412,11 +413,11 @@ inline double EvaluateSpotFactor(const glm::dvec3& p, const PreparedLight& l)
     return 1.0;
   }
   const double cosAngle = glm::dot(toP / d, l.DirectionWC);
-  if (cosAngle < l.CosCone - 1e-6)
+  if (cosAngle < l.CosCone - slack)
   {
     return 0.0;
   }
-  return std::pow(std::min(std::max(cosAngle + 1e-6, 0.0), 1.0), l.Exponent);
+  return std::pow(std::min(std::max(cosAngle + slack, 0.0), 1.0), l.Exponent);
 }
 
 /// Each light's culling radius at `cutoff` (the radius PrepareLights gives it, capped at its

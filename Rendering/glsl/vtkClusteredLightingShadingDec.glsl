@@ -122,8 +122,9 @@ vec3 clApplyFarKernel(vec3 k, vec3 D, vec3 S, vec3 Vx, vec3 Vy, vec3 Vz, vec3 Tx
 uniform int clLightCount;         // for the exact far parts
 uniform float clFarFieldTolerance; // see the far-field block of the shading code
 
-// Light i's far part at P when it is split (its exponent slot holds -1): VTK's attenuation
-// times (1 - window(d / near radius)). Returns false for other lights.
+// Light i's far part at P when it is split (its exponent slot is negative): VTK's
+// attenuation times (1 - window(d / near radius)), and a spot light's spot factor (its
+// exponent e stored as -1 - e). Returns false for other lights and outside a cone.
 bool clFarLight(int i, vec3 P, out vec3 L, out float att, out vec3 color)
 {
   vec4 data0 = texelFetch(clLightData, 2 * i);
@@ -139,6 +140,17 @@ bool clFarLight(int i, vec3 P, out vec3 L, out float att, out vec3 color)
   float x2 = d * d / max(view0.w * view0.w, 1e-30);
   float window = clamp(1.0 - x2 * x2, 0.0, 1.0);
   att = (1.0 - window * window) / max(data1.x + data1.y * d + data1.z * d * d, 1e-30);
+//CL_IF(SPOT)
+  if (data1.w > -1.5)
+  {
+    float coneDot = dot(L, texelFetch(clLightView, 2 * i + 1).xyz);
+    if (coneDot < data1.w)
+    {
+      return false;
+    }
+    att *= pow(coneDot, -1.0 - data0.w);
+  }
+//CL_ENDIF
   color = data0.rgb;
   return true;
 }
@@ -198,12 +210,12 @@ bool clLightAttenuation(int i, vec3 P, out vec3 L, out float att, out vec3 color
     {
       return false;
     }
-    att *= pow(coneDot, data0.w);
+    att *= pow(coneDot, data0.w < 0.0 ? -1.0 - data0.w : data0.w);
   }
 //CL_ENDIF
 //CL_IF(FAR_FIELD)
-  // A light split into near and far parts (its exponent slot holds -1): the near part is
-  // windowed at the near radius, the far field holds the rest.
+  // A light split into near and far parts (its exponent slot is negative, see clFarLight):
+  // the near part is windowed at the near radius, the far field holds the rest.
   if (data0.w < 0.0)
   {
     float x2 = d * d / (view0.w * view0.w);

@@ -16,13 +16,18 @@
 //    reported by GetFarFieldErrorBudgetMet and PrintSelf, and its frame is still within
 //    the stated bound of brute force;
 //  - a budget of 0 gives FarFieldResolution back;
-//  - spot lights (culled) among split lights get their cutoff for half of the budget
+//  - culled lights (an explicit radius beyond their cutoff radius: a tail the far field
+//    does not hold) among split lights get their cutoff for half of the budget
 //    (GetEffectiveCutoff), and the split lights theirs and the far field's resolution as
 //    alone at half the budget: each kind spends its own share with its own cutoff (one
-//    cutoff for both made the split lights take the spot lights'); that frame is within
+//    cutoff for both made the split lights take the culled lights'); that frame is within
 //    the stated bound of brute force at every pixel, and its largest error within the
-//    budget (for the scene's materials): the spot lights' tails, counted inside their
-//    cones only, are sampled where the geometry is.
+//    budget (for the scene's materials): the culled lights' tails are sampled where the
+//    geometry is;
+//  - spot lights are split as well (since 2026-11-30: their tails go to the far field,
+//    cones included), so beside the split lights nothing is culled: the far field takes
+//    the whole budget, and a frame at 8 steps is within the stated bound of brute force
+//    at every pixel (the cones' edges in the far field included) and within the budget.
 #include "ClusteredLightingTestUtilities.h"
 
 #include "vtkClusteredLightSet.h"
@@ -168,51 +173,77 @@ int TestClusteredLightingErrorBudget(int, char*[])
   const double splitCutoff4 = pass->GetEffectiveFarFieldCutoff();
   const int splitNodes4 = pass->GetFarFieldResolutionInUse();
 
-  // 7. Spot lights (culled, never split) among the split lights: each kind's cutoff is
-  // chosen for half of the budget, the same as for that kind alone at half the budget.
-  auto addSpots = [](vtkClusteredLightSet* set)
+  // 7. Culled lights (an explicit radius past their cutoff radius) among the split lights:
+  // each kind's cutoff is chosen for half of the budget, the same as for that kind alone at
+  // half the budget.
+  auto addCulled = [](vtkClusteredLightSet* set)
   {
     for (int k = 0; k < 64; ++k)
     {
       const vtkIdType i = set->AddLight(-2.8 + 0.8 * (k % 8), 1.2, -2.8 + 0.8 * (k / 8));
       set->SetAttenuation(i, 1.0, 0.0, 1.0);
       set->SetIntensity(i, 0.3);
-      set->SetSpot(i, 0.0, -1.0, 0.0, 60.0, 1.0);
+      set->SetRadius(i, 50.0);
     }
   };
-  addSpots(lights);
+  addCulled(lights);
   pass->SetErrorBudgetInSteps(8.0);
   rw->Render();
-  Report(pass, "8 steps, spot lights among the split lights");
+  Report(pass, "8 steps, culled lights among the split lights");
   const double mixed = pass->GetEffectiveCutoff();
   Check(pass->GetEffectiveFarFieldCutoff() == splitCutoff4 &&
       pass->GetFarFieldResolutionInUse() == splitNodes4,
-    "with spot lights beside them, the split lights' cutoff and the far field's resolution "
+    "with culled lights beside them, the split lights' cutoff and the far field's resolution "
     "are those of the split lights alone at half the budget");
   ClusteredLightingTest::BruteForceCheck mixedCheck;
   Check(ClusteredLightingTest::CheckClusteredFrame(
           pass, rw, ren, 1.4, "8 steps, mixed", 0, &mixedCheck) == 0,
-    "8 steps with spot lights: within the stated bound of brute force, zero false negatives");
+    "8 steps with culled lights: within the stated bound of brute force, zero false negatives");
   // The budget is stated for a white material (Diffuse + Specular <= 1); the scene's reach
   // 1.4 (CheckClusteredFrame's material factor), and the images are rounded to 8 bits.
-  std::printf("8 steps with spot lights: largest error %.2f steps\n", 255.0 * mixedCheck.MaxError);
+  std::printf(
+    "8 steps with culled lights: largest error %.2f steps\n", 255.0 * mixedCheck.MaxError);
   Check(255.0 * mixedCheck.MaxError <= 1.4 * 8.0 + 1.0,
-    "8 steps with spot lights: the image within the budget of brute force (the spot lights' "
-    "tails held where the geometry is, inside their cones)");
-  vtkNew<vtkClusteredLightSet> spotsAlone;
-  addSpots(spotsAlone);
+    "8 steps with culled lights: the image within the budget of brute force (their tails "
+    "held where the geometry is)");
+  vtkNew<vtkClusteredLightSet> culledAlone;
+  addCulled(culledAlone);
   pass->RemoveLightSet(lights);
-  pass->AddLightSet(spotsAlone);
+  pass->AddLightSet(culledAlone);
   rw->Render();
   const double alone8 = pass->GetEffectiveCutoff();
   pass->SetErrorBudgetInSteps(4.0);
   rw->Render();
   const double alone4 = pass->GetEffectiveCutoff();
-  std::printf("spot lights' cutoff: %g among split lights at 8 steps, %g alone at 8, %g alone "
+  std::printf("culled lights' cutoff: %g among split lights at 8 steps, %g alone at 8, %g alone "
               "at 4\n",
     mixed, alone8, alone4);
-  Check(alone8 != alone4, "the spot lights alone: their cutoff depends on the budget");
+  Check(alone8 != alone4, "the culled lights alone: their cutoff depends on the budget");
   Check(mixed == alone4,
-    "with split lights beside them, the spot lights' cutoff is chosen for half the budget");
+    "with split lights beside them, the culled lights' cutoff is chosen for half the budget");
+
+  // 8. Spot lights as users write them (no radius) among the split lights: split too, so
+  // nothing is culled and the far field, cones and all, is held to the whole budget.
+  pass->RemoveLightSet(culledAlone);
+  pass->AddLightSet(lights);
+  for (vtkIdType i = n + 1; i < lights->GetNumberOfLights(); ++i)
+  {
+    lights->UnsetRadius(i);
+    lights->SetSpot(i, 0.0, -1.0, 0.0, 60.0, 1.0);
+  }
+  pass->SetErrorBudgetInSteps(8.0);
+  rw->Render();
+  Report(pass, "8 steps, spot lights among the split lights");
+  Check(pass->GetNumberOfFarFieldLights() == lights->GetNumberOfLights(),
+    "spot lights without a radius are split like the others");
+  Check(pass->GetEffectiveCutoff() == pass->GetContributionCutoff(),
+    "spot lights split: no culled light, their cutoff stays ContributionCutoff");
+  ClusteredLightingTest::BruteForceCheck spotCheck;
+  Check(ClusteredLightingTest::CheckClusteredFrame(
+          pass, rw, ren, 1.4, "8 steps, spot lights", 0, &spotCheck) == 0,
+    "8 steps with spot lights: within the stated bound of brute force, zero false negatives");
+  std::printf("8 steps with spot lights: largest error %.2f steps\n", 255.0 * spotCheck.MaxError);
+  Check(255.0 * spotCheck.MaxError <= 1.4 * 8.0 + 1.0,
+    "8 steps with spot lights: the image within the budget of brute force");
   return Status;
 }

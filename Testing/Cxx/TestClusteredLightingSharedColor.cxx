@@ -10,8 +10,9 @@
 //    rounding);
 //  - both are within the stated bound of brute force, with zero false negatives and no
 //    NaN pixel (CheckClusteredFrame);
-//  - one light of another hue brings back three channels; a light that the far field
-//    does not hold (an explicit radius, a spot light) may have any colour;
+//  - one light of another hue brings back three channels (a spot light without a radius
+//    too: the far field holds it); a light that the far field does not hold (an explicit
+//    radius) may have any colour;
 //  - switching paths back and forth gives the first image again (textures released and
 //    made again);
 //  - the pass's ComputeFarFieldErrorBound(), whose probes run on several threads, is the
@@ -142,15 +143,20 @@ int TestClusteredLightingSharedColor(int, char*[])
   Check(ClusteredLightingTest::CheckClusteredFrame(pass, rw, ren, 1.4, "one tint") == 0,
     "one tint: within the stated bound of brute force, zero false negatives, finite");
 
-  // 3. Lights the far field does not hold may differ: a red light with an explicit radius
-  // and a blue spot light (cut at their radii, never in the far field).
+  // 3. Lights the far field does not hold may differ: a red light and a blue spot light,
+  // each with an explicit radius (cut there, never in the far field). Without its radius
+  // the spot light is split like the others (since 2026-11-30), and its hue is another.
   lights->SetColor(0, 1.0, 0.0, 0.0);
   lights->SetRadius(0, 1.0);
   lights->SetColor(1, 0.0, 0.0, 1.0);
   lights->SetSpot(1, 0.0, -1.0, 0.0, 40.0, 1.0);
   rw->Render();
+  Check(!pass->GetFarFieldSharedColorUsed() && pass->GetNumberOfFarFieldLights() == n - 1,
+    "a blue spot light without a radius: split, three channels");
+  lights->SetRadius(1, 1.0);
+  rw->Render();
   Check(pass->GetFarFieldSharedColorUsed() && pass->GetNumberOfFarFieldLights() == n - 2,
-    "a red light with a radius and a blue spot: still one channel for the other lights");
+    "a red light and a blue spot with radii: still one channel for the other lights");
   Check(ClusteredLightingTest::CheckClusteredFrame(pass, rw, ren, 1.4, "other colours near") == 0,
     "other colours near: within the stated bound of brute force");
 

@@ -124,8 +124,13 @@ TEST(FarFieldBudget, SharedOnlyWhenTailsAndTheFarFieldAreBothPresent)
   EXPECT_EQ(s.CutTails, budget);
   EXPECT_EQ(s.FarField, 0.0) << "far field off: every light is culled";
   std::vector<PreparedLight> mixed = scene.Lights;
-  mixed[3].CosCone = 0.5; // a spot light is culled, never split
+  mixed[3].ExplicitRadius = 50.0; // a light with an explicit radius is culled, never split
   ASSERT_FALSE(IsFarFieldLight(mixed[3]));
+  std::vector<PreparedLight> spot = scene.Lights;
+  spot[3].CosCone = 0.5; // a spot light is split (since 2026-11-30)
+  ASSERT_TRUE(IsFarFieldLight(spot[3]));
+  s = ShareErrorBudget(spot, budget, true);
+  EXPECT_EQ(s.FarField, budget) << "a spot light among split lights: still all split";
   s = ShareErrorBudget(mixed, budget, true);
   EXPECT_EQ(s.CutTails, 0.5 * budget);
   EXPECT_EQ(s.FarField, 0.5 * budget) << "both present: their errors add, half each";

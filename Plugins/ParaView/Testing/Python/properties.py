@@ -213,18 +213,27 @@ t.check(t.info(view, "EffectiveCutoff") == 1.0 / 64.0,
         "ContributionCutoff 1/64: effective cutoff %g" % t.info(view, "EffectiveCutoff"))
 view.ErrorBudget = 4.0 / 255.0
 Render(view)
-# The renderer light ParaView adds is a spot light: culled, never split. The budget is
-# halved between its tail (its own cutoff) and the far field of the 72 split lights
-# (theirs, from Contribution Cutoff outwards).
+# The renderer light ParaView adds is a spot light. Since 2026-11-30 spot lights are split
+# like the others (this one, always on, is shaded whole everywhere), so no light is culled:
+# the culled lights' cutoff stays Contribution Cutoff and the far field of the 72 split
+# lights takes the whole budget (their cutoff from Contribution Cutoff outwards).
 t.check(t.info(view, "NumberOfSpotLights") == 1,
         "one spot light (the renderer's): %d" % t.info(view, "NumberOfSpotLights"))
-chosen = t.info(view, "EffectiveCutoff")
-t.check(chosen != 1.0 / 64.0 and chosen > 0.0,
-        "Error Budget 4/255: the pass chose cutoff %g for the spot light's tail instead of "
-        "Contribution Cutoff" % chosen)
+t.check(t.info(view, "EffectiveCutoff") == 1.0 / 64.0,
+        "Error Budget 4/255, no culled light: cutoff %g is Contribution Cutoff"
+        % t.info(view, "EffectiveCutoff"))
 split = t.info(view, "EffectiveFarFieldCutoff")
 t.check(split >= 1.0 / 64.0,
         "Error Budget 4/255: the split lights' cutoff %g is Contribution Cutoff or looser" % split)
+# An explicit radius past their cutoff radius makes the 72 lights culled (a tail the far
+# field does not hold): the budget now chooses their cutoff.
+lights.LightDefaultRadius = 100.0
+Render(view)
+chosen = t.info(view, "EffectiveCutoff")
+t.check(chosen != 1.0 / 64.0 and chosen > 0.0,
+        "Error Budget 4/255, lights with a radius: the pass chose cutoff %g for their tails "
+        "instead of Contribution Cutoff" % chosen)
+lights.LightDefaultRadius = -1.0
 view.ErrorBudget = 0.0
 view.ContributionCutoff = 1.0 / 1024.0
 

@@ -56,6 +56,7 @@
 
 #include <algorithm> // for std::nth_element
 #include <array>     // for std::array
+#include <cstddef>   // for std::ptrdiff_t
 #include <cstdint>   // for std::int64_t
 #include <glm/glm.hpp>
 #include <limits> // for std::numeric_limits
@@ -772,7 +773,8 @@ std::int64_t ComputeFarFieldMomentsOf(const FarFieldGrid& grid,
               for (int c = 0; c < Channels; ++c)
               {
                 const double g = far * color[c];
-                double* row = o + first + c * FarFieldMomentsPerChannel;
+                double* row =
+                  o + first + static_cast<std::ptrdiff_t>(c) * FarFieldMomentsPerChannel;
                 for (int m = 0; m < FarFieldMomentsPerChannel; ++m)
                 {
                   row[m] += g * t[m];

@@ -112,13 +112,13 @@ inline bool IsFarFieldLight(const PreparedLight& l)
 /// holds its spot factor (ComputeFarContribution).
 inline bool IsFarFieldSpot(const PreparedLight& l)
 {
-  return IsFarFieldLight(l) && l.CosCone > -1.5;
+  return IsFarFieldLight(l) && l.IsSpot();
 }
 
 /// A far-field light whose near radius PlanFarField chooses (not a spot light).
 inline bool IsFarFieldPointLight(const PreparedLight& l)
 {
-  return IsFarFieldLight(l) && !(l.CosCone > -1.5);
+  return IsFarFieldLight(l) && !l.IsSpot();
 }
 
 /**
@@ -558,17 +558,13 @@ inline bool ComputeFarContribution(
     return false;
   }
   toLight = v / d;
-  double spot = 1.0;
-  if (l.CosCone > -1.5)
+  // A spot light's cosine from its axis to p is that of -toLight, as EvaluateSpotFactor
+  // takes it.
+  const double spot =
+    l.IsSpot() ? EvaluateSpotFactorAtCosine(-glm::dot(toLight, l.DirectionWC), l, 0.0) : 1.0;
+  if (!(spot > 0.0))
   {
-    // The cosine from the axis to p: -toLight, as EvaluateSpotFactor takes it.
-    const double c = -glm::dot(toLight, l.DirectionWC);
-    if (c < l.CosCone)
-    {
-      return false;
-    }
-    const double clamped = std::min(std::max(c, 0.0), 1.0);
-    spot = l.Exponent == 1.0 ? clamped : std::pow(clamped, l.Exponent);
+    return false;
   }
   far = spot * EvaluateFarPart(EvaluateAttenuation(d, l.Attenuation), d, nearRadius);
   return far > 0.0;

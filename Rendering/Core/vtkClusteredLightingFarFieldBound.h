@@ -301,28 +301,15 @@ inline void ComputeFarFieldErrorBounds(const FarFieldShadingPoint* points, int c
   glm::dvec3 farLightAtCorners(0.0);
   // A spot light at a corner within 1e-5 of its cone's cosine: the build's single
   // precision may have put the corner on either side of the edge (AccumulateSpotBlock),
-  // so its value there, taken as inside, counts in full for each point's quantities.
+  // so its far part there (g per unit colour, from u), taken as inside, counts in full for
+  // each point's quantities.
   std::vector<double> edge(std::size_t{ 3 } * Q * n, 0.0);
-  auto addEdge = [&](const Corner& c, std::size_t l)
+  auto addEdge = [&](const Corner& c, const glm::dvec3& color, double g, const glm::dvec3& u)
   {
-    const PreparedLight& spot = lights[l];
-    if (!(spot.CosCone > -1.5))
-    {
-      return;
-    }
-    PreparedLight wider = spot;
-    wider.CosCone -= 1e-5;
-    double far;
-    glm::dvec3 u;
-    if (!ComputeFarContribution(wider, radii[l], c.Position, far, u) ||
-      !(-glm::dot(u, spot.DirectionWC) < spot.CosCone + 1e-5))
-    {
-      return;
-    }
     for (std::size_t k = 0; k < n; ++k)
     {
       double scratch[3 * Q] = {};
-      Detail::AddBoundQuantities(points[k], qd, qn[k], spot.Color, far, u, scratch);
+      Detail::AddBoundQuantities(points[k], qd, qn[k], color, g, u, scratch);
       for (int q = 0; q < 3 * Q; ++q)
       {
         edge[std::size_t{ 3 } * Q * k + static_cast<std::size_t>(q)] +=
@@ -360,12 +347,33 @@ inline void ComputeFarFieldErrorBounds(const FarFieldShadingPoint* points, int c
       else
       {
         const std::size_t l = static_cast<std::size_t>(src.Light);
-        addEdge(c, l);
-        if (!ComputeFarContribution(lights[l], radii[l], c.Position, far, u))
+        const PreparedLight& light = lights[l];
+        if (light.IsSpot())
+        {
+          // One evaluation with the cone widened by the edge's margin: inside the cone it
+          // is the light's far part (the same cosine and factor), within the margin a
+          // value the build may or may not have stored, outside the cone 0.
+          PreparedLight wider = light;
+          wider.CosCone -= 1e-5;
+          if (!ComputeFarContribution(wider, radii[l], c.Position, far, u))
+          {
+            continue;
+          }
+          const double cosine = -glm::dot(u, light.DirectionWC);
+          if (cosine < light.CosCone + 1e-5)
+          {
+            addEdge(c, light.Color, far, u);
+          }
+          if (cosine < light.CosCone)
+          {
+            continue;
+          }
+        }
+        else if (!ComputeFarContribution(light, radii[l], c.Position, far, u))
         {
           continue;
         }
-        color = lights[l].Color;
+        color = light.Color;
         key = atomOfLight(src.Light);
       }
       double* o = &interpolated[stride * slotIndex(key)];

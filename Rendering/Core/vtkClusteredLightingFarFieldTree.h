@@ -202,7 +202,7 @@ inline FarFieldLightTree BuildFarFieldLightTree(
     {
       continue;
     }
-    if (lights[i].CosCone > -1.5)
+    if (lights[i].IsSpot())
     {
       t.Spots.push_back(static_cast<int>(i));
     }
@@ -314,7 +314,7 @@ inline bool SpotConeMayReachBox(const PreparedLight& l, const glm::dvec3& lo, co
   const glm::dvec3 v = 0.5 * (lo + hi) - l.PositionWC;
   const double rho = 0.5 * glm::length(hi - lo);
   const double D = glm::length(v);
-  if (!(D > rho) || !(l.CosCone > -1.5))
+  if (!(D > rho) || !l.IsSpot())
   {
     return true;
   }
@@ -716,7 +716,7 @@ std::int64_t ComputeFarFieldMomentsOf(const FarFieldGrid& grid,
       [&](int light, bool isWindowed)
       {
         const PreparedLight& l = lights[static_cast<std::size_t>(light)];
-        if (l.CosCone > -1.5)
+        if (l.IsSpot())
         {
           if (IsVectorSpotExponent(l.Exponent))
           {

@@ -79,6 +79,8 @@ struct PreparedLight
   /// Split at Radius into a windowed near part and a far part that the far field holds
   /// (vtkClusteredLightingFarField.h); set by PlanFarField.
   bool FarField = false;
+
+  bool IsSpot() const { return this->CosCone > -1.5; }
 };
 
 struct LightPreparationOptions
@@ -394,15 +396,28 @@ inline glm::dvec3 ComputeCutoffTailBound(const glm::dvec3& pointVC,
 }
 
 /**
- * VTK's spot factor of light `l` at world point p, as the shading code evaluates it: 1 for
- * a point light (and at the light itself), 0 outside the cone, pow(cos(angle), Exponent)
- * inside. A cosine within `slack` of the cone's counts as inside, with the cosine taken
- * `slack` larger: the default 1e-6 gives an upper bound of the factor the float shading
- * code may compute there (for the tails' bounds), 0 VTK's formula itself (the far field).
+ * VTK's spot factor of spot light `l` where the cosine of the angle from its axis is
+ * cosAngle, as the shading code evaluates it: 0 outside the cone, pow(cos(angle),
+ * Exponent) inside. A cosine within `slack` of the cone's counts as inside, with the
+ * cosine taken `slack` larger: the default 1e-6 gives an upper bound of the factor the
+ * float shading code may compute there (for the tails' bounds), 0 VTK's formula itself
+ * (the far field, ComputeFarContribution).
  */
+inline double EvaluateSpotFactorAtCosine(
+  double cosAngle, const PreparedLight& l, double slack = 1e-6)
+{
+  if (cosAngle < l.CosCone - slack)
+  {
+    return 0.0;
+  }
+  const double c = std::min(std::max(cosAngle + slack, 0.0), 1.0);
+  return l.Exponent == 1.0 ? c : std::pow(c, l.Exponent);
+}
+
+/// EvaluateSpotFactorAtCosine at world point p: 1 for a point light and at the light itself.
 inline double EvaluateSpotFactor(const glm::dvec3& p, const PreparedLight& l, double slack = 1e-6)
 {
-  if (!(l.CosCone > -1.5))
+  if (!l.IsSpot())
   {
     return 1.0;
   }
@@ -412,12 +427,7 @@ inline double EvaluateSpotFactor(const glm::dvec3& p, const PreparedLight& l, do
   {
     return 1.0;
   }
-  const double cosAngle = glm::dot(toP / d, l.DirectionWC);
-  if (cosAngle < l.CosCone - slack)
-  {
-    return 0.0;
-  }
-  return std::pow(std::min(std::max(cosAngle + slack, 0.0), 1.0), l.Exponent);
+  return EvaluateSpotFactorAtCosine(glm::dot(toP / d, l.DirectionWC), l, slack);
 }
 
 /// Each light's culling radius at `cutoff` (the radius PrepareLights gives it, capped at its

@@ -9,9 +9,10 @@
 # Except in the sanitizer build (CLUSTERED_LIGHTING_SANITIZE, scripts/run-sanitizers.sh),
 # where every test runs beside another: there most of a GL test's time is our
 # instrumented code, not llvmpipe's (the GL tests took 235 s in all in the normal build,
-# 777 s under AddressSanitizer; two at a time cut that stage's ctest from 923 s to 715 s
-# on the 2-core machine), and no test checks a time (the benchmark's smoke test and the
-# examples print theirs; the soak test skips its memory checks there).
+# 777 s under AddressSanitizer; two at a time and the soak test's shorter run there cut
+# that stage's ctest from 923 s to 715 s on the 2-core machine), and no test checks a time
+# (the benchmark's smoke test and the examples print theirs; the soak test skips its
+# memory checks there).
 
 # Marks every test added so far in the calling directory to run alone (RUN_SERIAL), but
 # not in the sanitizer build (above).

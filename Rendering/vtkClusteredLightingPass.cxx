@@ -1428,6 +1428,10 @@ bool vtkClusteredLightingPass::SetShaderParameters(
       // left them out past FarFieldExactSumLimit, see UpdateShaderVariant).
       program->SetUniformf("clFarFieldTolerance", static_cast<float>(this->FarFieldTolerance));
     }
+    if (program->IsUniformUsed("clFarSumsOnBackFaces"))
+    {
+      program->SetUniformi("clFarSumsOnBackFaces", this->FarFieldExactSumsOnBackFaces ? 1 : 0);
+    }
   }
   if (program->IsUniformUsed("clLightCount"))
   {
@@ -1501,6 +1505,9 @@ void vtkClusteredLightingPass::PrintSelf(ostream& os, vtkIndent indent)
   os << next << "FarFieldCellsPerRadius: " << this->FarFieldCellsPerRadius << "\n";
   os << next << "FarFieldTolerance: " << this->FarFieldTolerance << "\n";
   os << next << "FarFieldExactSumLimit: " << this->FarFieldExactSumLimit << "\n";
+  os << next
+     << "FarFieldExactSumsOnBackFaces: " << (this->FarFieldExactSumsOnBackFaces ? "On" : "Off")
+     << "\n";
   os << next << "FarFieldGrouping: " << this->FarFieldGrouping << "\n";
   os << next << "FarFieldSharedColor: " << (this->FarFieldSharedColor ? "On" : "Off") << "\n";
   const double* r = this->FarFieldRegion;

@@ -16,7 +16,9 @@ both actors PBR. --budget STEPS (repeatable) also renders with that ErrorBudgetI
 writes its image and prints the cutoffs and the far field's resolution it chose and its
 stated bound. --spots FRACTION makes that fraction of the lights spot lights (split by
 the far field like the others since 2026-11-30, at their cutoff radius, cones included);
---counts prints the lights evaluated and reaching per pixel of each clustered render. The
+--back-face-sums also renders with FarFieldExactSumsOnBackFaces on (the floor here is a
+back face: vtkPlaneSource's normal points down). --counts prints the lights evaluated and
+reaching per pixel of each clustered render. The
 default render's line also gives the far field's build time and how many lights it
 splits.
 
@@ -108,6 +110,9 @@ def main():
     parser.add_argument("--spots", type=float, default=0.0, metavar="FRACTION",
                         help="make this fraction of the lights spot lights (cone 60 degrees, "
                         "pointing down; default: none)")
+    parser.add_argument("--back-face-sums", action="store_true",
+                        help="also render with FarFieldExactSumsOnBackFaces on (the floor is a "
+                        "back face, and so are the ball's hidden far side)")
     parser.add_argument("--counts", action="store_true",
                         help="also print the lights evaluated and reaching per pixel of each "
                         "clustered render (the pass's evaluated-count view, one more render)")
@@ -179,6 +184,15 @@ def main():
         if args.counts and name != "brute":
             counts[name] = light_counts(window, pass_)
     pass_.SetFarField(True)
+    if args.back_face_sums:
+        pass_.SetFarFieldExactSumsOnBackFaces(True)
+        ms = timed_render(window, args.frames)
+        image, pixels = grab(window)
+        write_png(image, "%s-back-face-sums.png" % args.prefix)
+        results["back-face-sums"] = (ms, pixels)
+        if args.counts:
+            counts["back-face-sums"] = light_counts(window, pass_)
+        pass_.SetFarFieldExactSumsOnBackFaces(False)
     budgets = {}
     for steps in args.budget:
         pass_.SetErrorBudgetInSteps(steps)
@@ -203,7 +217,8 @@ def main():
           % (args.lights, pass_.GetNumberOfSpotLights(), pass_.GetNumberOfClusteredLights(),
              args.intensity))
     print("brute force: %.1f ms" % brute_ms)
-    for name in ["default", "farfield-off"] + list(budgets):
+    extra = ["back-face-sums"] if args.back_face_sums else []
+    for name in ["default", "farfield-off"] + extra + list(budgets):
         ms, pixels = results[name]
         diff = numpy.abs(pixels - brute)
         rmse[name] = numpy.sqrt((diff.astype(float) ** 2).mean())

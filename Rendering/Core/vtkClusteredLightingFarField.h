@@ -660,7 +660,7 @@ inline glm::dvec3 ComputeLobeKernel(double n)
 /// from n = 1 on, t^n <= 1 below.
 enum class LobeUpperEnd
 {
-  SecondMoment, ///< min(D^T T D, the diffuse upper ends)
+  SecondMoment, ///< min(D^T T D, ComputeLobeQuadraticUpper, the diffuse upper ends)
   Diffuse,      ///< the diffuse upper ends
   Total         ///< S
 };
@@ -668,6 +668,42 @@ inline LobeUpperEnd GetLobeUpperEnd(double n)
 {
   return n >= 2.0 ? LobeUpperEnd::SecondMoment
                   : (n >= 1.0 ? LobeUpperEnd::Diffuse : LobeUpperEnd::Total);
+}
+
+/**
+ * The least upper end of a Phong lobe of power n >= 2 that the quadratics
+ * q_c(t) = ((t - c) / (1 - c))^2, -1 <= c <= 0, give from one channel's S, V.D and
+ * D^T T D. Each lies above max(0, t)^n on [-1, 1] (on [0, 1], (t - c) / (1 - c) >= t, so
+ * q_c >= t^2 >= t^n; below 0 it is a square), so sum g q_c = (D^T T D - 2 c V.D + c^2 S) /
+ * (1 - c)^2 bounds the lobe's sum. c = 0 gives D^T T D, c = -1 gives (S + 2 V.D +
+ * D^T T D) / 4 (an upper end of the clamped cosine too); the best c between them is
+ * (V.D - D^T T D) / (S - V.D), where the bound is Cantelli's inequality. It is much lower
+ * than D^T T D where the far light comes from behind the mirrored view (all of it from
+ * t = -1/2: 0 instead of S / 4).
+ */
+inline double ComputeLobeQuadraticUpper(double S, double VD, double DTD)
+{
+  const double c = S - VD > 0.0 ? std::min(std::max((VD - DTD) / (S - VD), -1.0), 0.0) : 0.0;
+  return (DTD - 2.0 * c * VD + c * c * S) / ((1.0 - c) * (1.0 - c));
+}
+
+/**
+ * How far ComputeLobeQuadraticUpper can move when S, V.D and D^T T D move by at most dS,
+ * dV and dD (the stated bound's clamp term). The least of a family moves by at most the
+ * most any member moves: with s = -c in [0, 1], (dD + 2 s dV + s^2 dS) / (1 + s)^2, whose
+ * largest value is at s = 0, s = 1 or its one critical point, s = (dD - dV) / (dS - dV).
+ */
+inline double ComputeLobeQuadraticUpperShift(double dS, double dV, double dD)
+{
+  auto member = [&](double t)
+  { return (dD + 2.0 * t * dV + t * t * dS) / ((1.0 + t) * (1.0 + t)); };
+  double shift = std::max(member(0.0), member(1.0));
+  if (dS != dV)
+  {
+    const double t = (dD - dV) / (dS - dV);
+    shift = t > 0.0 && t < 1.0 ? std::max(shift, member(t)) : shift;
+  }
+  return shift;
 }
 
 /**
@@ -680,8 +716,9 @@ inline LobeUpperEnd GetLobeUpperEnd(double n)
  *   E <= (S + 2 V.D + D^T T D) / 4                 ((1 + t)^2 / 4 lies above)
  *   E <= (V.D + sqrt(S D^T T D)) / 2               (max(0, t) = (t + |t|) / 2 and
  *                                                  sum g |t| <= sqrt(sum g sum g t^2))
- * and for a Phong lobe of power n, 0 <= sum g max(0, t)^n <= U with U = min(D^T T D, the
- * diffuse upper bounds) for n >= 2 (t^n <= t^2 on [0, 1]), the diffuse upper bounds for
+ * and for a Phong lobe of power n, 0 <= sum g max(0, t)^n <= U with U = min(D^T T D,
+ * ComputeLobeQuadraticUpper, the diffuse upper bounds) for n >= 2 (t^n <= t^2 on [0, 1];
+ * ComputeLobeQuadraticUpper since 2026-12-05), the diffuse upper bounds for
  * 1 <= n < 2 (t^n <= t), and S for n < 1 (t^n <= 1; D^T T D is no bound below n = 2: at
  * n = 1.2 a lobe can hold 20% more). Clamping an estimate into an interval that holds the truth
  * never increases its error; it removes the order-2 kernel's ringing where it matters most: a
@@ -703,8 +740,9 @@ inline double ApplyMomentKernel(const double* m, const glm::dvec3& k, const glm:
   if (lobe)
   {
     const LobeUpperEnd end = GetLobeUpperEnd(power);
-    upper = end == LobeUpperEnd::SecondMoment ? std::min(upper, DTD)
-                                              : (end == LobeUpperEnd::Diffuse ? upper : S);
+    upper = end == LobeUpperEnd::SecondMoment
+      ? std::min(upper, std::min(DTD, ComputeLobeQuadraticUpper(S, VD, DTD)))
+      : (end == LobeUpperEnd::Diffuse ? upper : S);
     lower = 0.0;
   }
   upper = std::max(upper, lower);

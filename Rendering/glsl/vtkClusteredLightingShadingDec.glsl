@@ -112,7 +112,11 @@ vec3 clApplyFarKernel(vec3 k, vec3 D, vec3 S, vec3 Vx, vec3 Vy, vec3 Vz, vec3 Tx
   lower = max(max(VD, vec3(0.0)), 0.5 * (VD + DTD));
   if (lobe)
   {
-    upper = power >= 2.0 ? min(upper, DTD) : (power >= 1.0 ? upper : S);
+    // ComputeLobeQuadraticUpper: the least of ((t - c) / (1 - c))^2 over -1 <= c <= 0.
+    vec3 c = mix(vec3(0.0), clamp((VD - DTD) / max(S - VD, vec3(1e-30)), -1.0, 0.0),
+      greaterThan(S - VD, vec3(0.0)));
+    vec3 quadratic = (DTD - 2.0 * c * VD + c * c * S) / ((1.0 - c) * (1.0 - c));
+    upper = power >= 2.0 ? min(upper, min(DTD, quadratic)) : (power >= 1.0 ? upper : S);
     lower = vec3(0.0);
   }
   upper = max(upper, lower);
@@ -121,6 +125,9 @@ vec3 clApplyFarKernel(vec3 k, vec3 D, vec3 S, vec3 Vx, vec3 Vy, vec3 Vz, vec3 Tx
 
 uniform int clLightCount;         // for the exact far parts
 uniform float clFarFieldTolerance; // see the far-field block of the shading code
+//CL_IF(PHONG)
+uniform bool clFarSumsOnBackFaces; // FarFieldExactSumsOnBackFaces
+//CL_ENDIF
 
 // Light i's far part at P when it is split (its exponent slot is negative): VTK's
 // attenuation times (1 - window(d / near radius)), and a spot light's spot factor (its

@@ -238,10 +238,16 @@
     // fragments, faint ones (highest value below 1) never.
 //CL_IF(PHONG)
     vec3 clHighest = clLowest + clUncertain;
+    // Back faces only if asked (FarFieldExactSumsOnBackFaces): a software rasterizer runs
+    // the hidden back faces of closed surfaces through here too.
+    bool clFacing = gl_FrontFacing || clFarSumsOnBackFaces;
+//CL_ENDIF
+//CL_IF(PBR)
+    bool clFacing = true;
 //CL_ENDIF
     bvec3 clBelow = lessThan(clLowest, vec3(1.0));
     bvec3 clAbove = greaterThan(clHighest, vec3(1.0));
-    if (clFarFieldTolerance < 1.0 &&
+    if (clFarFieldTolerance < 1.0 && clFacing &&
       ((clBelow.r && clAbove.r) || (clBelow.g && clAbove.g) || (clBelow.b && clAbove.b)) &&
       max(max(clUncertain.r, clUncertain.g), clUncertain.b) > clFarFieldTolerance)
     {

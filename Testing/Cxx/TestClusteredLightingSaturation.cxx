@@ -130,6 +130,24 @@ int TestClusteredLightingSaturation(int, char*[])
               pass, rw, ren, 1.4, (what + ", above the exact sum limit").c_str()) == 0,
         "above the exact sum limit: within the derived bound of brute force");
       pass->SetFarFieldExactSumLimit(limit);
+
+      // FarFieldExactSumsOnBackFaces. The floor is a back face here (vtkPlaneSource's
+      // normal, Point1 x Point2, points down, away from the camera; VTK lights it from
+      // above all the same): by default only the ball's front takes the sums, and the
+      // floor keeps the moments' estimate, inside its stated bound (checked above). Asked
+      // to, the floor takes them too: more lights evaluated, and the same statement holds.
+      pass->SetFarFieldExactSumsOnBackFaces(true);
+      const double withBackFaces = MeanEvaluated(pass, rw);
+      std::printf("%s, exact sums on back faces too: lights evaluated per pixel %.1f\n",
+        what.c_str(), withBackFaces);
+      Check(withBackFaces > evaluated + 5.0, "back faces take the exact sums only when asked to");
+      ClusteredLightingTest::BruteForceCheck backFaces;
+      Check(ClusteredLightingTest::CheckClusteredFrame(pass, rw, ren, 1.4,
+              (what + ", exact sums on back faces").c_str(), 0, &backFaces) == 0,
+        "exact sums on back faces: within the derived bound of brute force");
+      Check(255.0 * backFaces.Image.MaxAbsError <= 5.0 + 1e-3 && 255.0 * backFaces.Image.RMSE < 1.0,
+        "exact sums on back faces: at most 5 steps from brute force, RMSE under one step");
+      pass->SetFarFieldExactSumsOnBackFaces(false);
     }
   }
 

@@ -559,6 +559,75 @@ TEST(FarFieldKernel, ClampIntervalHoldsTheTrueDiffuseAndLobe)
   }
 }
 
+TEST(FarFieldKernel, LobeUpperEndFromQuadraticsIsLowerBehindTheMirroredView)
+{
+  // All of the far light from t = -1/2 (behind the mirrored view): no lobe at all. D^T T D
+  // proves at most S / 4; the quadratics ((t - c) / (1 - c))^2 prove 0 (c = -1/2).
+  const double S = 2.0, VD = -1.0, DTD = 0.5;
+  EXPECT_NEAR(ComputeLobeQuadraticUpper(S, VD, DTD), 0.0, 1e-12);
+  double m[FarFieldFloatsPerNode] = {};
+  const glm::dvec3 D(0.0, 0.0, 1.0);
+  const glm::dvec3 u(std::sqrt(0.75), 0.0, -0.5);
+  AccumulateFarMoments(glm::dvec3(1.0), S, u, m);
+  double lower = -1.0, upper = -1.0;
+  ApplyMomentKernel(m, ComputeLobeKernel(20.0), D, true, 20.0, &lower, &upper);
+  EXPECT_NEAR(upper, 0.0, 1e-9);
+  // Light from every direction alike (S = 1, V.D = 0, D^T T D = 1/3): Cantelli's 1/4
+  // instead of 1/3; light along D (V.D = D^T T D = S): S, as the lobe's sum is.
+  EXPECT_NEAR(ComputeLobeQuadraticUpper(1.0, 0.0, 1.0 / 3.0), 0.25, 1e-12);
+  EXPECT_NEAR(ComputeLobeQuadraticUpper(3.0, 3.0, 3.0), 3.0, 1e-12);
+  // Never above D^T T D (c = 0 is in the family) nor the clamped cosine's (1 + t)^2 / 4 end.
+  std::mt19937 rng(31);
+  std::uniform_real_distribution<double> U(-1.0, 1.0);
+  for (int trial = 0; trial < 1000; ++trial)
+  {
+    const double s = 1.0, v = U(rng), d = std::abs(U(rng));
+    const double q = ComputeLobeQuadraticUpper(s, v, d);
+    EXPECT_LE(q, d + 1e-12);
+    EXPECT_LE(q, 0.25 * (s + 2.0 * v + d) + 1e-12);
+  }
+}
+
+TEST(FarFieldKernel, LobeQuadraticUpperMovesNoMoreThanItsShift)
+{
+  // The stated bound's clamp term: moments moved by at most (dS, dV, dD) move the end by at
+  // most ComputeLobeQuadraticUpperShift, for realizable moments and moves of every size.
+  std::mt19937 rng(37);
+  std::normal_distribution<double> G(0.0, 1.0);
+  std::uniform_real_distribution<double> U(0.0, 1.0);
+  double closest = 0.0; // the largest move / shift seen: the shift is not vacuous
+  for (int trial = 0; trial < 20000; ++trial)
+  {
+    double a[3] = {}, b[3] = {};
+    for (double* m : { a, b })
+    {
+      for (int j = 0; j < 1 + trial % 5; ++j)
+      {
+        const double g = U(rng);
+        const double t = std::max(-1.0, std::min(1.0, (trial % 2 ? -0.5 : 0.0) + 0.5 * G(rng)));
+        m[0] += g;
+        m[1] += g * t;
+        m[2] += g * t * t;
+      }
+      if (m == b)
+      {
+        const double scale = std::pow(10.0, -3.0 * U(rng)); // small and large moves
+        for (int q = 0; q < 3; ++q)
+        {
+          b[q] = a[q] + scale * (b[q] - a[q]);
+        }
+      }
+    }
+    const double move = std::abs(
+      ComputeLobeQuadraticUpper(a[0], a[1], a[2]) - ComputeLobeQuadraticUpper(b[0], b[1], b[2]));
+    const double shift = ComputeLobeQuadraticUpperShift(
+      std::abs(a[0] - b[0]), std::abs(a[1] - b[1]), std::abs(a[2] - b[2]));
+    EXPECT_LE(move, shift * (1.0 + 1e-9) + 1e-15) << "trial " << trial;
+    closest = shift > 0.0 ? std::max(closest, move / shift) : closest;
+  }
+  EXPECT_GT(closest, 0.5);
+}
+
 namespace
 {
 /// A random PBR material as VTK builds it (F0 = mix(baseF0, albedo, metallic), F90 =

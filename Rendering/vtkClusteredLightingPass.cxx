@@ -1428,23 +1428,26 @@ bool vtkClusteredLightingPass::SetShaderParameters(
       // left them out past FarFieldExactSumLimit, see UpdateShaderVariant).
       program->SetUniformf("clFarFieldTolerance", static_cast<float>(this->FarFieldTolerance));
     }
-    if (program->IsUniformUsed("clFarSumsOnBackFaces"))
-    {
-      program->SetUniformi("clFarSumsOnBackFaces", this->FarFieldExactSumsOnBackFaces ? 1 : 0);
-    }
   }
   if (program->IsUniformUsed("clLightCount"))
   {
     program->SetUniformi("clLightCount", r.NumberOfLights);
   }
+  vtkActor* actor = vtkActor::SafeDownCast(prop);
+  const bool blended = actor && actor->IsRenderingTranslucentPolygonalGeometry();
   if (program->IsUniformUsed("clClampsAtOne"))
   {
     // Blended translucent fragments (depth peeling, order-independent translucency)
     // are weighted by their opacity after the shader: values above 1 still count.
-    vtkActor* actor = vtkActor::SafeDownCast(prop);
-    const bool blended = actor && actor->IsRenderingTranslucentPolygonalGeometry();
     program->SetUniformi(
       "clClampsAtOne", !blended && vtkClusteredLightingDrawTargetClampsAtOne() ? 1 : 0);
+  }
+  if (program->IsUniformUsed("clFarSumsOnBackFaces"))
+  {
+    // A translucent surface's back faces show through its front: they sum as the front
+    // does (FarFieldExactSumsOnBackFaces is for opaque ones).
+    program->SetUniformi(
+      "clFarSumsOnBackFaces", this->FarFieldExactSumsOnBackFaces || blended ? 1 : 0);
   }
   if (program->IsUniformUsed("clHeatMapMaximum"))
   {

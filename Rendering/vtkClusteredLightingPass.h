@@ -411,8 +411,9 @@ public:
    * by 4,096 lights as a new user writes them straddle saturation as its front does, and
    * their sums made the frame 20 times longer (1.85 s against 91 ms on llvmpipe), with the
    * same image (docs/far-field.md,
-   * "The exact far sums where they show"). Turn it on for open surfaces seen from behind,
-   * or translucent ones, under a bright far field. PBR fragments take the sums on both sides (their
+   * "The exact far sums where they show"). Turn it on for open surfaces seen from behind
+   * under a bright far field. Translucent surfaces, whose back faces show through their
+   * front, sum on both sides whatever this says. PBR fragments take the sums on both sides (their
    * far light has no stated bound without them). Default is false.
    */
   vtkSetMacro(FarFieldExactSumsOnBackFaces, bool);

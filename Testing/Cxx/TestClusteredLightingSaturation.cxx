@@ -148,6 +148,35 @@ int TestClusteredLightingSaturation(int, char*[])
       Check(255.0 * backFaces.Image.MaxAbsError <= 5.0 + 1e-3 && 255.0 * backFaces.Image.RMSE < 1.0,
         "exact sums on back faces: at most 5 steps from brute force, RMSE under one step");
       pass->SetFarFieldExactSumsOnBackFaces(false);
+
+      // A translucent ball's back faces show through its front, so its draw sums on both
+      // sides whatever the option says: the same image with it on and off (the floor, an
+      // opaque back face, hidden meanwhile).
+      {
+        vtkActor* floor = vtkActor::SafeDownCast(ren->GetActors()->GetItemAsObject(0));
+        vtkActor* ball = vtkActor::SafeDownCast(ren->GetActors()->GetItemAsObject(1));
+        floor->VisibilityOff();
+        ball->GetProperty()->SetOpacity(0.3);
+        ren->SetUseDepthPeeling(1);
+        rw->Render();
+        const std::vector<float> off = ClusteredLightingTest::CapturePixels(rw);
+        pass->SetFarFieldExactSumsOnBackFaces(true);
+        rw->Render();
+        const std::vector<float> on = ClusteredLightingTest::CapturePixels(rw);
+        pass->SetFarFieldExactSumsOnBackFaces(false);
+        double largest = 0.0;
+        for (std::size_t i = 0; i < off.size() && i < on.size(); ++i)
+        {
+          largest = std::max(largest, std::abs(double(off[i]) - double(on[i])));
+        }
+        std::printf("%s, translucent ball: option on against off, max difference %.2f steps\n",
+          what.c_str(), 255.0 * largest);
+        Check(!off.empty() && off.size() == on.size() && largest == 0.0,
+          "a translucent ball sums on its back faces whatever FarFieldExactSumsOnBackFaces says");
+        ball->GetProperty()->SetOpacity(1.0);
+        ren->SetUseDepthPeeling(0);
+        floor->VisibilityOn();
+      }
     }
   }
 

@@ -112,7 +112,7 @@ def main():
                         "pointing down; default: none)")
     parser.add_argument("--back-face-sums", action="store_true",
                         help="also render with FarFieldExactSumsOnBackFaces on (the floor is a "
-                        "back face, and so are the ball's hidden far side)")
+                        "back face, and so is the ball's hidden far side)")
     parser.add_argument("--counts", action="store_true",
                         help="also print the lights evaluated and reaching per pixel of each "
                         "clustered render (the pass's evaluated-count view, one more render)")

@@ -467,8 +467,8 @@ inline void ComputeFarFieldErrorBounds(const FarFieldShadingPoint* points, int c
       // The lobe's upper end as ApplyMomentKernel takes it for this power.
       const LobeUpperEnd end = GetLobeUpperEnd(p.Power);
       const double lobeShift = end == LobeUpperEnd::SecondMoment
-        ? std::max(std::max(dRR, upperShift(dVR, dRR, exactRR[k][ch])),
-            ComputeLobeQuadraticUpperShift(dS, dVR, dRR))
+        ? std::max(
+            upperShift(dVR, dRR, exactRR[k][ch]), ComputeLobeQuadraticUpperShift(dS, dVR, dRR))
         : (end == LobeUpperEnd::Diffuse ? upperShift(dVR, dRR, exactRR[k][ch]) : dS);
       const double specular = std::max(std::abs(angularSpecular[k][ch]) + dQn, lobeShift);
       const double precision =

@@ -125,7 +125,7 @@ unsigned int vtkClusteredLightingAssigner::ViewKey::CompareWith(const ViewKey& o
     reasons |= CL_DIRTY_GRID;
   }
   if (this->Bounds != o.Bounds || this->Clustered != o.Clustered ||
-    this->PerClusterCulling != o.PerClusterCulling)
+    this->PerClusterCulling != o.PerClusterCulling || this->SpotConeCulling != o.SpotConeCulling)
   {
     reasons |= CL_DIRTY_MODE;
   }
@@ -359,6 +359,7 @@ const vtkClusteredLightingAssignment& vtkClusteredLightingAssigner::Update(
   view.Bounds = static_cast<int>(inputs.View.Bounds);
   view.Clustered = inputs.Clustered;
   view.PerClusterCulling = inputs.PerClusterCulling;
+  view.SpotConeCulling = inputs.View.SpotConeCulling;
   r.Reasons |= view.CompareWith(this->LastView);
   if (!r.Enabled)
   {
@@ -948,6 +949,7 @@ vtkClusteredLightingAssignmentSnapshot vtkClusteredLightingAssigner::GetSnapshot
   f.NumberOfQuads = this->Result.NumberOfQuads;
   f.FarField = this->Result.FarField ? this->FarFieldPlan : vtkClusteredLighting::FarFieldPlan();
   f.DepthBounds = this->Result.DepthAware ? this->DepthBounds : ClusterDepthBounds();
+  f.SpotConeCulling = this->LastView.SpotConeCulling;
   return f;
 }
 

@@ -209,6 +209,7 @@ struct vtkClusteredLightingAssignmentSnapshot
   int NumberOfQuads = 0;
   vtkClusteredLighting::FarFieldPlan FarField;          ///< Active when the far field is shaded
   vtkClusteredLighting::ClusterDepthBounds DepthBounds; ///< Valid when depth-aware
+  bool SpotConeCulling = true; ///< spot lights were assigned by their cones
 };
 
 class vtkClusteredLightingAssigner
@@ -285,7 +286,7 @@ private:
     glm::dmat4 WCVC = glm::dmat4(0.0), VCDC = glm::dmat4(0.0);
     vtkClusteredLighting::ClusterGridParams Grid;
     int Bounds = 0;
-    bool Clustered = true, PerClusterCulling = true;
+    bool Clustered = true, PerClusterCulling = true, SpotConeCulling = true;
     unsigned int CompareWith(const ViewKey& o) const; ///< dirty reasons between the two
   };
 

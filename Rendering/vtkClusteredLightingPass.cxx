@@ -907,6 +907,7 @@ vtkClusteredLightingAssignerInputs vtkClusteredLightingPass::MakeAssignerInputs(
   grid.Bounds = this->BoundsMethod == BOUNDS_CENTER_DEPTH_QUAD ? BoundsMethod::CenterDepthQuad
                                                                : BoundsMethod::Tangent;
   in.View = vtkClusteredLightingAssigner::ComputeView(ren, grid);
+  in.View.SpotConeCulling = this->SpotConeCulling;
   in.Clustered = this->ShadingMode == SHADING_CLUSTERED;
   in.PerClusterCulling = this->PerClusterCulling;
   in.MaximumTextureSize = this->MaximumTextureSize;
@@ -1526,6 +1527,7 @@ void vtkClusteredLightingPass::PrintSelf(ostream& os, vtkIndent indent)
   os << next << "NearFieldBudget: " << this->NearFieldBudget << "\n";
   os << next << "MortonOrder: " << (this->MortonOrder ? "On" : "Off") << "\n";
   os << next << "PerClusterCulling: " << (this->PerClusterCulling ? "On" : "Off") << "\n";
+  os << next << "SpotConeCulling: " << (this->SpotConeCulling ? "On" : "Off") << "\n";
   os << next << "DepthPrepass: " << (this->DepthPrepass ? "On" : "Off") << "\n";
   os << next << "AutomaticDepthPrepass: " << (this->AutomaticDepthPrepass ? "On" : "Off") << "\n";
   os << next << "ReuseDepthPrepass: " << (this->ReuseDepthPrepass ? "On" : "Off") << "\n";

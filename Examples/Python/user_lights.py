@@ -15,7 +15,10 @@ does not bring the image closer to brute force. --pbr METALLIC (and --roughness)
 both actors PBR. --budget STEPS (repeatable) also renders with that ErrorBudgetInSteps,
 writes its image and prints the cutoffs and the far field's resolution it chose and its
 stated bound. --spots FRACTION makes that fraction of the lights spot lights (split by
-the far field like the others since 2026-11-30, at their cutoff radius, cones included);
+the far field like the others since 2026-11-30, at their cutoff radius, cones included;
+--cone DEGREES sets their cone angle, 60 by default); --cone-culling-off also renders with
+SpotConeCulling off (spot lights assigned by their spheres) and exits with status 1 if
+its image is not the default's, bit for bit;
 --back-face-sums also renders with FarFieldExactSumsOnBackFaces on (the floor here is a
 back face: vtkPlaneSource's normal points down). --counts prints the lights evaluated and
 reaching per pixel of each clustered render. The
@@ -110,6 +113,11 @@ def main():
     parser.add_argument("--spots", type=float, default=0.0, metavar="FRACTION",
                         help="make this fraction of the lights spot lights (cone 60 degrees, "
                         "pointing down; default: none)")
+    parser.add_argument("--cone", type=float, default=60.0, metavar="DEGREES",
+                        help="the spot lights' cone angle (VTK's ConeAngle; default 60)")
+    parser.add_argument("--cone-culling-off", action="store_true",
+                        help="also render with SpotConeCulling off; exit 1 if that image "
+                        "differs from the default's")
     parser.add_argument("--back-face-sums", action="store_true",
                         help="also render with FarFieldExactSumsOnBackFaces on (the floor is a "
                         "back face, and so is the ball's hidden far side)")
@@ -144,7 +152,7 @@ def main():
         cloud = vtkPolyData()
         cloud.ShallowCopy(points.GetOutput())
         cones = numpy.full(args.lights, 180.0)
-        cones[:: max(1, int(round(1.0 / args.spots)))] = 60.0
+        cones[:: max(1, int(round(1.0 / args.spots)))] = args.cone
         array = numpy_to_vtk(cones, deep=True)
         array.SetName("ConeAngle")
         cloud.GetPointData().AddArray(array)
@@ -193,6 +201,15 @@ def main():
         if args.counts:
             counts["back-face-sums"] = light_counts(window, pass_)
         pass_.SetFarFieldExactSumsOnBackFaces(False)
+    if args.cone_culling_off:
+        pass_.SetSpotConeCulling(False)
+        ms = timed_render(window, args.frames)
+        image, pixels = grab(window)
+        write_png(image, "%s-cone-culling-off.png" % args.prefix)
+        results["cone-culling-off"] = (ms, pixels)
+        if args.counts:
+            counts["cone-culling-off"] = light_counts(window, pass_)
+        pass_.SetSpotConeCulling(True)
     budgets = {}
     for steps in args.budget:
         pass_.SetErrorBudgetInSteps(steps)
@@ -217,7 +234,8 @@ def main():
           % (args.lights, pass_.GetNumberOfSpotLights(), pass_.GetNumberOfClusteredLights(),
              args.intensity))
     print("brute force: %.1f ms" % brute_ms)
-    extra = ["back-face-sums"] if args.back_face_sums else []
+    extra = (["back-face-sums"] if args.back_face_sums else []) + (
+        ["cone-culling-off"] if args.cone_culling_off else [])
     for name in ["default", "farfield-off"] + extra + list(budgets):
         ms, pixels = results[name]
         diff = numpy.abs(pixels - brute)
@@ -239,6 +257,11 @@ def main():
     if not rmse["default"] < rmse["farfield-off"]:
         print("the far field did not bring the image closer to brute force")
         return 1
+    if args.cone_culling_off:
+        same = numpy.array_equal(results["cone-culling-off"][1], results["default"][1])
+        print("cone culling: the same image as without it: %s" % ("yes" if same else "NO"))
+        if not same:
+            return 1
     return 0
 
 

@@ -27,7 +27,9 @@
 #include "vtkClusteredLightingLayout.h"
 #include "vtkClusteredLightingLights.h"
 #include "vtkClusteredLightingSphereBounds.h"
+#include "vtkClusteredLightingSpotBounds.h"
 
+#include <cmath> // for std::isfinite
 #include <glm/glm.hpp>
 #include <vector> // for std::vector
 
@@ -35,7 +37,8 @@ namespace vtkClusteredLighting
 {
 
 /// Floats per light in clLightData / clLightView, and per (light, slice) quad in clQuads:
-///   (tileMinX, tileMinY, tileMaxX, tileMaxY), (slice, light index, 0, 0).
+///   (tileMinX, tileMinY, tileMaxX, tileMaxY), (slice, light index, cone, 0), where cone is
+///   a spot light's cos(cone angle) when the list pass tests its cone (-2: no cone test).
 constexpr int FloatsPerLightRecord = 8;
 constexpr int FloatsPerQuad = 8;
 
@@ -63,6 +66,10 @@ struct ViewParameters
   ClusterGridParams Grid;            ///< includes the clustering near/far (camera planes)
   BoundsMethod Bounds = BoundsMethod::Tangent;
   ClusterRangePadding Padding;
+  /// Spot lights are assigned only to the clusters their cones may reach (the sector's
+  /// bounding sphere here, the cone per cluster in the list pass;
+  /// vtkClusteredLightingSpotBounds.h).
+  bool SpotConeCulling = true;
 };
 
 struct ViewData
@@ -108,7 +115,9 @@ inline std::vector<float> PackLightData(const std::vector<PreparedLight>& lights
  * clusters of the rectangle are such (0: the quad is dropped). The margin is at least the list
  * shader's box margin (1e-4 (z1 + |c|) + 1e-6, with z1 <= hi), and the shader cuts each cell to
  * [max(slice near, lo), min(slice far, hi)], so every cluster left out here is one the
- * shader would reject too: the lists are the same, the list pass draws fewer texels.
+ * shader would reject too: the lists are the same, the list pass draws fewer texels. (For
+ * a spot light, c and radius are its sector's sphere, ComputeSpotSectorSphere: a cluster
+ * left out is one the sector cannot reach.)
  */
 inline int ShrinkToReachableClusters(const ClusterDepthBounds& depths, int tilesX,
   const glm::dvec3& c, double radius, SliceTileRange& r)
@@ -191,8 +200,23 @@ inline void ComputeViewDataRange(const std::vector<PreparedLight>& lights, const
     {
       continue;
     }
+    // A spot light's cone: its sector's sphere bounds the rectangles when it is smaller
+    // than the light's, and the list pass tests the cone per cluster.
+    const bool cone = v.SpotConeCulling && l.CosCone > -1.5 && glm::length(dir) > 0.5;
+    glm::dvec3 centre = c;
+    double radius = l.Radius;
+    if (cone && std::isfinite(l.Radius))
+    {
+      const SpotSectorSphere sector = ComputeSpotSectorSphere(c, dir, l.CosCone, l.Radius);
+      if (sector.Radius < radius)
+      {
+        centre = sector.Centre;
+        radius = sector.Radius;
+      }
+    }
+    const float coneRecord = cone ? static_cast<float>(l.CosCone) : -2.0f;
     ranges.clear();
-    if (ComputeSliceTileRanges(c, l.Radius, v.VCDC, v.Grid, ranges,
+    if (ComputeSliceTileRanges(centre, radius, v.VCDC, v.Grid, ranges,
           v.Bounds == BoundsMethod::CenterDepthQuad, v.Padding) == 0)
     {
       ++out.NumberOfCulled;
@@ -202,7 +226,7 @@ inline void ComputeViewDataRange(const std::vector<PreparedLight>& lights, const
     for (SliceTileRange& r : ranges)
     {
       const int reachable =
-        depthAware ? ShrinkToReachableClusters(*depths, v.Grid.TilesX, c, l.Radius, r) : -1;
+        depthAware ? ShrinkToReachableClusters(*depths, v.Grid.TilesX, centre, radius, r) : -1;
       if (reachable == 0)
       {
         continue;
@@ -210,8 +234,8 @@ inline void ComputeViewDataRange(const std::vector<PreparedLight>& lights, const
       ++quads;
       const float q[FloatsPerQuad] = { static_cast<float>(r.TileMin[0]),
         static_cast<float>(r.TileMin[1]), static_cast<float>(r.TileMax[0]),
-        static_cast<float>(r.TileMax[1]), static_cast<float>(r.Slice), static_cast<float>(i), 0.0f,
-        0.0f };
+        static_cast<float>(r.TileMax[1]), static_cast<float>(r.Slice), static_cast<float>(i),
+        coneRecord, 0.0f };
       out.Quads.insert(out.Quads.end(), q, q + FloatsPerQuad);
       out.ClusterCoverage += reachable > 0 ? static_cast<double>(reachable)
                                            : static_cast<double>(r.TileMax[0] - r.TileMin[0] + 1) *

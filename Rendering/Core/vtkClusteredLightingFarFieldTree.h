@@ -54,6 +54,7 @@
 #define vtkClusteredLightingFarFieldTree_h
 
 #include "vtkClusteredLightingFarField.h"
+#include "vtkClusteredLightingSpotBounds.h"
 
 #include <algorithm> // for std::nth_element
 #include <array>     // for std::array
@@ -304,23 +305,14 @@ inline void ComputeGroupSpreadTerms(
 
 /**
  * Whether some point of the box [lo, hi] may lie inside spot light l's cone (false only
- * where the spot factor is 0 at every point of it). The box's bounding sphere, of radius
- * rho about its centre at distance D from the light, is seen from the light within an
- * angle asin(rho / D) of the direction to its centre; the box is outside the cone when
- * even that nearest direction is 1e-6 radians past the cone's angle.
+ * where the spot factor is 0 at every point of it): the box's bounding sphere against the
+ * cone widened by 1e-6 radians (SpotConeMayReachBall).
  */
 inline bool SpotConeMayReachBox(const PreparedLight& l, const glm::dvec3& lo, const glm::dvec3& hi)
 {
-  const glm::dvec3 v = 0.5 * (lo + hi) - l.PositionWC;
-  const double rho = 0.5 * glm::length(hi - lo);
-  const double D = glm::length(v);
-  if (!(D > rho) || !l.IsSpot())
-  {
-    return true;
-  }
-  const double toCentre = std::acos(std::min(std::max(glm::dot(v / D, l.DirectionWC), -1.0), 1.0));
-  const double cone = std::acos(std::min(std::max(l.CosCone, -1.0), 1.0));
-  return toCentre - std::asin(std::min(rho / D, 1.0)) <= cone + 1e-6;
+  return !l.IsSpot() ||
+    SpotConeMayReachBall(
+      l.PositionWC, l.DirectionWC, l.CosCone, 0.5 * (lo + hi), 0.5 * glm::length(hi - lo), 1e-6);
 }
 
 /**

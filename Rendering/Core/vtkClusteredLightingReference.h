@@ -22,6 +22,13 @@
  * Depth-aware clusters (vtkClusteredLightingDepthBounds.h): each cell's depth range is
  * further cut to the cluster's recorded interval, and a cluster without one is empty.
  *
+ * Spot lights whose cones the pass culls (ReferenceLight::CosCone > -1.5): a cell must
+ * also come within the radius of the sector's bounding sphere (ComputeSpotSectorSphere)
+ * and its bounding box's ball must meet the cone (SpotConeMayReachBall): the tests of
+ * vtkClusteredLightingSpotBounds.h in double precision, on the exact cell, each holding
+ * every point the light can reach (the core tests check that by sampling), so the GPU's
+ * float tests, with their margins, must keep every cell kept here.
+ *
  * For speed, each light is first tested only against the cells that its clipped
  * axis-aligned box can touch: the projection of a box in front of the eye lies in the
  * convex hull of its projected corners, so that prefilter is conservative too (and
@@ -33,6 +40,7 @@
 #include "vtkClusteredLightingDepthBounds.h"
 #include "vtkClusteredLightingLayout.h"
 #include "vtkClusteredLightingSphereBounds.h"
+#include "vtkClusteredLightingSpotBounds.h"
 
 #include <array>   // for std::array
 #include <cstdint> // for uint32_t
@@ -48,7 +56,9 @@ namespace vtkClusteredLighting
 struct ReferenceLight
 {
   glm::dvec3 CenterVC;
-  double Radius; ///< may be +inf (always on) or 0 (never reaches anything)
+  double Radius;                       ///< may be +inf (always on) or 0 (never reaches anything)
+  glm::dvec3 AxisVC = glm::dvec3(0.0); ///< a spot light's unit axis, when CosCone > -1.5
+  double CosCone = -2.0; ///< cos(cone angle) of a spot light whose cone is culled, else -2
 };
 
 /// Geometry of one cluster cell: eight corners, index ix + 2 iy + 4 iz.
@@ -276,6 +286,10 @@ inline ReferenceAssignment ComputeReferenceAssignment(const std::vector<Referenc
       s0 = std::max(ComputeSliceIndex(zmin, grid) - 1, 0);
       s1 = std::min(ComputeSliceIndex(zmax, grid) + 1, grid.Slices - 1);
     }
+    const bool spot = l.CosCone > -1.5;
+    const SpotSectorSphere sector = spot && std::isfinite(l.Radius)
+      ? ComputeSpotSectorSphere(l.CenterVC, l.AxisVC, l.CosCone, l.Radius)
+      : SpotSectorSphere{ l.CenterVC, l.Radius };
     for (int ty = t0[1]; ty <= t1[1]; ++ty)
     {
       for (int tx = t0[0]; tx <= t1[0]; ++tx)
@@ -287,6 +301,22 @@ inline ReferenceAssignment ComputeReferenceAssignment(const std::vector<Referenc
           if (cell.Empty)
           {
             continue;
+          }
+          if (spot)
+          {
+            glm::dvec3 lo = cell.Corners[0], hi = cell.Corners[0];
+            for (const glm::dvec3& corner : cell.Corners)
+            {
+              lo = glm::min(lo, corner);
+              hi = glm::max(hi, corner);
+            }
+            if (!SpotConeMayReachBall(
+                  l.CenterVC, l.AxisVC, l.CosCone, 0.5 * (lo + hi), 0.5 * glm::length(hi - lo)) ||
+              (std::isfinite(sector.Radius) &&
+                !(DistanceToCell(sector.Centre, cell) < sector.Radius)))
+            {
+              continue;
+            }
           }
           if (std::isinf(l.Radius) || DistanceToCell(l.CenterVC, cell) < l.Radius)
           {

@@ -16,6 +16,10 @@
 // CPU has already shrunk each quad to the clusters whose intervals the light's depth
 // extent overlaps (ShrinkToReachableClusters, vtkClusteredLightingAssignment.h), a subset
 // of what this test rejects, so it only saves texels.
+//
+// Spot cones (clConeVSOutput.w > -1.5, the pass's SpotConeCulling): a spot light lights
+// only its cone, so a cluster whose box's bounding ball lies outside the cone gets no bit
+// (clSpotConeMayReach mirrors SpotConeMayReachBall, vtkClusteredLightingSpotBounds.h).
 //CL_DEPTH_AWARE
 
 uniform ivec4 clGrid;        // tilesX, tilesY, slices, batchRows
@@ -31,6 +35,7 @@ uniform sampler2D clClusterDepths; // (lo, hi) per cluster, texel (s * X + tx, t
 
 flat in uint clBitVSOutput;
 flat in vec4 clSphereVSOutput;
+flat in vec4 clConeVSOutput;
 
 out uvec4 clListOutput;
 
@@ -53,12 +58,26 @@ float clUnproject(vec3 row, float ndc, float depth)
   return (ndc * w - row.y * zVC - row.z) / row.x;
 }
 
+// Whether the ball (centre, rho) may meet the cone at apex (unit axis cone.xyz,
+// cos(cone angle) cone.w): D sin(phi - theta) = cos(theta) across - sin(theta) along is
+// at most the distance to the cone, and every point of the cone has along >= 0. rho grows
+// by SpotConeShaderSlack (4e-3) of the distance, twice the core's angular slack.
+bool clSpotConeMayReach(vec3 apex, vec4 cone, vec3 centre, float rho)
+{
+  vec3 v = centre - apex;
+  float along = dot(v, cone.xyz);
+  float across = sqrt(max(dot(v, v) - along * along, 0.0));
+  float sinCone = sqrt(max(1.0 - cone.w * cone.w, 0.0));
+  float slack = rho + 4e-3 * length(v);
+  return cone.w * across - sinCone * along <= slack && along >= -slack;
+}
+
 void main()
 {
 #ifdef CL_DEPTH_AWARE
   if (clCullClusters != 0)
 #else
-  if (clCullClusters != 0 && clSphereVSOutput.w < 1e29)
+  if (clCullClusters != 0 && (clSphereVSOutput.w < 1e29 || clConeVSOutput.w > -1.5))
 #endif
   {
     ivec2 texel = ivec2(gl_FragCoord.xy);
@@ -99,6 +118,10 @@ void main()
     vec3 outside = max(max(lo - c, c - hi), vec3(0.0));
     float r = clSphereVSOutput.w;
     if (dot(outside, outside) > r * r)
+    {
+      discard;
+    }
+    if (clConeVSOutput.w > -1.5 && !clSpotConeMayReach(c, clConeVSOutput, 0.5 * (lo + hi), 0.5 * length(hi - lo)))
     {
       discard;
     }

@@ -5,7 +5,8 @@
 // precision (vtkClusteredLightingSphereBounds.h, ComputeSliceTileRanges) and arrive as
 // integers in a float texture buffer (exact below 2^24):
 //   texel 2q   : (tileMinX, tileMinY, tileMaxX, tileMaxY)
-//   texel 2q+1 : (slice, lightIndex, 0, 0)
+//   texel 2q+1 : (slice, lightIndex, cone, 0): cone is a spot light's cos(cone angle) when
+//                the fragment shader tests its cone per cluster, -2 otherwise
 // In a batch block the clusters of slice s start at column s * X (slice-major layout).
 
 uniform samplerBuffer clQuads;
@@ -15,6 +16,7 @@ uniform vec2 clListSize;    // list texture size in texels
 
 flat out uint clBitVSOutput;
 flat out vec4 clSphereVSOutput; // light centre (VC) and radius
+flat out vec4 clConeVSOutput;   // spot axis (VC) and cos(cone angle), or -2: no cone test
 
 void main()
 {
@@ -34,4 +36,5 @@ void main()
   gl_Position = vec4(2.0 * texel / clListSize - 1.0, 0.0, 1.0);
   clBitVSOutput = 1u << uint(light & 31);
   clSphereVSOutput = texelFetch(clLightView, 2 * light);
+  clConeVSOutput = vec4(texelFetch(clLightView, 2 * light + 1).xyz, record.z);
 }

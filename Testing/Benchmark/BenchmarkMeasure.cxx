@@ -213,6 +213,7 @@ void Context::ResetPassDefaults()
   p->SetBoundsMethod(vtkClusteredLightingPass::BOUNDS_TANGENT);
   p->SetMortonOrder(true);
   p->SetPerClusterCulling(true);
+  p->SetSpotConeCulling(true);
   p->SetDepthPrepass(true);
   p->SetDepthAwareClusters(true);
   p->SetAutomaticDepthPrepass(false); // rows time the options as set; "automatic" rows turn it on

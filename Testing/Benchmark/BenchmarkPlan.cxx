@@ -631,6 +631,14 @@ std::vector<Step> MakePlan(const PlanOptions& options)
         }
       };
       tenth->Teardown = [](Context& ctx) { ctx.MakeLights(4096, "uniform"); };
+      // The same spot lights assigned by their spheres (SpotConeCulling off): what cone
+      // culling saves, side by side.
+      const Step spots = *tenth; // knob() may move the plan's steps
+      Step* tenthSpheres = knob("spots", "10% spot lights (cone culling off)",
+        [](vtkClusteredLightingPass* p) { p->SetSpotConeCulling(false); });
+      tenthSpheres->ChangesScene = spots.ChangesScene;
+      tenthSpheres->Setup = spots.Setup;
+      tenthSpheres->Teardown = spots.Teardown;
       // The renderer's FXAA and SSAO, which the pass's own steps apply as the renderer does
       // (docs/guide.md), beside stock VTK with 8 lights and the same option: what each costs
       // through the pass. Under SSAO the pass draws no depth prepass.

@@ -7,12 +7,13 @@
 //  straddling the far plane; radius covering the whole frustum; radius under one pixel;
 //  radius 0; lights exactly on tile and slice boundaries (centres on them, and spheres
 //  whose exact bounds end exactly on them); every light in one cluster; spot cones of 0.1
-//  and 89.9 degrees.
+//  and 89.9 degrees; 48 spot lights assigned by their cones (the same image without).
 #include "ClusteredLightingHardCase.h"
 
 #include "vtkClusteredLightingSphereBounds.h"
 
 #include <cmath>
+#include <random>
 
 using namespace ClusteredLightingTest;
 
@@ -180,6 +181,55 @@ int TestClusteredLightingHardCasesPlacement(int, char*[])
         i, target[0] - pos[i][0], target[1] - pos[i][1], target[2] - pos[i][2], cones[i], 1.0);
     }
     failures += f.Run("spot cones of 0.1 and 89.9 degrees");
+  }
+  {
+    // Spot lights assigned by their cones (SpotConeCulling): cones of 0.1 to 89.9
+    // degrees in every direction, some aimed at the camera, one with the camera inside its
+    // cone (apex just behind the camera). Besides RunHardCase's checks (the reference keeps
+    // every cluster a sampled point of a cone falls in: Core.SpotBounds.*), the image is
+    // the same bit for bit with the option off, where the lists hold the whole spheres.
+    f.Reset();
+    const int n = 48;
+    f.Lights->SetNumberOfLights(n);
+    std::mt19937 rng(23);
+    std::uniform_real_distribution<double> U(-0.45, 0.45);
+    const double cones[8] = { 0.1, 5.0, 15.0, 30.0, 45.0, 60.0, 75.0, 89.9 };
+    const double* eye = f.Renderer->GetActiveCamera()->GetPosition();
+    for (int i = 0; i < n; ++i)
+    {
+      const double p[3] = { 10.0 * U(rng), 10.0 * U(rng), 10.0 * U(rng) };
+      SetLight(f.Lights, i, p, 3.0 + 6.0 * (U(rng) + 0.45), 3.0);
+      f.Lights->SetColor(i, 0.6 + U(rng), 0.6 + U(rng), 0.6 + U(rng));
+      double axis[3] = { U(rng), U(rng), U(rng) };
+      if (i % 6 == 0)
+      {
+        for (int a = 0; a < 3; ++a)
+        {
+          axis[a] = eye[a] - p[a]; // aimed at the camera
+        }
+      }
+      f.Lights->SetSpot(i, axis[0], axis[1], axis[2], cones[i % 8], 1.0 + (i % 3));
+    }
+    // Light 0: apex just behind the camera, the camera inside its cone, along the view.
+    f.PlaceVC(0, 0.05, 0.0, 0.3, 12.0);
+    const double* view = f.Renderer->GetActiveCamera()->GetDirectionOfProjection();
+    f.Lights->SetSpot(0, view[0], view[1], view[2], 30.0, 1.0);
+    failures += f.Run("48 spot lights culled by their cones");
+    f.Window->Render();
+    const std::vector<float> on = CapturePixels(f.Window);
+    const auto pairsOn = CheckAssignment(f.Pass, f.Renderer, "spot cones culled");
+    f.Pass->SpotConeCullingOff();
+    f.Window->Render();
+    const std::vector<float> off = CapturePixels(f.Window);
+    const auto pairsOff = CheckAssignment(f.Pass, f.Renderer, "spot cones not culled");
+    f.Pass->SpotConeCullingOn();
+    const bool same = on == off;
+    const bool fewer = pairsOff.FalseNegatives == 0 &&
+      static_cast<double>(pairsOn.GPUPairs) < 0.7 * static_cast<double>(pairsOff.GPUPairs);
+    std::printf("[%s] spot cone culling: %llu GPU pairs, %llu without; images %s\n",
+      same && fewer ? "PASS" : "FAIL", static_cast<unsigned long long>(pairsOn.GPUPairs),
+      static_cast<unsigned long long>(pairsOff.GPUPairs), same ? "the same" : "differ");
+    failures += same && fewer ? 0 : 1;
   }
   std::printf("%d failed check(s)\n", failures);
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;

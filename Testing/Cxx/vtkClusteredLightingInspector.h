@@ -74,15 +74,27 @@ public:
     return a ? a->GetResult().Reasons : 0u;
   }
 
-  /// Light centres and radii in view coordinates, upload order.
+  /// Light centres and radii in view coordinates, upload order; spot lights with their
+  /// axes and cones when the frame culled cones (SpotConeCulling).
   static std::vector<vtkClusteredLighting::ReferenceLight> ComputeLightsVC(
     const vtkClusteredLightingAssignmentSnapshot& frame)
   {
     std::vector<vtkClusteredLighting::ReferenceLight> out;
     out.reserve(frame.Lights.size());
+    // Spot axes transform like normals, as in ComputeViewDataRange.
+    const glm::dmat3 normalMatrix = glm::transpose(glm::inverse(glm::dmat3(frame.WCVC)));
     for (const auto& l : frame.Lights)
     {
-      out.push_back({ glm::dvec3(frame.WCVC * glm::dvec4(l.PositionWC, 1.0)), l.Radius });
+      vtkClusteredLighting::ReferenceLight r{
+        glm::dvec3(frame.WCVC * glm::dvec4(l.PositionWC, 1.0)), l.Radius
+      };
+      const glm::dvec3 axis = normalMatrix * l.DirectionWC;
+      if (frame.SpotConeCulling && l.CosCone > -1.5 && glm::length(axis) > 0.0)
+      {
+        r.AxisVC = glm::normalize(axis);
+        r.CosCone = l.CosCone;
+      }
+      out.push_back(r);
     }
     return out;
   }

@@ -16,3 +16,4 @@
 #include "vtkClusteredLightingReference.h"
 #include "vtkClusteredLightingShaderCode.h"
 #include "vtkClusteredLightingSphereBounds.h"
+#include "vtkClusteredLightingSpotBounds.h"

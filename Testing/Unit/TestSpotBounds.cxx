@@ -80,7 +80,8 @@ TEST(SpotBounds, SectorSphereHoldsTheWidenedSector)
       for (int k = 0; k < 4000; ++k)
       {
         // Half the samples on the cap's rim and the cone's edge, where the sphere is tight.
-        const double d = k % 2 ? r * (s.Radius < r ? 1.0 + 5e-6 : 1.0 - 1e-12) : r * std::cbrt(U(rng));
+        const double d =
+          k % 2 ? r * (s.Radius < r ? 1.0 + 5e-6 : 1.0 - 1e-12) : r * std::cbrt(U(rng));
         const double phi = k % 4 < 2 ? widest : widest * U(rng);
         const glm::dvec3 p = ConePoint(apex, axis, d, phi, 6.283185307179586 * U(rng));
         worst = std::max(worst, glm::length(p - s.Centre) / s.Radius);

@@ -18,7 +18,7 @@
  *   the centre to the cone's lateral surface is D sin(phi - theta) = cos(theta) across -
  *   sin(theta) along (along = D cos(phi), across = D sin(phi)), never more than the
  *   distance to the cone itself, and every point of the cone has along >= 0. So the ball
- *   may meet the cone iff that distance is <= rho and along >= -rho.
+ *   may meet the cone only if that distance is <= rho and along >= -rho.
  *
  * - **The sector's bounding sphere** (ComputeSpotSectorSphere, on the CPU before the
  *   list pass: the (light, slice) tile rectangles are those of this sphere when it is
@@ -50,8 +50,11 @@ namespace vtkClusteredLighting
 /// Radians by which the assignment's cone tests widen a spot light's cone.
 constexpr double SpotConeSlack = 2e-3;
 
-/// Relative lateral slack the list shader adds to the ball's radius (>= 2 SpotConeSlack).
+/// Relative lateral slack the list shader adds to the ball's radius (its `4e-3`): at least
+/// twice SpotConeSlack, so that its float test passes wherever SpotConeMayReachBall does.
 constexpr double SpotConeShaderSlack = 4e-3;
+static_assert(
+  SpotConeShaderSlack >= 2.0 * SpotConeSlack, "the shader's slack must cover the core's");
 
 /**
  * Whether the ball (centre, rho) may hold a point of the cone at `apex` with unit axis

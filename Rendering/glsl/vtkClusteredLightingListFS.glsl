@@ -121,7 +121,8 @@ void main()
     {
       discard;
     }
-    if (clConeVSOutput.w > -1.5 && !clSpotConeMayReach(c, clConeVSOutput, 0.5 * (lo + hi), 0.5 * length(hi - lo)))
+    if (clConeVSOutput.w > -1.5 &&
+      !clSpotConeMayReach(c, clConeVSOutput, 0.5 * (lo + hi), 0.5 * length(hi - lo)))
     {
       discard;
     }

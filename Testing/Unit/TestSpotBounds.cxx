@@ -55,7 +55,7 @@ bool ShaderConeTest(
   const float along = glm::dot(v, axis);
   const float across = std::sqrt(std::max(glm::dot(v, v) - along * along, 0.0f));
   const float sinCone = std::sqrt(std::max(1.0f - cosCone * cosCone, 0.0f));
-  const float slack = rho + 4e-3f * glm::length(v);
+  const float slack = rho + static_cast<float>(SpotConeShaderSlack) * glm::length(v);
   return cosCone * across - sinCone * along <= slack && along >= -slack;
 }
 }

@@ -201,30 +201,27 @@ def main():
         if args.counts and name != "brute":
             counts[name] = light_counts(window, pass_)
     pass_.SetFarField(True)
+
+    def render_changed(name, change, restore):
+        """Renders once more with change() applied (images, counts), then restore()."""
+        change()
+        ms = timed_render(window, args.frames)
+        image, pixels = grab(window)
+        write_png(image, "%s-%s.png" % (args.prefix, name))
+        results[name] = (ms, pixels)
+        if args.counts:
+            counts[name] = light_counts(window, pass_)
+        restore()
+
     if args.back_face_sums:
-        pass_.SetFarFieldExactSumsOnBackFaces(True)
-        ms = timed_render(window, args.frames)
-        image, pixels = grab(window)
-        write_png(image, "%s-back-face-sums.png" % args.prefix)
-        results["back-face-sums"] = (ms, pixels)
-        if args.counts:
-            counts["back-face-sums"] = light_counts(window, pass_)
-        pass_.SetFarFieldExactSumsOnBackFaces(False)
+        render_changed("back-face-sums", lambda: pass_.SetFarFieldExactSumsOnBackFaces(True),
+                       lambda: pass_.SetFarFieldExactSumsOnBackFaces(False))
     if args.hidden_cost:
-        ball.GetProperty().BackfaceCullingOn()
-        ms = timed_render(window, args.frames)
-        image, pixels = grab(window)
-        results["ball-back-faces-culled"] = (ms, pixels)
-        ball.GetProperty().BackfaceCullingOff()
+        render_changed("ball-back-faces-culled", ball.GetProperty().BackfaceCullingOn,
+                       ball.GetProperty().BackfaceCullingOff)
     if args.cone_culling_off:
-        pass_.SetSpotConeCulling(False)
-        ms = timed_render(window, args.frames)
-        image, pixels = grab(window)
-        write_png(image, "%s-cone-culling-off.png" % args.prefix)
-        results["cone-culling-off"] = (ms, pixels)
-        if args.counts:
-            counts["cone-culling-off"] = light_counts(window, pass_)
-        pass_.SetSpotConeCulling(True)
+        render_changed("cone-culling-off", lambda: pass_.SetSpotConeCulling(False),
+                       lambda: pass_.SetSpotConeCulling(True))
     budgets = {}
     for steps in args.budget:
         pass_.SetErrorBudgetInSteps(steps)

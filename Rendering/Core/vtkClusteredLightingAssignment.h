@@ -108,6 +108,33 @@ inline std::vector<float> PackLightData(const std::vector<PreparedLight>& lights
   return out;
 }
 
+/// World -> view for directions: spot axes transform like vtkTransform::TransformNormal
+/// (inverse transpose), as VTK's own lights do.
+inline glm::dmat3 ComputeAxisMatrix(const glm::dmat4& wcvc)
+{
+  return glm::transpose(glm::inverse(glm::dmat3(wcvc)));
+}
+
+/// A light's unit spot axis in view coordinates (`axisMatrix`: ComputeAxisMatrix); 0 for a
+/// point light or an axis that vanishes.
+inline glm::dvec3 ComputeSpotAxisVC(const glm::dmat3& axisMatrix, const PreparedLight& l)
+{
+  if (!l.IsSpot())
+  {
+    return glm::dvec3(0.0);
+  }
+  const glm::dvec3 dir = axisMatrix * l.DirectionWC;
+  const double len = glm::length(dir);
+  return len > 0.0 ? dir / len : glm::dvec3(0.0);
+}
+
+/// Whether the view assigns light l by its cone (SpotConeCulling; `axisVC` from
+/// ComputeSpotAxisVC): the list pass tests it, and the CPU reference must too.
+inline bool IsAssignedByCone(bool spotConeCulling, const PreparedLight& l, const glm::dvec3& axisVC)
+{
+  return spotConeCulling && l.IsSpot() && glm::length(axisVC) > 0.5;
+}
+
 /**
  * Depth-aware clusters on the CPU, before the list pass: shrinks a (light, slice) tile
  * rectangle to the clusters the light's depth extent [d - r, d + r] (d = -c.z) can reach,
@@ -172,20 +199,13 @@ inline void ComputeViewDataRange(const std::vector<PreparedLight>& lights, const
 {
   const bool depthAware = depths && depths->Valid &&
     depths->Width == v.Grid.TilesX * v.Grid.Slices && depths->Height == v.Grid.TilesY;
-  // Spot axes transform like vtkTransform::TransformNormal (inverse transpose), as VTK.
-  const glm::dmat3 normalMatrix = glm::transpose(glm::inverse(glm::dmat3(v.WCVC)));
+  const glm::dmat3 axisMatrix = ComputeAxisMatrix(v.WCVC);
   std::vector<SliceTileRange> ranges;
   for (std::size_t i = begin; i < end; ++i)
   {
     const PreparedLight& l = lights[i];
     const glm::dvec3 c = glm::dvec3(v.WCVC * glm::dvec4(l.PositionWC, 1.0));
-    glm::dvec3 dir(0.0);
-    if (l.CosCone > -1.5)
-    {
-      dir = normalMatrix * l.DirectionWC;
-      const double len = glm::length(dir);
-      dir = len > 0.0 ? dir / len : glm::dvec3(0.0);
-    }
+    const glm::dvec3 dir = ComputeSpotAxisVC(axisMatrix, l);
     float* o = lightView + i * FloatsPerLightRecord;
     o[0] = static_cast<float>(c.x);
     o[1] = static_cast<float>(c.y);
@@ -202,7 +222,7 @@ inline void ComputeViewDataRange(const std::vector<PreparedLight>& lights, const
     }
     // A spot light's cone: its sector's sphere bounds the rectangles when it is smaller
     // than the light's, and the list pass tests the cone per cluster.
-    const bool cone = v.SpotConeCulling && l.CosCone > -1.5 && glm::length(dir) > 0.5;
+    const bool cone = IsAssignedByCone(v.SpotConeCulling, l, dir);
     glm::dvec3 centre = c;
     double radius = l.Radius;
     if (cone && std::isfinite(l.Radius))

@@ -61,10 +61,13 @@ struct ReferenceLight
   double CosCone = -2.0; ///< cos(cone angle) of a spot light whose cone is culled, else -2
 };
 
-/// Geometry of one cluster cell: eight corners, index ix + 2 iy + 4 iz.
+/// Geometry of one cluster cell: eight corners, index ix + 2 iy + 4 iz, and the ball
+/// about their axis-aligned box (the list pass tests spot cones against it).
 struct ClusterCell
 {
   std::array<glm::dvec3, 8> Corners;
+  glm::dvec3 BallCentre = glm::dvec3(0.0);
+  double BallRadius = 0.0;
   bool Empty = true;
 };
 
@@ -105,10 +108,15 @@ inline ClusterCell ComputeClusterCell(int tx, int ty, int s, const ClusterGridPa
   const double x[2] = { 2.0 * tx / grid.TilesX - 1.0, 2.0 * (tx + 1) / grid.TilesX - 1.0 };
   const double y[2] = { 2.0 * ty / grid.TilesY - 1.0, 2.0 * (ty + 1) / grid.TilesY - 1.0 };
   const double z[2] = { z0, z1 };
+  glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-lo);
   for (int i = 0; i < 8; ++i)
   {
     cell.Corners[i] = UnprojectAtDepth(x[i & 1], y[(i >> 1) & 1], z[i >> 2], vcdc);
+    lo = glm::min(lo, cell.Corners[i]);
+    hi = glm::max(hi, cell.Corners[i]);
   }
+  cell.BallCentre = 0.5 * (lo + hi);
+  cell.BallRadius = 0.5 * glm::length(hi - lo);
   return cell;
 }
 
@@ -302,21 +310,13 @@ inline ReferenceAssignment ComputeReferenceAssignment(const std::vector<Referenc
           {
             continue;
           }
-          if (spot)
-          {
-            glm::dvec3 lo = cell.Corners[0], hi = cell.Corners[0];
-            for (const glm::dvec3& corner : cell.Corners)
-            {
-              lo = glm::min(lo, corner);
-              hi = glm::max(hi, corner);
-            }
-            if (!SpotConeMayReachBall(
-                  l.CenterVC, l.AxisVC, l.CosCone, 0.5 * (lo + hi), 0.5 * glm::length(hi - lo)) ||
+          if (spot &&
+            (!SpotConeMayReachBall(
+               l.CenterVC, l.AxisVC, l.CosCone, cell.BallCentre, cell.BallRadius) ||
               (std::isfinite(sector.Radius) &&
-                !(DistanceToCell(sector.Centre, cell) < sector.Radius)))
-            {
-              continue;
-            }
+                !(DistanceToCell(sector.Centre, cell) < sector.Radius))))
+          {
+            continue;
           }
           if (std::isinf(l.Radius) || DistanceToCell(l.CenterVC, cell) < l.Radius)
           {

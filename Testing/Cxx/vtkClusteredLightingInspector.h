@@ -81,17 +81,16 @@ public:
   {
     std::vector<vtkClusteredLighting::ReferenceLight> out;
     out.reserve(frame.Lights.size());
-    // Spot axes transform like normals, as in ComputeViewDataRange.
-    const glm::dmat3 normalMatrix = glm::transpose(glm::inverse(glm::dmat3(frame.WCVC)));
+    const glm::dmat3 axisMatrix = vtkClusteredLighting::ComputeAxisMatrix(frame.WCVC);
     for (const auto& l : frame.Lights)
     {
       vtkClusteredLighting::ReferenceLight r{
         glm::dvec3(frame.WCVC * glm::dvec4(l.PositionWC, 1.0)), l.Radius
       };
-      const glm::dvec3 axis = normalMatrix * l.DirectionWC;
-      if (frame.SpotConeCulling && l.CosCone > -1.5 && glm::length(axis) > 0.0)
+      const glm::dvec3 axis = vtkClusteredLighting::ComputeSpotAxisVC(axisMatrix, l);
+      if (vtkClusteredLighting::IsAssignedByCone(frame.SpotConeCulling, l, axis))
       {
-        r.AxisVC = glm::normalize(axis);
+        r.AxisVC = axis;
         r.CosCone = l.CosCone;
       }
       out.push_back(r);

@@ -2,6 +2,7 @@
 // Translation unit for clang-tidy (scripts/run-clang-tidy.sh): every header of the GL-free
 // core, so that the checks of .clang-tidy see all of its (inline) code. Not compiled.
 #include "vtkClusteredLightingAssignment.h"
+#include "vtkClusteredLightingClosedSurface.h"
 #include "vtkClusteredLightingDepthBounds.h"
 #include "vtkClusteredLightingFarField.h"
 #include "vtkClusteredLightingFarFieldBound.h"

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkClusteredLightingDepthPrepass.h"
 
+#include "vtkClusteredLightingBackfaceCulling.h"
 #include "vtkClusteredLightingSampleDepths.h"
 #include "vtkClusteredLightingSavedDepth.h"
 #include "vtkClusteredLightingShaderCode.h"
@@ -888,9 +889,13 @@ bool vtkClusteredLightingDepthPrepass::PostReplaceShaderValues(std::string& vert
 
 //------------------------------------------------------------------------------
 bool vtkClusteredLightingDepthPrepass::SetShaderParameters(
-  vtkShaderProgram* program, vtkAbstractMapper*, vtkProp*, vtkOpenGLVertexArrayObject*)
+  vtkShaderProgram* program, vtkAbstractMapper*, vtkProp* prop, vtkOpenGLVertexArrayObject*)
 {
   this->NoteProgram(program);
+  if (this->BackfaceCulling)
+  {
+    this->BackfaceCulling->Apply(prop);
+  }
   return true;
 }
 

@@ -61,6 +61,7 @@
 #include <string>  // for std::string
 #include <vector>  // for std::vector
 
+class vtkClusteredLightingBackfaceCulling;
 class vtkClusteredLightingSampleDepths;
 class vtkClusteredLightingSavedDepth;
 class vtkOpenGLRenderWindow;
@@ -127,6 +128,13 @@ public:
   bool SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop,
     vtkOpenGLVertexArrayObject* vao = nullptr) override;
 
+  /// The culling of hidden faces that each draw applies (the pass's
+  /// AutomaticBackfaceCulling; nullptr: none), not owned.
+  void SetBackfaceCulling(vtkClusteredLightingBackfaceCulling* culling)
+  {
+    this->BackfaceCulling = culling;
+  }
+
   /// Adds `invariant gl_Position;` once, after the vertex shader's //VTK::System::Dec or
   /// its last #extension directive (vtkClusteredLighting::InsertDeclarations).
   static void AddInvariantPosition(std::string& vertexShader);
@@ -170,6 +178,7 @@ protected:
   ~vtkClusteredLightingDepthPrepass() override = default;
 
 private:
+  vtkClusteredLightingBackfaceCulling* BackfaceCulling = nullptr;
   vtkClusteredLightingDepthPrepass(const vtkClusteredLightingDepthPrepass&) = delete;
   void operator=(const vtkClusteredLightingDepthPrepass&) = delete;
 

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkClusteredLightingOpaqueStep.h"
 
+#include "vtkClusteredLightingBackfaceCulling.h"
 #include "vtkClusteredLightingRendererObjects.h"
 #include "vtkHiddenLineRemovalPass.h"
 #include "vtkObjectFactory.h"
@@ -54,7 +55,15 @@ void vtkClusteredLightingOpaqueStep::Render(const vtkRenderState* s)
     pass = ssao;
     this->LastMethod = Method::SSAO;
   }
+  if (this->BackfaceCulling)
+  {
+    this->BackfaceCulling->SetActive(true);
+  }
   pass->Render(s);
+  if (this->BackfaceCulling)
+  {
+    this->BackfaceCulling->SetActive(false);
+  }
   this->NumberOfRenderedProps = pass->GetNumberOfRenderedProps();
 }
 

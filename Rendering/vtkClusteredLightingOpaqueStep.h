@@ -45,6 +45,7 @@
 
 #include <memory> // for std::unique_ptr
 
+class vtkClusteredLightingBackfaceCulling;
 class vtkHiddenLineRemovalPass;
 class vtkOpaquePass;
 class vtkSSAOPass;
@@ -61,6 +62,13 @@ public:
   /// Renders the opaque geometry of `s`, with the renderer's hidden-line removal or SSAO
   /// when it asks for them.
   void Render(const vtkRenderState* s) override;
+
+  /// The culling of hidden faces active while this step draws (the pass's
+  /// AutomaticBackfaceCulling; nullptr: none), not owned.
+  void SetBackfaceCulling(vtkClusteredLightingBackfaceCulling* culling)
+  {
+    this->BackfaceCulling = culling;
+  }
 
   void ReleaseGraphicsResources(vtkWindow* w) override;
 
@@ -88,6 +96,7 @@ protected:
   ~vtkClusteredLightingOpaqueStep() override;
 
 private:
+  vtkClusteredLightingBackfaceCulling* BackfaceCulling = nullptr;
   vtkClusteredLightingOpaqueStep(const vtkClusteredLightingOpaqueStep&) = delete;
   void operator=(const vtkClusteredLightingOpaqueStep&) = delete;
 

@@ -7,6 +7,7 @@
 #include "vtkCamera.h"
 #include "vtkClusteredLightSet.h"
 #include "vtkClusteredLightingAssigner.h"
+#include "vtkClusteredLightingBackfaceCulling.h"
 #include "vtkClusteredLightingDepthPrepass.h"
 #include "vtkClusteredLightingGLHelpers.h"
 #include "vtkClusteredLightingLightCollector.h"
@@ -376,6 +377,8 @@ struct vtkClusteredLightingPass::vtkInternals
   vtkNew<vtkClusteredLightingOpaqueStep> OpaqueStep;
   vtkNew<vtkClusteredLightingTranslucentStep> TranslucentStep;
   vtkNew<vtkClusteredLightingVolumetricStep> VolumetricStep;
+  /// AutomaticBackfaceCulling, in the prepass and the opaque step.
+  vtkClusteredLightingBackfaceCulling BackfaceCulling;
   vtkTimeStamp ShaderStageTime;
   vtkNew<vtkLight> PlaceholderLight;  ///< keeps VTK's lit code when every light is clustered
   vtkNew<vtkLight> ComplexityLight;   ///< keeps VTK's lighting complexity (switched off)
@@ -423,6 +426,7 @@ vtkClusteredLightingPass::vtkClusteredLightingPass()
   this->Internals->Steps->SetOpaquePass(this->Internals->OpaqueStep);
   this->Internals->Steps->SetTranslucentPass(this->Internals->TranslucentStep);
   this->Internals->Steps->SetVolumetricPass(this->Internals->VolumetricStep);
+  this->Internals->OpaqueStep->SetBackfaceCulling(&this->Internals->BackfaceCulling);
   this->SetDelegatePass(this->Internals->Steps);
 
   // Keeps VTK's lighting code generated (complexity 1) when every light is clustered.
@@ -590,6 +594,10 @@ void vtkClusteredLightingPass::Render(const vtkRenderState* s)
   const bool foreign = this->DelegatePass != this->Internals->Steps.GetPointer();
   this->RendererLightsLeftToVTK = this->ClusterRendererLights && foreign &&
     vtkClusteredLightingVolumetricStep::HasVolumes(s, true);
+  // Under an application's delegate nothing ends the opaque geometry's draws for the pass:
+  // no culling there (vtkClusteredLightingBackfaceCulling).
+  vtkClusteredLightingBackfaceCulling& culling = this->Internals->BackfaceCulling;
+  culling.BeginFrame(s, rw->GetState(), this->AutomaticBackfaceCulling && !foreign);
   vtkClusteredLightingLightCollection lights;
   vtkClusteredLightingLightCollector::CollectRendererLights(
     ren, this->ClusterRendererLights && !this->RendererLightsLeftToVTK, lights);
@@ -647,6 +655,7 @@ void vtkClusteredLightingPass::Render(const vtkRenderState* s)
     ren->PreserveDepthBufferOff();
   }
   this->Internals->Current = nullptr;
+  this->NumberOfBackfaceCulledProps = culling.GetNumberOfCulledProps();
   if (frame.Timed)
   {
     glFinish();
@@ -801,8 +810,12 @@ void vtkClusteredLightingPass::RenderDepthPrepass(
     // keeps the same two programs from the first frame on.
     this->HideClusteredLights(ren, *inputs.Lights);
     this->UpdateLights(ren);
+    this->Internals->BackfaceCulling.SetActive(true);
+    prepass->SetBackfaceCulling(&this->Internals->BackfaceCulling);
     prepass->RenderDepth(s, rw, this->MeasureTimings,
       depthAware ? assigner->GetSampleDepths() : nullptr, assigner->GetSavedDepth(), reuse);
+    prepass->SetBackfaceCulling(nullptr);
+    this->Internals->BackfaceCulling.SetActive(false);
     this->RestoreRendererLights(ren, *inputs.Lights);
   }
   this->DepthPrepassUsed = true;
@@ -1370,6 +1383,7 @@ bool vtkClusteredLightingPass::SetShaderParameters(
   {
     return true;
   }
+  this->Internals->BackfaceCulling.Apply(prop);
   const vtkClusteredLightingAssignment& r = this->Internals->Current->GetResult();
   // Each uniform is set only if the program uses it: debug views let the compiler drop
   // the lighting math (and its samplers), programs without clustered code use none.
@@ -1528,6 +1542,8 @@ void vtkClusteredLightingPass::PrintSelf(ostream& os, vtkIndent indent)
   os << next << "MortonOrder: " << (this->MortonOrder ? "On" : "Off") << "\n";
   os << next << "PerClusterCulling: " << (this->PerClusterCulling ? "On" : "Off") << "\n";
   os << next << "SpotConeCulling: " << (this->SpotConeCulling ? "On" : "Off") << "\n";
+  os << next << "AutomaticBackfaceCulling: " << (this->AutomaticBackfaceCulling ? "On" : "Off")
+     << "\n";
   os << next << "DepthPrepass: " << (this->DepthPrepass ? "On" : "Off") << "\n";
   os << next << "AutomaticDepthPrepass: " << (this->AutomaticDepthPrepass ? "On" : "Off") << "\n";
   os << next << "ReuseDepthPrepass: " << (this->ReuseDepthPrepass ? "On" : "Off") << "\n";
@@ -1561,6 +1577,7 @@ void vtkClusteredLightingPass::PrintSelf(ostream& os, vtkIndent indent)
      << (this->Internals->DepthReuseProblem.empty() ? "" : " (")
      << this->Internals->DepthReuseProblem
      << (this->Internals->DepthReuseProblem.empty() ? "" : ")") << "\n";
+  os << next << "NumberOfBackfaceCulledProps: " << this->NumberOfBackfaceCulledProps << "\n";
   os << next << "DepthPrepassUsed: " << (this->DepthPrepassUsed ? "yes" : "no") << " ("
      << this->LastDepthPrepassTime << " ms)\n";
   os << next << "NumberOfDepthPrepassTrials: " << this->NumberOfDepthPrepassTrials

@@ -504,6 +504,25 @@ public:
 
   //@{
   /**
+   * Cull the back faces of closed opaque surfaces where no back face can be seen: an
+   * actor drawn as a surface by a plain vtkPolyDataMapper, without translucency, textures,
+   * clipping planes or shader code of its own, whose polygons bound a solid with one
+   * orientation (points with equal coordinates merged) and whose bounding box lies beyond
+   * the near plane (vtkClusteredLightingClosedSurface.h). The image is unchanged: every
+   * back face of such a surface lies behind a front face of it. On llvmpipe a hidden
+   * fragment costs about what a visible one does, and a closed surface's back faces were
+   * a third of a frame (docs/depth.md). Applies under the pass's own delegate (VTK's
+   * render steps), in the depth prepass and the opaque step; a mesh that folds through
+   * itself (locally inverted polygons) may lose back faces it showed. Off draws every face
+   * as VTK does. Default is on.
+   */
+  vtkSetMacro(AutomaticBackfaceCulling, bool);
+  vtkGetMacro(AutomaticBackfaceCulling, bool);
+  vtkBooleanMacro(AutomaticBackfaceCulling, bool);
+  //@}
+
+  //@{
+  /**
    * Render the opaque geometry depth-only before shading it, so that no hidden fragment
    * is shaded: the shading render then keeps that depth buffer and every opaque fragment
    * behind the visible surface fails the depth test before its lights are walked. Costs
@@ -732,6 +751,8 @@ public:
   vtkGetMacro(LastShadingTime, double);
   /// Whether the last render drew a depth prepass.
   vtkGetMacro(DepthPrepassUsed, bool);
+  /// Props whose hidden faces the last render culled (AutomaticBackfaceCulling).
+  vtkGetMacro(NumberOfBackfaceCulledProps, int);
   /// Whether the last render left the renderer's positional vtkLights to VTK's lighting
   /// code, though ClusterRendererLights is on: an application's delegate pass rendered a
   /// shaded volume, which VTK lights only with the lights the renderer holds (the pass's
@@ -905,6 +926,7 @@ protected:
   int BoundsMethod = BOUNDS_TANGENT;
   bool PerClusterCulling = true;
   bool SpotConeCulling = true;
+  bool AutomaticBackfaceCulling = true;
   bool DepthPrepass = true;
   bool DepthAwareClusters = true;
   bool AutomaticDepthPrepass = true;
@@ -950,6 +972,7 @@ protected:
   bool FarFieldSharedColorUsed = false;
   double LastShadingTime = 0.0;
   bool DepthPrepassUsed = false;
+  int NumberOfBackfaceCulledProps = 0;
   bool DepthPrepassReused = false;
   bool DepthPrepassKept = false;
   double LastDepthPrepassTime = 0.0;

@@ -592,12 +592,23 @@ int TestClusteredLightingDepthAware(int, char*[])
       "warning");
     // Fragments shaded per visible pixel there: the queries count samples (the pass divides
     // by the sample count) and the visible pixels come from one sample of each pixel.
+    // The sphere's back faces drawn (AutomaticBackfaceCulling off), as hidden fragments to
+    // count; then culled, as by default: fewer are shaded without the prepass, and still
+    // more than with it (the floor under the sphere).
     double msShadedOn = 0.0, msShadedOff = 0.0;
-    MeasureShaded("8 samples: ", msWindow, msPass, msShadedOn, msShadedOff);
+    msPass->AutomaticBackfaceCullingOff();
+    MeasureShaded("8 samples, back faces drawn: ", msWindow, msPass, msShadedOn, msShadedOff);
+    msPass->AutomaticBackfaceCullingOn();
     // Edge pixels pass some of their samples, and the visible pixels count one of them.
     Check(msShadedOn > 0.98 && msShadedOn < 1.02,
       "8 samples: the prepass shades each visible pixel once");
     Check(msShadedOff > msShadedOn + 0.05, "8 samples: without it hidden fragments are shaded too");
+    double msCulledOn = 0.0, msCulledOff = 0.0;
+    MeasureShaded("8 samples, back faces culled: ", msWindow, msPass, msCulledOn, msCulledOff);
+    Check(msCulledOn > 0.98 && msCulledOn < 1.02 && msCulledOff > msCulledOn &&
+        msCulledOff < msShadedOff - 0.02,
+      "8 samples: the sphere's back faces culled, fewer hidden fragments are shaded without "
+      "the prepass, still more than with it");
 
     // Translucent geometry is shaded at pixel centres that no opaque sample bounds: the
     // tiles of its screen rectangle keep every cluster (the others are cut to the

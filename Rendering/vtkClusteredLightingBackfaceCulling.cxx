@@ -1,0 +1,218 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "vtkClusteredLightingBackfaceCulling.h"
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkCellArray.h"
+#include "vtkDataArray.h"
+#include "vtkMatrix4x4.h"
+#include "vtkOpenGLState.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
+#include "vtkRenderState.h"
+#include "vtkRenderer.h"
+#include "vtkShaderProperty.h"
+#include "vtk_glew.h"
+
+#include <cstring> // for std::strcmp
+#include <vector>  // for std::vector
+
+namespace
+{
+/// `m` (VTK's row-major matrix) as a GLM matrix.
+glm::dmat4 ToGlm(const double m[16])
+{
+  glm::dmat4 g(1.0);
+  for (int row = 0; row < 4; ++row)
+  {
+    for (int col = 0; col < 4; ++col)
+    {
+      g[col][row] = m[4 * row + col];
+    }
+  }
+  return g;
+}
+
+/// Whether `actor` draws its polydata as VTK's plain mapper does, unchanged: see the
+/// class's list.
+vtkPolyData* GetPlainOpaqueSurface(vtkActor* actor)
+{
+  vtkMapper* mapper = actor->GetMapper();
+  vtkProperty* property = actor->GetProperty();
+  if (!mapper || !property || std::strcmp(actor->GetClassName(), "vtkOpenGLActor") != 0 ||
+    std::strcmp(mapper->GetClassName(), "vtkOpenGLPolyDataMapper") != 0 ||
+    mapper->GetNumberOfClippingPlanes() > 0)
+  {
+    return nullptr;
+  }
+  vtkShaderProperty* shaders = actor->GetShaderProperty();
+  if (shaders &&
+    (shaders->HasVertexShaderCode() || shaders->HasFragmentShaderCode() ||
+      shaders->HasGeometryShaderCode() || shaders->GetNumberOfShaderReplacements() > 0))
+  {
+    return nullptr;
+  }
+  if (actor->HasTranslucentPolygonalGeometry() || property->GetOpacity() < 1.0 ||
+    property->GetRepresentation() != VTK_SURFACE || property->GetBackfaceCulling() ||
+    property->GetFrontfaceCulling() || actor->GetTexture() || property->GetNumberOfTextures() > 0)
+  {
+    return nullptr;
+  }
+  vtkPolyData* data = vtkPolyDataMapper::SafeDownCast(mapper)->GetInput();
+  if (!data || data->GetNumberOfPolys() == 0 || data->GetNumberOfStrips() > 0 ||
+    data->GetCellGhostArray() || !data->GetPoints())
+  {
+    return nullptr;
+  }
+  return data;
+}
+}
+
+//------------------------------------------------------------------------------
+void vtkClusteredLightingBackfaceCulling::BeginFrame(
+  const vtkRenderState* s, vtkOpenGLState* state, bool enabled)
+{
+  this->SetActive(false);
+  this->Faces.clear();
+  ++this->Renders;
+  this->State = state;
+  if (!enabled || !state)
+  {
+    return;
+  }
+  vtkRenderer* ren = s->GetRenderer();
+  vtkCamera* camera = ren->GetActiveCamera();
+  this->ClipFromWorld =
+    ToGlm(camera->GetCompositeProjectionTransformMatrix(ren->GetTiledAspectRatio(), -1.0, 1.0)
+            ->GetData());
+  // Decided at each prop's first draw, when its mapper has brought its input up to date.
+  for (int i = 0; i < s->GetPropArrayCount(); ++i)
+  {
+    this->Faces[s->GetPropArray()[i]] = Undecided;
+  }
+}
+
+//------------------------------------------------------------------------------
+int vtkClusteredLightingBackfaceCulling::Decide(vtkProp* prop)
+{
+  vtkActor* actor = vtkActor::SafeDownCast(prop);
+  vtkPolyData* data = actor ? GetPlainOpaqueSurface(actor) : nullptr;
+  if (!data)
+  {
+    return 0;
+  }
+  const glm::dmat4 clipFromModel = this->ClipFromWorld * ToGlm(actor->GetMatrix()->GetData());
+  if (!vtkClusteredLighting::IsBoxBeyondNearPlane(clipFromModel, data->GetBounds()))
+  {
+    return 0;
+  }
+  const vtkClusteredLighting::SurfaceClosure& closure = this->GetClosure(data);
+  return closure.Closed
+    ? vtkClusteredLighting::ChooseCulledFace(closure.Orientation, glm::determinant(clipFromModel))
+    : 0;
+}
+
+//------------------------------------------------------------------------------
+const vtkClusteredLighting::SurfaceClosure& vtkClusteredLightingBackfaceCulling::GetClosure(
+  vtkPolyData* data)
+{
+  // Forget polydata that were deleted (their address may come back).
+  for (auto it = this->Closures.begin(); it != this->Closures.end();)
+  {
+    it = it->second.Data ? std::next(it) : this->Closures.erase(it);
+  }
+  CachedClosure& cached = this->Closures[data];
+  const vtkMTimeType time = data->GetMTime();
+  const bool known = cached.Data == data;
+  if (known && cached.Time == time && cached.Tested)
+  {
+    return cached.Closure;
+  }
+  const bool changedAgain = known && cached.Time != time && cached.ChangedAt + 1 == this->Renders;
+  if (!known || cached.Time != time)
+  {
+    cached.ChangedAt = this->Renders;
+  }
+  cached.Data = data;
+  cached.Time = time;
+  cached.Tested = !changedAgain;
+  if (changedAgain)
+  {
+    // Modified in consecutive renders (an animated mesh): not tested, not culled, until a
+    // render in which it stays unchanged.
+    cached.Closure = vtkClusteredLighting::SurfaceClosure();
+    cached.Closure.Reason = "modified in consecutive renders";
+    return cached.Closure;
+  }
+
+  vtkDataArray* coordinates = data->GetPoints()->GetData();
+  const vtkIdType n = coordinates->GetNumberOfTuples();
+  std::vector<double> points(static_cast<std::size_t>(3 * n));
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    coordinates->GetTuple(i, points.data() + 3 * i);
+  }
+  std::vector<std::int64_t> offsets{ 0 };
+  std::vector<std::int64_t> connectivity;
+  offsets.reserve(static_cast<std::size_t>(data->GetNumberOfPolys() + 1));
+  connectivity.reserve(static_cast<std::size_t>(data->GetPolys()->GetNumberOfConnectivityIds()));
+  vtkCellArray* polys = data->GetPolys();
+  vtkIdType size = 0;
+  const vtkIdType* ids = nullptr;
+  for (polys->InitTraversal(); polys->GetNextCell(size, ids);)
+  {
+    connectivity.insert(connectivity.end(), ids, ids + size);
+    offsets.push_back(static_cast<std::int64_t>(connectivity.size()));
+  }
+  cached.Closure = vtkClusteredLighting::ComputeSurfaceClosure(points.data(), n, offsets.data(),
+    connectivity.data(), static_cast<std::int64_t>(offsets.size()) - 1);
+  return cached.Closure;
+}
+
+//------------------------------------------------------------------------------
+void vtkClusteredLightingBackfaceCulling::SetActive(bool active)
+{
+  if (!active && this->Culled && this->State)
+  {
+    this->State->vtkglDisable(GL_CULL_FACE);
+  }
+  this->Culled = false;
+  this->Active = active;
+}
+
+//------------------------------------------------------------------------------
+void vtkClusteredLightingBackfaceCulling::Apply(vtkProp* prop)
+{
+  if (!this->Active || !this->State)
+  {
+    return;
+  }
+  const auto it = this->Faces.find(prop);
+  if (it == this->Faces.end())
+  {
+    return;
+  }
+  if (it->second == Undecided)
+  {
+    it->second = this->Decide(prop);
+  }
+  if (it->second != 0)
+  {
+    this->State->vtkglCullFace(it->second > 0 ? GL_BACK : GL_FRONT);
+    this->State->vtkglEnable(GL_CULL_FACE);
+    this->Culled = true;
+  }
+}
+
+//------------------------------------------------------------------------------
+int vtkClusteredLightingBackfaceCulling::GetNumberOfCulledProps() const
+{
+  int n = 0;
+  for (const auto& face : this->Faces)
+  {
+    n += face.second != 0 && face.second != Undecided ? 1 : 0;
+  }
+  return n;
+}

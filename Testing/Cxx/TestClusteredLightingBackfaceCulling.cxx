@@ -1,0 +1,267 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The pass culls the hidden faces of closed opaque surfaces (AutomaticBackfaceCulling,
+// vtkClusteredLightingBackfaceCulling). Each case renders 300 lights as users write them
+// over a scene with the option on and off, with the depth prepass drawn and without it,
+// and checks
+//  - how many props the pass culled (GetNumberOfBackfaceCulledProps): the closed ball
+//    (outward, inward, mirrored by a negative scale) and a cube whose faces have points
+//    of their own; not an open sphere, a translucent or wireframe ball, a ball of triangle
+//    strips, one with clipping planes, one with VTK's own culling, one that the near plane
+//    cuts, or a sphere around the camera;
+//  - that the image is the one with the option off: no pixel off by more than one step,
+//    except at most a few at the rim, where a back face and a front face meet at one
+//    depth and a back face won the depth test (culled, the front face shows). Culling the
+//    wrong face, or a surface whose back faces show, changes hundreds of pixels;
+//  - that face culling is off after the frame (nothing culled after the pass);
+//  - that a mesh modified before every render is not tested again while it keeps
+//    changing, and is once it stays unchanged; that a mesh opened is not culled.
+#include "ClusteredLightingTestUtilities.h"
+
+#include "vtkActorCollection.h"
+#include "vtkCamera.h"
+#include "vtkClusteredLightSet.h"
+#include "vtkClusteredLightingPass.h"
+#include "vtkCubeSource.h"
+#include "vtkPlane.h"
+#include "vtkProperty.h"
+#include "vtkReverseSense.h"
+#include "vtkSphereSource.h"
+#include "vtkStripper.h"
+#include "vtkTriangleFilter.h"
+#include "vtk_glew.h"
+
+#include <cstdio>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace
+{
+int Status = EXIT_SUCCESS;
+
+void Check(bool ok, const std::string& what)
+{
+  std::printf("%s: %s\n", ok ? "ok" : "FAILED", what.c_str());
+  if (!ok)
+  {
+    Status = EXIT_FAILURE;
+  }
+}
+
+/// Pixels of two images that differ by more than one step in a channel.
+int CountDiffering(const std::vector<float>& a, const std::vector<float>& b)
+{
+  if (a.size() != b.size())
+  {
+    return 1 << 30;
+  }
+  int n = 0;
+  for (std::size_t p = 0; p + 2 < a.size(); p += 3)
+  {
+    bool differs = false;
+    for (int k = 0; k < 3; ++k)
+    {
+      differs = differs || std::abs(a[p + k] - b[p + k]) > 1.5f / 255.0f;
+    }
+    n += differs ? 1 : 0;
+  }
+  return n;
+}
+
+struct Case
+{
+  const char* Name;
+  int Culled;  ///< props the pass must cull
+  double Near; ///< the near plane's distance (0: fit to the scene)
+  std::function<void(vtkRenderer*, vtkActor* ball, vtkSphereSource* sphere)> SetUp;
+};
+
+/// A scene of its own for each case: the test scene's floor (open: never culled) and
+/// ball, the usual camera, 300 lights as users write them.
+int RunCase(const Case& c, bool prepass)
+{
+  vtkNew<vtkRenderWindow> rw;
+  vtkNew<vtkRenderer> ren;
+  rw->SetSize(240, 180);
+  rw->SetMultiSamples(0);
+  rw->AddRenderer(ren);
+  ren->SetBackground(0.05, 0.05, 0.08);
+  ClusteredLightingTest::AddFloor(ren, 3.0)->SetPosition(0.0, 0.0, -1.0);
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetThetaResolution(32);
+  sphere->SetPhiResolution(24);
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(sphere->GetOutputPort());
+  vtkNew<vtkActor> ball;
+  ball->SetMapper(mapper);
+  ball->SetScale(1.5);
+  ball->GetProperty()->SetColor(0.9, 0.7, 0.5);
+  ball->GetProperty()->SetSpecular(0.4);
+  ball->GetProperty()->SetSpecularPower(20);
+  ren->AddActor(ball);
+  ren->GetActiveCamera()->SetPosition(0.5, 2.5, 7.0);
+  ren->GetActiveCamera()->SetFocalPoint(0.0, -0.3, 0.0);
+  c.SetUp(ren, ball, sphere);
+  ren->ResetCameraClippingRange();
+  if (c.Near > 0.0)
+  {
+    ren->GetActiveCamera()->SetClippingRange(c.Near, 20.0);
+  }
+
+  vtkNew<vtkClusteredLightSet> lights;
+  ClusteredLightingTest::MakeUserLights(lights, 300, 0.05, 5);
+  vtkNew<vtkClusteredLightingPass> pass;
+  pass->AddLightSet(lights);
+  pass->AutomaticDepthPrepassOff();
+  pass->SetDepthPrepass(prepass);
+  ren->SetPass(pass);
+
+  const std::string what = std::string(c.Name) + (prepass ? ", prepass" : ", no prepass");
+  rw->Render();
+  const std::vector<float> culled = ClusteredLightingTest::CapturePixels(rw);
+  const int count = pass->GetNumberOfBackfaceCulledProps();
+  Check(!glIsEnabled(GL_CULL_FACE), what + ": face culling is off after the frame");
+  pass->AutomaticBackfaceCullingOff();
+  rw->Render();
+  const std::vector<float> drawn = ClusteredLightingTest::CapturePixels(rw);
+  const int countOff = pass->GetNumberOfBackfaceCulledProps();
+  const int differing = CountDiffering(culled, drawn);
+  std::printf(
+    "%s: %d culled, %d pixels differ by more than one step\n", what.c_str(), count, differing);
+  Check(count == c.Culled, what + ": " + std::to_string(c.Culled) + " culled");
+  Check(countOff == 0, what + ": none culled with the option off");
+  Check(differing <= 4, what + ": the same image but for a few rim pixels");
+  return 0;
+}
+}
+
+int TestClusteredLightingBackfaceCulling(int, char*[])
+{
+  const std::vector<Case> cases = {
+    { "closed ball", 1, 0.0, [](vtkRenderer*, vtkActor*, vtkSphereSource*) {} },
+    { "ball turned inside out (inward normals)", 1, 0.0,
+      [](vtkRenderer*, vtkActor* ball, vtkSphereSource* sphere)
+      {
+        vtkNew<vtkReverseSense> reverse;
+        reverse->SetInputConnection(sphere->GetOutputPort());
+        reverse->ReverseCellsOn();
+        reverse->ReverseNormalsOn();
+        vtkPolyDataMapper::SafeDownCast(ball->GetMapper())
+          ->SetInputConnection(reverse->GetOutputPort());
+      } },
+    { "ball mirrored by a negative scale", 1, 0.0,
+      [](vtkRenderer*, vtkActor* ball, vtkSphereSource*) { ball->SetScale(-1.5, 1.5, 1.2); } },
+    { "cube with points of its own per face", 1, 0.0,
+      [](vtkRenderer*, vtkActor* ball, vtkSphereSource*)
+      {
+        vtkNew<vtkCubeSource> cube;
+        cube->SetXLength(1.6);
+        cube->SetYLength(1.2);
+        cube->SetZLength(1.4);
+        vtkPolyDataMapper::SafeDownCast(ball->GetMapper())
+          ->SetInputConnection(cube->GetOutputPort());
+        ball->SetOrientation(20, 35, 0);
+        ball->SetScale(1.0);
+      } },
+    { "open ball (a wedge cut out, seen through the cut)", 0, 0.0,
+      [](vtkRenderer*, vtkActor*, vtkSphereSource* sphere)
+      {
+        sphere->SetStartTheta(10);
+        sphere->SetEndTheta(280);
+      } },
+    { "translucent ball", 0, 0.0,
+      [](vtkRenderer*, vtkActor* ball, vtkSphereSource*)
+      { ball->GetProperty()->SetOpacity(0.5); } },
+    { "wireframe ball", 0, 0.0,
+      [](vtkRenderer*, vtkActor* ball, vtkSphereSource*)
+      { ball->GetProperty()->SetRepresentationToWireframe(); } },
+    { "ball of triangle strips", 0, 0.0,
+      [](vtkRenderer*, vtkActor* ball, vtkSphereSource* sphere)
+      {
+        vtkNew<vtkStripper> strips;
+        strips->SetInputConnection(sphere->GetOutputPort());
+        vtkPolyDataMapper::SafeDownCast(ball->GetMapper())
+          ->SetInputConnection(strips->GetOutputPort());
+      } },
+    { "ball with a clipping plane", 0, 0.0,
+      [](vtkRenderer*, vtkActor* ball, vtkSphereSource*)
+      {
+        vtkNew<vtkPlane> plane;
+        plane->SetOrigin(0.0, 0.2, 0.0);
+        plane->SetNormal(0.3, -1.0, 0.2);
+        ball->GetMapper()->AddClippingPlane(plane);
+      } },
+    { "ball with VTK's own back-face culling", 0, 0.0,
+      [](vtkRenderer*, vtkActor* ball, vtkSphereSource*)
+      { ball->GetProperty()->BackfaceCullingOn(); } },
+    { "ball cut by the near plane", 0, 3.9,
+      [](vtkRenderer* ren, vtkActor*, vtkSphereSource*)
+      {
+        // The eye 4.2 from the ball's centre, the near plane 3.9 from the eye: it cuts
+        // off the ball's front cap, and its inside shows.
+        ren->GetActiveCamera()->SetPosition(0.0, 0.0, 4.2);
+        ren->GetActiveCamera()->SetFocalPoint(0.0, 0.0, 0.0);
+      } },
+    { "camera inside a sphere", 0, 0.2,
+      [](vtkRenderer* ren, vtkActor* ball, vtkSphereSource*)
+      {
+        ball->SetScale(4.0);
+        ren->GetActiveCamera()->SetPosition(0.5, 0.5, 2.0);
+        ren->GetActiveCamera()->SetFocalPoint(0.0, -0.3, 0.0);
+      } },
+  };
+  for (const Case& c : cases)
+  {
+    for (bool prepass : { true, false })
+    {
+      RunCase(c, prepass);
+    }
+  }
+
+  // An animated mesh (modified before every render) is tested once, then not culled
+  // until a render in which it stays unchanged; a mesh that is opened is not culled.
+  {
+    vtkNew<vtkRenderWindow> rw;
+    vtkNew<vtkRenderer> ren;
+    ClusteredLightingTest::SetUpTestScene(rw, ren, 160, 120);
+    vtkNew<vtkClusteredLightSet> lights;
+    ClusteredLightingTest::MakeUserLights(lights, 50, 0.05, 3);
+    vtkNew<vtkClusteredLightingPass> pass;
+    pass->AddLightSet(lights);
+    ren->SetPass(pass);
+    vtkSphereSource* sphere = nullptr;
+    vtkActorCollection* actors = ren->GetActors();
+    actors->InitTraversal();
+    while (vtkActor* a = actors->GetNextActor())
+    {
+      if (vtkAlgorithm* source = a->GetMapper()->GetInputAlgorithm())
+      {
+        sphere = sphere ? sphere : vtkSphereSource::SafeDownCast(source);
+      }
+    }
+    Check(sphere != nullptr, "the test scene's ball comes from a vtkSphereSource");
+    if (sphere)
+    {
+      std::vector<int> culled;
+      for (int frame = 0; frame < 6; ++frame)
+      {
+        if (frame < 4)
+        {
+          sphere->SetRadius(0.5 + 0.01 * frame); // modified before renders 0 to 3
+        }
+        rw->Render();
+        culled.push_back(pass->GetNumberOfBackfaceCulledProps());
+      }
+      std::printf("culled per render, the ball modified before renders 0 to 3: %d %d %d %d %d %d\n",
+        culled[0], culled[1], culled[2], culled[3], culled[4], culled[5]);
+      Check(culled == std::vector<int>({ 1, 0, 0, 0, 1, 1 }),
+        "an animated mesh: tested at its first render, not while it keeps changing, tested "
+        "again once it stays unchanged");
+      sphere->SetEndTheta(300.0); // opened
+      rw->Render();
+      rw->Render();
+      Check(pass->GetNumberOfBackfaceCulledProps() == 0, "the ball, opened, is not culled");
+    }
+  }
+  return Status;
+}

@@ -214,6 +214,7 @@ void Context::ResetPassDefaults()
   p->SetMortonOrder(true);
   p->SetPerClusterCulling(true);
   p->SetSpotConeCulling(true);
+  p->SetAutomaticBackfaceCulling(true);
   p->SetDepthPrepass(true);
   p->SetDepthAwareClusters(true);
   p->SetAutomaticDepthPrepass(false); // rows time the options as set; "automatic" rows turn it on
@@ -520,7 +521,7 @@ Row Context::Measure(const Step& step)
     "%-6s %-8s %6d %-9s %-9s %-14s %8.1f ms [%7.1f, %7.1f]  cpu %6s  instrumented %6s  assign %6s  "
     "lights %6s  "
     "eval/px %6s (in 32s %6s) reach/px %6s  max err %5s  rmse %7s  signed %7s  prepass %6s  "
-    "shaded/px %5s (opaque %5s)  far build %6s bound %5s nodes %6s\n",
+    "shaded/px %5s (opaque %5s)  far build %6s bound %5s nodes %6s  culled %3s\n",
     row.Scene.c_str(), row.Layout.c_str(), row.Lights, row.Method.c_str(), row.Sweep.c_str(),
     row.Value.c_str(), row.MsMedian, row.MsMin, row.MsMax, Num(row.CpuMs).c_str(),
     Num(row.InstrumentedMs).c_str(), Num(row.AssignMs).c_str(), Num(row.LightUpdateMs).c_str(),
@@ -529,8 +530,8 @@ Row Context::Measure(const Step& step)
     Num(row.SignedError * 255.0).c_str(), Num(row.PrepassMs).c_str(),
     Num(row.ShadedPerVisible).c_str(), Num(row.OpaqueShadedPerVisible).c_str(),
     Num(row.FarBuildMs).c_str(), Num(row.FarBoundSteps).c_str(),
-    (std::isnan(row.FarNodes) ? std::string() : std::to_string(std::llround(row.FarNodes)))
-      .c_str());
+    (std::isnan(row.FarNodes) ? std::string() : std::to_string(std::llround(row.FarNodes))).c_str(),
+    stock ? "" : std::to_string(this->Pass->GetNumberOfBackfaceCulledProps()).c_str());
   std::fflush(stdout);
   return row;
 }

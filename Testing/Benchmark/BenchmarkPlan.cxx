@@ -5,6 +5,8 @@
 
 #include "vtkActor.h"
 #include "vtkActorCollection.h"
+#include "vtkMapper.h"
+#include "vtkPolyData.h"
 #include "vtkProperty.h"
 #include "vtkRenderer.h"
 
@@ -70,6 +72,30 @@ void SwitchSpecular(Context& ctx, bool off)
     {
       a->GetProperty()->SetSpecular(saved[i++]);
     }
+  }
+}
+
+/// VTK's own back-face culling on the scene's largest mesh (the bunny: closed, its
+/// normals out) and off again: stock VTK with the culling a user who knows the mesh sets
+/// by hand, beside the pass's AutomaticBackfaceCulling.
+void SwitchLargestMeshCulling(Context& ctx, bool on)
+{
+  vtkActorCollection* actors = ctx.GetRenderer()->GetActors();
+  actors->InitTraversal();
+  vtkActor* largest = nullptr;
+  vtkIdType most = -1;
+  while (vtkActor* a = actors->GetNextActor())
+  {
+    vtkPolyData* pd = vtkPolyData::SafeDownCast(a->GetMapper()->GetInputDataObject(0, 0));
+    if (pd && pd->GetNumberOfPolys() > most)
+    {
+      most = pd->GetNumberOfPolys();
+      largest = a;
+    }
+  }
+  if (largest)
+  {
+    largest->GetProperty()->SetBackfaceCulling(on);
   }
 }
 
@@ -403,6 +429,22 @@ std::vector<Step> MakePlan(const PlanOptions& options)
       s.Note = "first frame compiles VTK's unrolled per-light shader";
       plan.push_back(s);
     }
+    // Stock VTK with the bunny's back faces culled by hand (vtkProperty::BackfaceCulling),
+    // as the pass culls them itself: the same images, beside the rows above.
+    for (int n : main && !quick ? std::vector<int>{ 1, 8 } : std::vector<int>{})
+    {
+      Step s = base;
+      s.Lights = n;
+      s.Method = "stock";
+      s.Sweep = "culling";
+      s.Value = "back faces culled by hand, " + std::to_string(n);
+      s.Frames = F;
+      s.Counts = false;
+      s.Reference = false;
+      s.Setup = [](Context& ctx) { SwitchLargestMeshCulling(ctx, true); };
+      s.Teardown = [](Context& ctx) { SwitchLargestMeshCulling(ctx, false); };
+      plan.push_back(s);
+    }
 
     // The depth prepass and depth-aware clusters (on by default), off one by one at 4,096
     // uniform lights, on every scene: their gain depends on the scene's depth complexity.
@@ -546,6 +588,15 @@ std::vector<Step> MakePlan(const PlanOptions& options)
     if (!quick)
     {
       AddNearBudgetRows(base, plan);
+    }
+    // Closed opaque surfaces' hidden faces drawn (AutomaticBackfaceCulling off) on every
+    // scene: what culling them saves (the log's "culled" column counts the props culled).
+    {
+      Step drawn = base;
+      drawn.Sweep = "culling";
+      drawn.Value = "automatic back-face culling off";
+      drawn.Apply = [](vtkClusteredLightingPass* p) { p->SetAutomaticBackfaceCulling(false); };
+      plan.push_back(drawn);
     }
     if (!main)
     {

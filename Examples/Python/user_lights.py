@@ -25,6 +25,10 @@ fragment shader for fragments that fail the depth test) and how many pixels diff
 rim, where front and back faces meet at one depth, a drawn back face may win a sample);
 it exits with status 1 unless the ball alone was culled and at most 0.1% of the pixels
 differ;
+--animate FRAMES then renders FRAMES frames in which every light moves (a small
+translation each frame) and prints the median frame time, far-field build, light update
+and assignment times (the first build of a still frame, which the default render's line
+gives, also allocates the far field's buffers and textures);
 --back-face-sums also renders with FarFieldExactSumsOnBackFaces on (the floor here is a
 back face: vtkPlaneSource's normal points down). --counts prints the lights evaluated and
 reaching per pixel of each clustered render. The
@@ -41,6 +45,8 @@ import time
 from clusteredlighting import vtkClusteredLightingPass, vtkClusteredLightSet
 from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
 from vtkmodules.vtkCommonDataModel import vtkPolyData
+from vtkmodules.vtkCommonTransforms import vtkTransform
+from vtkmodules.vtkFiltersGeneral import vtkTransformFilter
 from vtkmodules.vtkFiltersSources import vtkPlaneSource, vtkPointSource, vtkSphereSource
 from vtkmodules.vtkIOImage import vtkPNGWriter
 from vtkmodules.vtkRenderingCore import (
@@ -132,6 +138,9 @@ def main():
     parser.add_argument("--hidden-cost", action="store_true",
                         help="also render with AutomaticBackfaceCulling off (the ball's "
                         "hidden back faces drawn) and print what they cost")
+    parser.add_argument("--animate", type=int, default=0, metavar="FRAMES",
+                        help="also render FRAMES frames in which every light moves and print "
+                        "the median far-field build, light update and assignment times")
     parser.add_argument("--counts", action="store_true",
                         help="also print the lights evaluated and reaching per pixel of each "
                         "clustered render (the pass's evaluated-count view, one more render)")
@@ -167,10 +176,17 @@ def main():
         array = numpy_to_vtk(cones, deep=True)
         array.SetName("ConeAngle")
         cloud.GetPointData().AddArray(array)
-        lights.SetInputData(cloud)
+        mover_input = cloud
         lights.SetDefaultSpotDirection(0.0, -1.0, 0.0)
     else:
-        lights.SetInputConnection(points.GetOutputPort())
+        points.Update()
+        mover_input = points.GetOutput()
+    # The lights through a transform (the identity unless --animate moves them).
+    motion = vtkTransform()
+    mover = vtkTransformFilter()
+    mover.SetTransform(motion)
+    mover.SetInputData(mover_input)
+    lights.SetInputConnection(mover.GetOutputPort())
     lights.SetDefaultAttenuation(1.0, 0.0, 8.0)
     lights.SetDefaultIntensity(args.intensity)
     pass_ = vtkClusteredLightingPass()
@@ -283,6 +299,21 @@ def main():
         if culled_props != 1 or numpy.count_nonzero(differ) > differ.size // 1000:
             print("the ball's back faces were not culled, or culling them changed the image")
             return 1
+    if args.animate > 0:
+        # Every light moves every frame (a small translation): each frame rebuilds the far
+        # field and reassigns the lights, as animated lights do.
+        times = []
+        for frame in range(args.animate):
+            motion.Translate(0.001, 0.0, 0.0)
+            start = time.perf_counter()
+            window.Render()
+            times.append((1000.0 * (time.perf_counter() - start),
+                          pass_.GetLastFarFieldBuildTime(), pass_.GetLastLightUpdateTime(),
+                          pass_.GetLastAssignmentTime()))
+        frame_ms, build_ms, update_ms, assign_ms = (numpy.median(column) for column in zip(*times))
+        print("animated (%d frames, every light moving, medians): frame %.1f ms, far-field "
+              "build %.1f ms (in the light update, %.1f ms), assignment %.1f ms"
+              % (args.animate, frame_ms, build_ms, update_ms, assign_ms))
     if args.cone_culling_off:
         same = numpy.array_equal(results["cone-culling-off"][1], results["default"][1])
         print("cone culling: the same image as without it: %s" % ("yes" if same else "NO"))

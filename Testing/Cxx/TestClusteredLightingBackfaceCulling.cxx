@@ -15,6 +15,7 @@
 //  - that face culling is off after the frame (nothing culled after the pass);
 //  - that a mesh modified before every render is not tested again while it keeps
 //    changing, and is once it stays unchanged; that a mesh opened is not culled.
+#include "ClusteredLightingGLTestUtilities.h"
 #include "ClusteredLightingTestUtilities.h"
 
 #include "vtkActorCollection.h"
@@ -37,15 +38,22 @@
 
 namespace
 {
-int Status = EXIT_SUCCESS;
+using ClusteredLightingTest::Check;
 
-void Check(bool ok, const std::string& what)
+/// The test scene's ball (the actor drawn from a vtkSphereSource) and its source.
+vtkActor* FindBall(vtkRenderer* ren, vtkSphereSource*& sphere)
 {
-  std::printf("%s: %s\n", ok ? "ok" : "FAILED", what.c_str());
-  if (!ok)
+  vtkActorCollection* actors = ren->GetActors();
+  actors->InitTraversal();
+  while (vtkActor* a = actors->GetNextActor())
   {
-    Status = EXIT_FAILURE;
+    sphere = vtkSphereSource::SafeDownCast(a->GetMapper()->GetInputAlgorithm());
+    if (sphere)
+    {
+      return a;
+    }
   }
+  return nullptr;
 }
 
 /// Pixels of two images that differ by more than one step in a channel.
@@ -76,31 +84,20 @@ struct Case
   std::function<void(vtkRenderer*, vtkActor* ball, vtkSphereSource* sphere)> SetUp;
 };
 
-/// A scene of its own for each case: the test scene's floor (open: never culled) and
-/// ball, the usual camera, 300 lights as users write them.
-int RunCase(const Case& c, bool prepass)
+/// A scene of its own for each case: the test scene (an open floor and a closed ball, the
+/// usual camera) and 300 lights as users write them.
+void RunCase(const Case& c, bool prepass)
 {
   vtkNew<vtkRenderWindow> rw;
   vtkNew<vtkRenderer> ren;
-  rw->SetSize(240, 180);
-  rw->SetMultiSamples(0);
-  rw->AddRenderer(ren);
-  ren->SetBackground(0.05, 0.05, 0.08);
-  ClusteredLightingTest::AddFloor(ren, 3.0)->SetPosition(0.0, 0.0, -1.0);
-  vtkNew<vtkSphereSource> sphere;
-  sphere->SetThetaResolution(32);
-  sphere->SetPhiResolution(24);
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputConnection(sphere->GetOutputPort());
-  vtkNew<vtkActor> ball;
-  ball->SetMapper(mapper);
-  ball->SetScale(1.5);
-  ball->GetProperty()->SetColor(0.9, 0.7, 0.5);
-  ball->GetProperty()->SetSpecular(0.4);
-  ball->GetProperty()->SetSpecularPower(20);
-  ren->AddActor(ball);
-  ren->GetActiveCamera()->SetPosition(0.5, 2.5, 7.0);
-  ren->GetActiveCamera()->SetFocalPoint(0.0, -0.3, 0.0);
+  ClusteredLightingTest::SetUpTestScene(rw, ren, 240, 180, 32);
+  vtkSphereSource* sphere = nullptr;
+  vtkActor* ball = FindBall(ren, sphere);
+  if (!ball)
+  {
+    Check(false, "the test scene has its ball");
+    return;
+  }
   c.SetUp(ren, ball, sphere);
   ren->ResetCameraClippingRange();
   if (c.Near > 0.0)
@@ -131,7 +128,6 @@ int RunCase(const Case& c, bool prepass)
   Check(count == c.Culled, what + ": " + std::to_string(c.Culled) + " culled");
   Check(countOff == 0, what + ": none culled with the option off");
   Check(differing <= 4, what + ": the same image but for a few rim pixels");
-  return 0;
 }
 }
 
@@ -205,7 +201,7 @@ int TestClusteredLightingBackfaceCulling(int, char*[])
     { "camera inside a sphere", 0, 0.2,
       [](vtkRenderer* ren, vtkActor* ball, vtkSphereSource*)
       {
-        ball->SetScale(4.0);
+        ball->SetScale(8.0); // radius 4: the eye, 2.1 from its centre, is inside
         ren->GetActiveCamera()->SetPosition(0.5, 0.5, 2.0);
         ren->GetActiveCamera()->SetFocalPoint(0.0, -0.3, 0.0);
       } },
@@ -230,15 +226,7 @@ int TestClusteredLightingBackfaceCulling(int, char*[])
     pass->AddLightSet(lights);
     ren->SetPass(pass);
     vtkSphereSource* sphere = nullptr;
-    vtkActorCollection* actors = ren->GetActors();
-    actors->InitTraversal();
-    while (vtkActor* a = actors->GetNextActor())
-    {
-      if (vtkAlgorithm* source = a->GetMapper()->GetInputAlgorithm())
-      {
-        sphere = sphere ? sphere : vtkSphereSource::SafeDownCast(source);
-      }
-    }
+    FindBall(ren, sphere);
     Check(sphere != nullptr, "the test scene's ball comes from a vtkSphereSource");
     if (sphere)
     {
@@ -263,5 +251,5 @@ int TestClusteredLightingBackfaceCulling(int, char*[])
       Check(pass->GetNumberOfBackfaceCulledProps() == 0, "the ball, opened, is not culled");
     }
   }
-  return Status;
+  return ClusteredLightingTest::CheckStatus();
 }

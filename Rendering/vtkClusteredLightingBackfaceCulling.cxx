@@ -174,12 +174,18 @@ const vtkClusteredLighting::SurfaceClosure& vtkClusteredLightingBackfaceCulling:
 //------------------------------------------------------------------------------
 void vtkClusteredLightingBackfaceCulling::SetActive(bool active)
 {
-  if (!active && this->Culled && this->State)
+  this->EndProp();
+  this->Active = active;
+}
+
+//------------------------------------------------------------------------------
+void vtkClusteredLightingBackfaceCulling::EndProp()
+{
+  if (this->Culled && this->State)
   {
     this->State->vtkglDisable(GL_CULL_FACE);
   }
   this->Culled = false;
-  this->Active = active;
 }
 
 //------------------------------------------------------------------------------

@@ -30,9 +30,10 @@
  *
  * The culling is set in the draw itself (Apply, from the render passes' SetShaderParameters,
  * which VTK calls after vtkOpenGLProperty::Render has set the actor's own culling and just
- * before each draw), only while the opaque step or the depth prepass draws (SetActive), and
- * switched off when they end (vtkOpenGLProperty::PostRender leaves it off too), so nothing
- * else drawn in the frame is culled.
+ * before each draw), only while the opaque step or the depth prepass draws (SetActive),
+ * switched off after each prop (EndProp: the prepass's loop and the opaque step's own
+ * opaque pass call it) and when they end (vtkOpenGLProperty::PostRender leaves it off
+ * too), so nothing else drawn in the frame is culled.
  *
  * @sa vtkClusteredLightingPass vtkClusteredLightingOpaqueStep vtkClusteredLightingDepthPrepass
  */
@@ -62,6 +63,10 @@ public:
   /// Sets GL's face culling for a draw of `prop` (the render passes' SetShaderParameters):
   /// only for props decided on in BeginFrame, and only while active.
   void Apply(vtkProp* prop);
+
+  /// After each prop's draws: switches the culling a draw set off again, so that the next
+  /// prop is drawn as its own property says even if its mapper does not say it.
+  void EndProp();
 
   /// Props whose hidden faces this render culled (in its draws so far).
   int GetNumberOfCulledProps() const;

@@ -300,6 +300,10 @@ int vtkClusteredLightingDepthPrepass::RenderDepth(const vtkRenderState* s,
       if (prop->GetVisibility() && !DrawsSprites(prop))
       {
         rendered += prop->RenderOpaqueGeometry(ren);
+        if (this->BackfaceCulling)
+        {
+          this->BackfaceCulling->EndProp();
+        }
       }
     }
     this->PostRender(s);

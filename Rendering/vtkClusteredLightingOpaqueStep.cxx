@@ -9,14 +9,67 @@
 #include "vtkRenderState.h"
 #include "vtkRenderer.h"
 #include "vtkSSAOPass.h"
+#include "vtkSmartPointer.h"
+
+namespace
+{
+/// VTK's opaque pass (vtkDefaultPass::RenderFilteredOpaqueGeometry), prop by prop, with
+/// the face culling a prop's draws set (AutomaticBackfaceCulling) ended after the prop:
+/// props drawn by mappers that do not set it themselves (image slices, say) are never
+/// drawn culled.
+class vtkClusteredLightingOpaqueProps : public vtkOpaquePass
+{
+public:
+  static vtkClusteredLightingOpaqueProps* New();
+  vtkTypeMacro(vtkClusteredLightingOpaqueProps, vtkOpaquePass)
+
+  void Render(const vtkRenderState* s) override
+  {
+    this->NumberOfRenderedProps = 0;
+    for (int i = 0; i < s->GetPropArrayCount(); ++i)
+    {
+      vtkProp* prop = s->GetPropArray()[i];
+      if (prop->HasKeys(s->GetRequiredKeys()))
+      {
+        this->NumberOfRenderedProps +=
+          prop->RenderFilteredOpaqueGeometry(s->GetRenderer(), s->GetRequiredKeys());
+      }
+      if (this->Culling)
+      {
+        this->Culling->EndProp();
+      }
+    }
+  }
+
+  vtkClusteredLightingBackfaceCulling* Culling = nullptr;
+
+protected:
+  vtkClusteredLightingOpaqueProps() = default;
+  ~vtkClusteredLightingOpaqueProps() override = default;
+
+private:
+  vtkClusteredLightingOpaqueProps(const vtkClusteredLightingOpaqueProps&) = delete;
+  void operator=(const vtkClusteredLightingOpaqueProps&) = delete;
+};
+vtkStandardNewMacro(vtkClusteredLightingOpaqueProps);
+}
 
 vtkStandardNewMacro(vtkClusteredLightingOpaqueStep);
 
 //------------------------------------------------------------------------------
 vtkClusteredLightingOpaqueStep::vtkClusteredLightingOpaqueStep()
-  : SSAO(new vtkClusteredLightingRendererObjects<vtkSSAOPass>(
+  : Opaque(vtkSmartPointer<vtkClusteredLightingOpaqueProps>::New())
+  , SSAO(new vtkClusteredLightingRendererObjects<vtkSSAOPass>(
       [](vtkSSAOPass* ssao, vtkWindow* w) { ssao->ReleaseGraphicsResources(w); }))
 {
+}
+
+//------------------------------------------------------------------------------
+void vtkClusteredLightingOpaqueStep::SetBackfaceCulling(
+  vtkClusteredLightingBackfaceCulling* culling)
+{
+  this->BackfaceCulling = culling;
+  static_cast<vtkClusteredLightingOpaqueProps*>(this->Opaque.Get())->Culling = culling;
 }
 
 //------------------------------------------------------------------------------
@@ -55,12 +108,14 @@ void vtkClusteredLightingOpaqueStep::Render(const vtkRenderState* s)
     pass = ssao;
     this->LastMethod = Method::SSAO;
   }
-  if (this->BackfaceCulling)
+  // Not under hidden-line removal, which draws the props itself.
+  const bool cull = this->BackfaceCulling && this->LastMethod != Method::HiddenLineRemoval;
+  if (cull)
   {
     this->BackfaceCulling->SetActive(true);
   }
   pass->Render(s);
-  if (this->BackfaceCulling)
+  if (cull)
   {
     this->BackfaceCulling->SetActive(false);
   }

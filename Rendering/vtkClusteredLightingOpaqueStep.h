@@ -42,6 +42,7 @@
 
 #include "vtkNew.h"
 #include "vtkRenderPass.h"
+#include "vtkSmartPointer.h" // for vtkSmartPointer
 
 #include <memory> // for std::unique_ptr
 
@@ -64,11 +65,9 @@ public:
   void Render(const vtkRenderState* s) override;
 
   /// The culling of hidden faces active while this step draws (the pass's
-  /// AutomaticBackfaceCulling; nullptr: none), not owned.
-  void SetBackfaceCulling(vtkClusteredLightingBackfaceCulling* culling)
-  {
-    this->BackfaceCulling = culling;
-  }
+  /// AutomaticBackfaceCulling; nullptr: none), not owned; ended after each prop. Not
+  /// under hidden-line removal, whose pass draws the props itself.
+  void SetBackfaceCulling(vtkClusteredLightingBackfaceCulling* culling);
 
   void ReleaseGraphicsResources(vtkWindow* w) override;
 
@@ -100,7 +99,7 @@ private:
   vtkClusteredLightingOpaqueStep(const vtkClusteredLightingOpaqueStep&) = delete;
   void operator=(const vtkClusteredLightingOpaqueStep&) = delete;
 
-  vtkNew<vtkOpaquePass> Opaque;
+  vtkSmartPointer<vtkOpaquePass> Opaque; ///< prop by prop (ends their culling)
   vtkNew<vtkHiddenLineRemovalPass> HiddenLineRemoval;
   std::unique_ptr<vtkClusteredLightingRendererObjects<vtkSSAOPass>> SSAO;
   Method LastMethod = Method::Opaque;

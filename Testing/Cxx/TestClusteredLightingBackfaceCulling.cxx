@@ -4,8 +4,9 @@
 // over a scene with the option on and off, with the depth prepass drawn and without it,
 // and checks
 //  - how many props the pass culled (GetNumberOfBackfaceCulledProps): the closed ball
-//    (outward, inward, mirrored by a negative scale) and a cube whose faces have points
-//    of their own; not an open sphere, a translucent or wireframe ball, a ball of triangle
+//    (outward, inward, mirrored by a negative scale; followed by an image slice seen from
+//    behind, which must not be culled with it) and a cube whose faces have points of their
+//    own; not an open sphere, a translucent or wireframe ball, a ball of triangle
 //    strips, one with clipping planes, one with VTK's own culling, one that the near plane
 //    cuts, or a sphere around the camera;
 //  - that the image is the one with the option off: no pixel off by more than one step,
@@ -23,6 +24,9 @@
 #include "vtkClusteredLightSet.h"
 #include "vtkClusteredLightingPass.h"
 #include "vtkCubeSource.h"
+#include "vtkImageActor.h"
+#include "vtkImageData.h"
+#include "vtkImageMapper3D.h"
 #include "vtkPlane.h"
 #include "vtkProperty.h"
 #include "vtkReverseSense.h"
@@ -158,6 +162,33 @@ int TestClusteredLightingBackfaceCulling(int, char*[])
           ->SetInputConnection(cube->GetOutputPort());
         ball->SetOrientation(20, 35, 0);
         ball->SetScale(1.0);
+      } },
+    { "closed ball, then an image slice seen from behind", 1, 0.0,
+      [](vtkRenderer* ren, vtkActor*, vtkSphereSource*)
+      {
+        // Drawn after the ball in the opaque step by a mapper that sets no face culling of
+        // its own: culled too if the ball's culling were left on (it faces away from the
+        // camera, so its quad is wound clockwise on screen).
+        vtkNew<vtkImageData> image;
+        image->SetDimensions(16, 16, 1);
+        image->SetSpacing(0.2, 0.2, 1.0);
+        image->SetOrigin(-1.5, -1.0, 0.0);
+        image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+        for (int j = 0; j < 16; ++j)
+        {
+          for (int i = 0; i < 16; ++i)
+          {
+            auto* p = static_cast<unsigned char*>(image->GetScalarPointer(i, j, 0));
+            p[0] = static_cast<unsigned char>(16 * i);
+            p[1] = static_cast<unsigned char>(16 * j);
+            p[2] = 200;
+          }
+        }
+        vtkNew<vtkImageActor> slice;
+        slice->GetMapper()->SetInputData(image);
+        slice->SetPosition(0.0, 0.0, -2.5);
+        slice->RotateY(180.0); // its front faces -z, away from the camera
+        ren->AddViewProp(slice);
       } },
     { "open ball (a wedge cut out, seen through the cut)", 0, 0.0,
       [](vtkRenderer*, vtkActor*, vtkSphereSource* sphere)

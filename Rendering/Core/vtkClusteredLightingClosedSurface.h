@@ -9,19 +9,22 @@
  * (docs/depth.md, "What hidden fragments still cost on llvmpipe"). The back faces of a
  * closed surface are such fragments, and only not drawing them (GL's face culling) spares
  * their work. The pass culls them itself (its option `AutomaticBackfaceCulling`) where it
- * can prove that no back face of the mesh can be seen, so the image is unchanged:
+ * can prove that no back face of the mesh can be seen, so the image is unchanged (but
+ * where a back face tied a front face in depth, at a silhouette or against another mesh,
+ * and won: the front face shows there now):
  *
- * - **Closed and consistently oriented** (ComputeSurfaceClosure). Points with the same
- *   coordinates are one vertex (a mesh whose normals were split at sharp edges repeats
- *   them). Every directed edge (a, b) of a polygon then occurs once, and its reverse
- *   (b, a) once, in another polygon: every edge bounds exactly two polygons, which run
- *   along it in opposite directions. Each connected component then bounds a solid, and
- *   its polygons' normals (right-hand rule) all point out of it or all into it: the sign
- *   of its signed volume (the divergence theorem over the polygons' fan triangles) says
- *   which. The surface counts as oriented only if every component's sign is the same
- *   (a hollow shell's inner surface faces the other way: not culled). A mesh that folds
- *   through itself (locally inverted polygons) cannot be told apart from a sound one by
- *   these tests; where its fold showed a back face, culling hides it.
+ * - **Closed and consistently oriented** (ComputeSurfaceClosure). With the points as
+ *   numbered, or if that fails with points of equal coordinates as one vertex (a mesh
+ *   whose normals were split at sharp edges repeats them): every directed edge (a, b) of
+ *   a polygon occurs once, and its reverse (b, a) once, in another polygon, so every edge
+ *   bounds exactly two polygons, which run along it in opposite directions. Each
+ *   connected component then bounds a solid, and its polygons' normals (right-hand rule)
+ *   all point out of it or all into it: the sign of its signed volume (the divergence
+ *   theorem over the polygons' fan triangles) says which. The surface counts as oriented
+ *   only if every component's sign is the same (a hollow shell's inner surface faces the
+ *   other way: not culled). A mesh that folds through itself (locally inverted polygons)
+ *   cannot be told apart from a sound one by these tests; where its fold showed a back
+ *   face, culling hides it.
  * - **Wholly beyond the near plane** (IsBoxBeyondNearPlane). Every corner of the mesh's
  *   bounding box, taken to clip coordinates, has w > 0 and lies beyond the near plane
  *   (z > -w, with a margin). Then the near plane does not cut the solid and the eye (for a
@@ -58,9 +61,12 @@ namespace vtkClusteredLighting
 /// What ComputeSurfaceClosure found.
 struct SurfaceClosure
 {
-  bool Closed = false;                ///< every edge bounds two polygons running along it both ways
-  int Orientation = 0;                ///< +1 normals point out, -1 in, 0 not closed or no volume
-  const char* Reason = "no polygons"; ///< why the surface is not closed (or "closed")
+  /// Every edge bounds two polygons, which run along it in opposite directions.
+  bool Closed = false;
+  /// +1: the normals point out of the solid; -1: in; 0: not closed, or no one orientation.
+  int Orientation = 0;
+  /// Why the surface is not closed ("closed" when it is).
+  const char* Reason = "no polygons";
 };
 
 namespace Detail

@@ -179,6 +179,21 @@ void vtkClusteredLightingBackfaceCulling::SetActive(bool active)
 }
 
 //------------------------------------------------------------------------------
+int vtkClusteredLightingBackfaceCulling::GetFace(vtkProp* prop)
+{
+  const auto it = this->Faces.find(prop);
+  if (it == this->Faces.end())
+  {
+    return 0;
+  }
+  if (it->second == Undecided)
+  {
+    it->second = this->Decide(prop);
+  }
+  return it->second;
+}
+
+//------------------------------------------------------------------------------
 void vtkClusteredLightingBackfaceCulling::EndProp()
 {
   if (this->Culled && this->State)
@@ -195,18 +210,10 @@ void vtkClusteredLightingBackfaceCulling::Apply(vtkProp* prop)
   {
     return;
   }
-  const auto it = this->Faces.find(prop);
-  if (it == this->Faces.end())
+  const int face = this->GetFace(prop);
+  if (face != 0)
   {
-    return;
-  }
-  if (it->second == Undecided)
-  {
-    it->second = this->Decide(prop);
-  }
-  if (it->second != 0)
-  {
-    this->State->vtkglCullFace(it->second > 0 ? GL_BACK : GL_FRONT);
+    this->State->vtkglCullFace(face > 0 ? GL_BACK : GL_FRONT);
     this->State->vtkglEnable(GL_CULL_FACE);
     this->Culled = true;
   }

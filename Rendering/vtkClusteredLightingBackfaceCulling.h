@@ -64,6 +64,10 @@ public:
   /// only for props decided on in BeginFrame, and only while active.
   void Apply(vtkProp* prop);
 
+  /// The face `prop`'s draws cull in this render (+1 GL_BACK, -1 GL_FRONT, 0 none),
+  /// decided now if it was not yet (its input must be up to date).
+  int GetFace(vtkProp* prop);
+
   /// After each prop's draws: switches the culling a draw set off again, so that the next
   /// prop is drawn as its own property says even if its mapper does not say it.
   void EndProp();

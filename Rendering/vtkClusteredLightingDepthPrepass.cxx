@@ -599,8 +599,9 @@ double vtkClusteredLightingDepthPrepass::ComputePixelSlack(const vtkRenderState*
 // framebuffer, samples, viewport), the camera's matrices, VTK's global coincident-topology
 // settings, and every visible prop with its mapper, clipping planes and input. Props are
 // accepted only where these modification times cover everything that moves their depths.
-std::uint64_t vtkClusteredLightingDepthPrepass::ComputeReuseSignature(
-  const vtkRenderState* s, vtkOpenGLRenderWindow* rw, bool record, std::string* why)
+std::uint64_t vtkClusteredLightingDepthPrepass::ComputeReuseSignature(const vtkRenderState* s,
+  vtkOpenGLRenderWindow* rw, bool record, std::string* why,
+  vtkClusteredLightingBackfaceCulling* culling)
 {
   auto refuse = [why](const std::string& reason)
   {
@@ -754,6 +755,8 @@ std::uint64_t vtkClusteredLightingDepthPrepass::ComputeReuseSignature(
     vtkDataObject* input = polyMapper->GetInputDataObject(0, 0);
     h.Mix(input);
     h.Mix(static_cast<std::uint64_t>(input ? input->GetMTime() : 0));
+    // The face its draws cull (decided now, its input up to date).
+    h.Mix(static_cast<std::uint64_t>(culling ? culling->GetFace(prop) + 2 : 0));
     if (compositeMapper)
     {
       // A composite mapper's time covers its blocks' display attributes (visibility,

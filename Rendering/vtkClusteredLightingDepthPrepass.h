@@ -99,8 +99,11 @@ public:
   /// they may depend on something it cannot see (see above). `record`: the depths are to
   /// be recorded through vtkClusteredLightingSampleDepths. Brings the props' inputs up to
   /// date (as their mappers would when drawn). `why` (optional) says what made it 0.
-  static std::uint64_t ComputeReuseSignature(
-    const vtkRenderState* s, vtkOpenGLRenderWindow* rw, bool record, std::string* why = nullptr);
+  /// `culling` (optional): each prop's culled face in this render is part of the hash (a
+  /// prepass drawn with other faces may hold a back face's depth where a tie left it).
+  static std::uint64_t ComputeReuseSignature(const vtkRenderState* s, vtkOpenGLRenderWindow* rw,
+    bool record, std::string* why = nullptr,
+    vtkClusteredLightingBackfaceCulling* culling = nullptr);
 
   /// Whether the last RestoreDepth copied the depths back (RenderDepth clears it).
   bool GetReused() const { return this->Reused; }

@@ -801,7 +801,7 @@ void vtkClusteredLightingPass::RenderDepthPrepass(
   // The last frame's depths where they still hold (ReuseDepthPrepass), else a draw.
   const std::uint64_t reuse = this->ReuseDepthPrepass
     ? vtkClusteredLightingDepthPrepass::ComputeReuseSignature(
-        s, rw, depthAware, &this->Internals->DepthReuseProblem)
+        s, rw, depthAware, &this->Internals->DepthReuseProblem, &this->Internals->BackfaceCulling)
     : 0;
   if (!prepass->RestoreDepth(s, rw, this->MeasureTimings, assigner->GetSavedDepth(), reuse))
   {

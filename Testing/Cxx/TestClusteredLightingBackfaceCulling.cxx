@@ -15,7 +15,8 @@
 //    wrong face, or a surface whose back faces show, changes hundreds of pixels;
 //  - that face culling is off after the frame (nothing culled after the pass);
 //  - that a mesh modified before every render is not tested again while it keeps
-//    changing, and is once it stays unchanged; that a mesh opened is not culled.
+//    changing, and is once it stays unchanged; that a mesh opened is not culled;
+//  - that a still frame reuses the prepass's depths only when the same faces are culled.
 #include "ClusteredLightingGLTestUtilities.h"
 #include "ClusteredLightingTestUtilities.h"
 
@@ -281,6 +282,34 @@ int TestClusteredLightingBackfaceCulling(int, char*[])
       rw->Render();
       Check(pass->GetNumberOfBackfaceCulledProps() == 0, "the ball, opened, is not culled");
     }
+  }
+
+  // A still frame reuses the last prepass's depths (ReuseDepthPrepass) only if its props
+  // cull the same faces: a prepass drawn with other faces may hold a back face's depth
+  // where it won a tie, which the culled draw would not meet.
+  {
+    vtkNew<vtkRenderWindow> rw;
+    vtkNew<vtkRenderer> ren;
+    ClusteredLightingTest::SetUpTestScene(rw, ren, 160, 120);
+    vtkNew<vtkClusteredLightSet> lights;
+    ClusteredLightingTest::MakeUserLights(lights, 50, 0.05, 3);
+    vtkNew<vtkClusteredLightingPass> pass;
+    pass->AddLightSet(lights);
+    pass->AutomaticDepthPrepassOff();
+    pass->DepthPrepassOn();
+    pass->ReuseDepthPrepassOn();
+    ren->SetPass(pass);
+    std::vector<int> reused;
+    for (bool culling : { true, true, false, false, true, true })
+    {
+      pass->SetAutomaticBackfaceCulling(culling);
+      rw->Render();
+      reused.push_back(pass->GetDepthPrepassReused() ? 1 : 0);
+    }
+    std::printf("prepass depths reused, culling on, on, off, off, on, on: %d %d %d %d %d %d\n",
+      reused[0], reused[1], reused[2], reused[3], reused[4], reused[5]);
+    Check(reused == std::vector<int>({ 0, 1, 0, 1, 0, 1 }),
+      "a still frame reuses the prepass's depths only when the culled faces are the same");
   }
   return ClusteredLightingTest::CheckStatus();
 }

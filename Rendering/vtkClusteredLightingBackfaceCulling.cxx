@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkClusteredLightingBackfaceCulling.h"
+#include "vtkClusteredLightingGLHelpers.h" // for vtkClusteredLightingHasShaderCode
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
@@ -13,7 +14,6 @@
 #include "vtkProperty.h"
 #include "vtkRenderState.h"
 #include "vtkRenderer.h"
-#include "vtkShaderProperty.h"
 #include "vtk_glew.h"
 
 #include <cstring> // for std::strcmp
@@ -47,10 +47,7 @@ vtkPolyData* GetPlainOpaqueSurface(vtkActor* actor)
   {
     return nullptr;
   }
-  vtkShaderProperty* shaders = actor->GetShaderProperty();
-  if (shaders &&
-    (shaders->HasVertexShaderCode() || shaders->HasFragmentShaderCode() ||
-      shaders->HasGeometryShaderCode() || shaders->GetNumberOfShaderReplacements() > 0))
+  if (vtkClusteredLightingHasShaderCode(actor))
   {
     return nullptr;
   }
@@ -77,6 +74,11 @@ void vtkClusteredLightingBackfaceCulling::BeginFrame(
   this->SetActive(false);
   this->Faces.clear();
   ++this->Renders;
+  // Forget polydata that were deleted (their address may come back).
+  for (auto it = this->Closures.begin(); it != this->Closures.end();)
+  {
+    it = it->second.Data ? std::next(it) : this->Closures.erase(it);
+  }
   this->State = state;
   if (!enabled || !state)
   {
@@ -118,11 +120,6 @@ int vtkClusteredLightingBackfaceCulling::Decide(vtkProp* prop)
 const vtkClusteredLighting::SurfaceClosure& vtkClusteredLightingBackfaceCulling::GetClosure(
   vtkPolyData* data)
 {
-  // Forget polydata that were deleted (their address may come back).
-  for (auto it = this->Closures.begin(); it != this->Closures.end();)
-  {
-    it = it->second.Data ? std::next(it) : this->Closures.erase(it);
-  }
   CachedClosure& cached = this->Closures[data];
   const vtkMTimeType time = data->GetMTime();
   const bool known = cached.Data == data;

@@ -2,6 +2,7 @@
 #include "vtkClusteredLightingDepthPrepass.h"
 
 #include "vtkClusteredLightingBackfaceCulling.h"
+#include "vtkClusteredLightingGLHelpers.h" // for vtkClusteredLightingHasShaderCode
 #include "vtkClusteredLightingSampleDepths.h"
 #include "vtkClusteredLightingSavedDepth.h"
 #include "vtkClusteredLightingShaderCode.h"
@@ -35,7 +36,6 @@
 #include "vtkRenderer.h"
 #include "vtkShader.h"
 #include "vtkShaderProgram.h"
-#include "vtkShaderProperty.h"
 #include "vtkSmartPointer.h"
 #include "vtk_glew.h" // for GL calls
 
@@ -514,10 +514,7 @@ bool GetTranslucentBox(vtkProp* prop, double box[6])
   }
   // Shader code or replacements may move a fragment's position anywhere (VTK's impostor
   // mappers set it in the fragment shader).
-  vtkShaderProperty* shader = actor->GetShaderProperty();
-  if (shader &&
-    (shader->GetNumberOfShaderReplacements() > 0 || shader->HasVertexShaderCode() ||
-      shader->HasGeometryShaderCode() || shader->HasFragmentShaderCode()))
+  if (vtkClusteredLightingHasShaderCode(actor))
   {
     return false;
   }
@@ -717,10 +714,7 @@ std::uint64_t vtkClusteredLightingDepthPrepass::ComputeReuseSignature(const vtkR
     {
       return refuse("a mapper has an UpdateShaderEvent observer");
     }
-    vtkShaderProperty* shaders = actor->GetShaderProperty();
-    if (shaders &&
-      (shaders->GetNumberOfShaderReplacements() > 0 || shaders->HasVertexShaderCode() ||
-        shaders->HasFragmentShaderCode() || shaders->HasGeometryShaderCode()))
+    if (vtkClusteredLightingHasShaderCode(actor))
     {
       return refuse("an actor has shader replacements");
     }

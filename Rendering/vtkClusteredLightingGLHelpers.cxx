@@ -1,14 +1,25 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkClusteredLightingGLHelpers.h"
 
+#include "vtkActor.h"
 #include "vtkOpenGLBufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLVertexArrayObject.h"
 #include "vtkShaderProgram.h"
+#include "vtkShaderProperty.h"
 #include "vtkTextureObject.h"
 #include "vtk_glew.h" // for GL calls
 
 #include <cstring> // for std::strlen
+
+//------------------------------------------------------------------------------
+bool vtkClusteredLightingHasShaderCode(vtkActor* actor)
+{
+  vtkShaderProperty* shaders = actor ? actor->GetShaderProperty() : nullptr;
+  return shaders &&
+    (shaders->GetNumberOfShaderReplacements() > 0 || shaders->HasVertexShaderCode() ||
+      shaders->HasGeometryShaderCode() || shaders->HasFragmentShaderCode());
+}
 
 //------------------------------------------------------------------------------
 bool vtkClusteredLightingDrawTargetClampsAtOne()

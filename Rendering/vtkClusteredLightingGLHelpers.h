@@ -19,7 +19,8 @@
  *  - vtkClusteredLightingDrawTargetClampsAtOne: whether the colour being drawn clamps;
  *  - vtkClusteredLightingQueryDepthFormat, vtkClusteredLightingQuerySamplePositions: what
  *    a copy of the draw framebuffer's depth must match (its format, its samples);
- *  - vtkClusteredLightingBlitDepth: one such copy between the bound framebuffers.
+ *  - vtkClusteredLightingBlitDepth: one such copy between the bound framebuffers;
+ *  - vtkClusteredLightingHasShaderCode: whether an actor brings shader code of its own.
  *
  * None of them makes a context current: callers do (see vtkClusteredLightingAssigner).
  */
@@ -32,12 +33,17 @@
 #include <utility> // for std::pair
 #include <vector>  // for std::vector
 
+class vtkActor;
 class vtkOpenGLBufferObject;
 class vtkOpenGLRenderWindow;
 class vtkOpenGLVertexArrayObject;
 class vtkShaderProgram;
 class vtkTextureObject;
 class vtkWindow;
+
+/// Whether `actor`'s shader property holds shader code or replacements of its own: they
+/// may move its vertices, set its fragments' depths or discard fragments.
+bool vtkClusteredLightingHasShaderCode(vtkActor* actor);
 
 /// True if the current draw framebuffer's first draw buffer stores fixed-point colour
 /// (GL_UNSIGNED_NORMALIZED: written values clamp to [0, 1]). False for float targets (a

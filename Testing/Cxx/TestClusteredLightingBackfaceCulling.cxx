@@ -33,9 +33,9 @@
 #include "vtkReverseSense.h"
 #include "vtkSphereSource.h"
 #include "vtkStripper.h"
-#include "vtkTriangleFilter.h"
 #include "vtk_glew.h"
 
+#include <cmath>
 #include <cstdio>
 #include <functional>
 #include <string>
@@ -64,22 +64,28 @@ vtkActor* FindBall(vtkRenderer* ren, vtkSphereSource*& sphere)
 /// Pixels of two images that differ by more than one step in a channel.
 int CountDiffering(const std::vector<float>& a, const std::vector<float>& b)
 {
-  if (a.size() != b.size())
-  {
-    return 1 << 30;
-  }
-  int n = 0;
-  for (std::size_t p = 0; p + 2 < a.size(); p += 3)
-  {
-    bool differs = false;
-    for (int k = 0; k < 3; ++k)
-    {
-      differs = differs || std::abs(a[p + k] - b[p + k]) > 1.5f / 255.0f;
-    }
-    n += differs ? 1 : 0;
-  }
-  return n;
+  const ClusteredLightingTest::ImageComparison c = ClusteredLightingTest::CompareImages(a, b);
+  return c.Pixels == 0 ? 1 << 30 : static_cast<int>(std::lround(c.FractionOverOneStep * c.Pixels));
 }
+
+/// The test scene (an open floor and a closed ball, the usual camera) with `n` lights as
+/// users write them, through the pass.
+struct Scene
+{
+  vtkNew<vtkRenderWindow> Window;
+  vtkNew<vtkRenderer> Renderer;
+  vtkNew<vtkClusteredLightSet> Lights;
+  vtkNew<vtkClusteredLightingPass> Pass;
+
+  Scene(int width, int height, int n, unsigned seed, int sphereResolution)
+  {
+    ClusteredLightingTest::SetUpTestScene(
+      this->Window, this->Renderer, width, height, sphereResolution);
+    ClusteredLightingTest::MakeUserLights(this->Lights, n, 0.05, seed);
+    this->Pass->AddLightSet(this->Lights);
+    this->Renderer->SetPass(this->Pass);
+  }
+};
 
 struct Case
 {
@@ -89,13 +95,15 @@ struct Case
   std::function<void(vtkRenderer*, vtkActor* ball, vtkSphereSource* sphere)> SetUp;
 };
 
-/// A scene of its own for each case: the test scene (an open floor and a closed ball, the
-/// usual camera) and 300 lights as users write them.
+/// A scene of its own for each case: the test scene and 300 lights as users write them.
 void RunCase(const Case& c, bool prepass)
 {
-  vtkNew<vtkRenderWindow> rw;
-  vtkNew<vtkRenderer> ren;
-  ClusteredLightingTest::SetUpTestScene(rw, ren, 240, 180, 32);
+  Scene scene(240, 180, 300, 5, 32);
+  vtkRenderWindow* rw = scene.Window;
+  vtkRenderer* ren = scene.Renderer;
+  vtkClusteredLightingPass* pass = scene.Pass;
+  pass->AutomaticDepthPrepassOff();
+  pass->SetDepthPrepass(prepass);
   vtkSphereSource* sphere = nullptr;
   vtkActor* ball = FindBall(ren, sphere);
   if (!ball)
@@ -109,14 +117,6 @@ void RunCase(const Case& c, bool prepass)
   {
     ren->GetActiveCamera()->SetClippingRange(c.Near, 20.0);
   }
-
-  vtkNew<vtkClusteredLightSet> lights;
-  ClusteredLightingTest::MakeUserLights(lights, 300, 0.05, 5);
-  vtkNew<vtkClusteredLightingPass> pass;
-  pass->AddLightSet(lights);
-  pass->AutomaticDepthPrepassOff();
-  pass->SetDepthPrepass(prepass);
-  ren->SetPass(pass);
 
   const std::string what = std::string(c.Name) + (prepass ? ", prepass" : ", no prepass");
   rw->Render();
@@ -249,16 +249,11 @@ int TestClusteredLightingBackfaceCulling(int, char*[])
   // An animated mesh (modified before every render) is tested once, then not culled
   // until a render in which it stays unchanged; a mesh that is opened is not culled.
   {
-    vtkNew<vtkRenderWindow> rw;
-    vtkNew<vtkRenderer> ren;
-    ClusteredLightingTest::SetUpTestScene(rw, ren, 160, 120);
-    vtkNew<vtkClusteredLightSet> lights;
-    ClusteredLightingTest::MakeUserLights(lights, 50, 0.05, 3);
-    vtkNew<vtkClusteredLightingPass> pass;
-    pass->AddLightSet(lights);
-    ren->SetPass(pass);
+    Scene scene(160, 120, 50, 3, 24);
+    vtkRenderWindow* rw = scene.Window;
+    vtkClusteredLightingPass* pass = scene.Pass;
     vtkSphereSource* sphere = nullptr;
-    FindBall(ren, sphere);
+    FindBall(scene.Renderer, sphere);
     Check(sphere != nullptr, "the test scene's ball comes from a vtkSphereSource");
     if (sphere)
     {
@@ -288,17 +283,12 @@ int TestClusteredLightingBackfaceCulling(int, char*[])
   // cull the same faces: a prepass drawn with other faces may hold a back face's depth
   // where it won a tie, which the culled draw would not meet.
   {
-    vtkNew<vtkRenderWindow> rw;
-    vtkNew<vtkRenderer> ren;
-    ClusteredLightingTest::SetUpTestScene(rw, ren, 160, 120);
-    vtkNew<vtkClusteredLightSet> lights;
-    ClusteredLightingTest::MakeUserLights(lights, 50, 0.05, 3);
-    vtkNew<vtkClusteredLightingPass> pass;
-    pass->AddLightSet(lights);
+    Scene scene(160, 120, 50, 3, 24);
+    vtkRenderWindow* rw = scene.Window;
+    vtkClusteredLightingPass* pass = scene.Pass;
     pass->AutomaticDepthPrepassOff();
     pass->DepthPrepassOn();
     pass->ReuseDepthPrepassOn();
-    ren->SetPass(pass);
     std::vector<int> reused;
     for (bool culling : { true, true, false, false, true, true })
     {

@@ -159,7 +159,7 @@ def main():
     sphere.SetRadius(0.6)
     sphere.SetThetaResolution(64)
     sphere.SetPhiResolution(48)
-    ball = add_actor(renderer, sphere, (0.9, 0.85, 0.8), specular=0.5, pbr=pbr)
+    add_actor(renderer, sphere, (0.9, 0.85, 0.8), specular=0.5, pbr=pbr)
 
     points = vtkPointSource()
     points.SetNumberOfPoints(args.lights)

@@ -67,6 +67,12 @@
 namespace vtkClusteredLighting
 {
 
+/// Radians by which the far-field build widens a spot light's cone when it chooses the
+/// blocks of nodes the light is summed into (SpotConeMayReachBox): the sums themselves
+/// test each node against the cone (AccumulateSpotBlock), so this only keeps the choice
+/// conservative against rounding.
+constexpr double FarFieldSpotConeSlack = 1e-6;
+
 /// The light tree of the far-field build (see the file description).
 struct FarFieldLightTree
 {
@@ -82,10 +88,11 @@ struct FarFieldLightTree
     int First = 0, Count = 0; ///< range of Order
     int Left = -1, Right = -1, Parent = -1;
   };
-  std::vector<Node> Nodes; ///< Nodes[0] is the root
-  std::vector<int> Order;  ///< light indices, each node's lights contiguous
-  std::vector<int> LeafOf; ///< per light: its leaf node, -1 for lights not in the tree
-  std::vector<int> Spots;  ///< the spot lights with a far part (not in the tree)
+  std::vector<Node> Nodes;         ///< Nodes[0] is the root
+  std::vector<int> Order;          ///< light indices, each node's lights contiguous
+  std::vector<int> LeafOf;         ///< per light: its leaf node, -1 for lights not in the tree
+  std::vector<int> Spots;          ///< the spot lights with a far part (not in the tree)
+  std::vector<SpotCone> SpotCones; ///< their cones widened by FarFieldSpotConeSlack
   int LeafSize = 8;
 };
 
@@ -206,6 +213,8 @@ inline FarFieldLightTree BuildFarFieldLightTree(
     if (lights[i].IsSpot())
     {
       t.Spots.push_back(static_cast<int>(i));
+      t.SpotCones.push_back(SpotCone(
+        lights[i].PositionWC, lights[i].DirectionWC, lights[i].CosCone, FarFieldSpotConeSlack));
     }
     else
     {
@@ -304,15 +313,22 @@ inline void ComputeGroupSpreadTerms(
 }
 
 /**
- * Whether some point of the box [lo, hi] may lie inside spot light l's cone (false only
- * where the spot factor is 0 at every point of it): the box's bounding sphere against the
- * cone widened by 1e-6 radians (SpotConeMayReachBall).
+ * Whether some point of the box [lo, hi] may lie inside the cone `cone` (false only where
+ * the spot factor is 0 at every point of it): the box's bounding sphere against the cone
+ * (SpotCone::MayReachBall).
  */
+inline bool SpotConeMayReachBox(const SpotCone& cone, const glm::dvec3& lo, const glm::dvec3& hi)
+{
+  return cone.MayReachBall(0.5 * (lo + hi), 0.5 * glm::length(hi - lo));
+}
+
+/// SpotConeMayReachBox for light l's cone widened by FarFieldSpotConeSlack (true for a
+/// light that is not a spot light).
 inline bool SpotConeMayReachBox(const PreparedLight& l, const glm::dvec3& lo, const glm::dvec3& hi)
 {
   return !l.IsSpot() ||
-    SpotConeMayReachBall(
-      l.PositionWC, l.DirectionWC, l.CosCone, 0.5 * (lo + hi), 0.5 * glm::length(hi - lo), 1e-6);
+    SpotConeMayReachBox(
+      SpotCone(l.PositionWC, l.DirectionWC, l.CosCone, FarFieldSpotConeSlack), lo, hi);
 }
 
 /**
@@ -357,10 +373,11 @@ void CollectFarFieldSources(const FarFieldLightTree& tree, const std::vector<Pre
     stack.push_back(n.Left);
     stack.push_back(n.Right);
   }
-  for (int l : tree.Spots)
+  for (std::size_t k = 0; k < tree.Spots.size(); ++k)
   {
+    const int l = tree.Spots[k];
     const PreparedLight& spot = lights[static_cast<std::size_t>(l)];
-    if (SpotConeMayReachBox(spot, lo, hi))
+    if (SpotConeMayReachBox(tree.SpotCones[k], lo, hi))
     {
       const glm::dvec3& x = spot.PositionWC;
       const double r = nearRadii[static_cast<std::size_t>(l)];

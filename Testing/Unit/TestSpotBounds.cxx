@@ -149,6 +149,86 @@ TEST(SpotBounds, ConeBallTestKeepsEveryBallThatHoldsAPointOfTheCone)
   EXPECT_EQ(rejected, outside);
 }
 
+// The cosine form (SpotCone) answers as the angle form of the file description, phi -
+// asin(rho / D) <= cone + slack evaluated with inverse trigonometry in long double,
+// wherever the two angles differ by more than 1e-9 radians (5e-8 near the axis): balls within a few
+// slacks of the widened cone's edge, near the axis (cones of 0 degrees, tiny balls), at the apex's
+// side (cones near 90 degrees, large balls: a + asin(rho / D) >= pi) and at every scale;
+// and the slacks the product uses (SpotConeSlack, the far field's 1e-6) and none.
+TEST(SpotBounds, CosineFormAnswersAsTheAngleForm)
+{
+  std::mt19937 rng(23);
+  std::uniform_real_distribution<double> U(0.0, 1.0);
+  long long inside = 0, outside = 0;
+  for (const double slack : { SpotConeSlack, 1e-6, 0.0 })
+  {
+    for (const double scale : { 1e-3, 1.0, 1e6 })
+    {
+      for (const double cone : Cones)
+      {
+        const glm::dvec3 apex = scale * glm::dvec3(U(rng) - 0.5, U(rng) - 0.5, U(rng) - 0.5);
+        const glm::dvec3 axis = RandomUnit(rng);
+        const double cosCone = std::cos(cone * Degree);
+        const SpotCone widened(apex, axis, cosCone, slack);
+        for (int k = 0; k < 3000; ++k)
+        {
+          const double D = scale * std::pow(10.0, -2.0 + 3.0 * U(rng));
+          const double rho =
+            D * (k % 5 == 0 ? 0.999 * U(rng) : std::pow(10.0, -8.0 + 8.0 * U(rng)));
+          const double b = std::asin(rho / D);
+          // Centres a tiny or a small angle either side of the edge, or anywhere.
+          const double offset = k % 3 == 0 ? 1e-7 * (2.0 * U(rng) - 1.0)
+            : k % 3 == 1                   ? 1e-3 * (2.0 * U(rng) - 1.0)
+                                           : 3.14159 * U(rng) - (cone * Degree + slack + b);
+          const double phi =
+            std::min(std::max(cone * Degree + slack + b + offset, 0.0), 3.14159265358979);
+          const glm::dvec3 centre = ConePoint(apex, axis, D, phi, 6.283185307179586 * U(rng));
+          const glm::dvec3 v = centre - apex;
+          const long double cosPhi =
+            static_cast<long double>(glm::dot(v, axis)) / static_cast<long double>(glm::length(v));
+          const long double margin = std::acos(std::min(std::max(cosPhi, -1.0L), 1.0L)) -
+            std::asin(static_cast<long double>(rho) / static_cast<long double>(glm::length(v))) -
+            (std::acos(static_cast<long double>(cosCone)) + static_cast<long double>(slack));
+          // Near the axis a cosine resolves angles to about 2e-8 radians, not 1e-9.
+          const long double tolerance = cone * Degree + slack + b < 1e-3 ? 5e-8L : 1e-9L;
+          if (margin < -tolerance)
+          {
+            ++inside;
+            ASSERT_TRUE(widened.MayReachBall(centre, rho))
+              << "cone " << cone << " scale " << scale << " slack " << slack << " margin "
+              << static_cast<double>(margin);
+          }
+          else if (margin > tolerance)
+          {
+            ++outside;
+            ASSERT_FALSE(widened.MayReachBall(centre, rho))
+              << "cone " << cone << " scale " << scale << " slack " << slack << " margin "
+              << static_cast<double>(margin);
+          }
+        }
+      }
+    }
+  }
+  EXPECT_GT(inside, 100000);
+  EXPECT_GT(outside, 100000);
+  // A cone of 120 degrees and a ball seen within 60 degrees of the apex's far side: their
+  // angles sum to pi and more, so the ball meets the cone whatever its direction.
+  const SpotCone wide(glm::dvec3(0.0), glm::dvec3(0, 0, 1), std::cos(120.0 * Degree), 0.0);
+  for (const double phi : { 170.0, 175.0, 180.0 })
+  {
+    const glm::dvec3 centre =
+      ConePoint(glm::dvec3(0.0), glm::dvec3(0, 0, 1), 2.0, phi * Degree, 0.3);
+    EXPECT_TRUE(wide.MayReachBall(centre, 2.0 * std::sin(61.0 * Degree))) << phi;
+    EXPECT_FALSE(wide.MayReachBall(centre, 2.0 * std::sin(0.5 * (phi - 125.0) * Degree))) << phi;
+  }
+  // A cone widened past pi passes everywhere; a ball holding the apex passes.
+  const SpotCone everything(glm::dvec3(0.0), glm::dvec3(0, 0, 1), -1.0, 1e-3);
+  EXPECT_TRUE(everything.MayReachBall(glm::dvec3(0, 0, -10), 1e-3));
+  const SpotCone narrow(glm::dvec3(0.0), glm::dvec3(0, 0, 1), 1.0, 0.0);
+  EXPECT_TRUE(narrow.MayReachBall(glm::dvec3(0.5, 0, 0), 1.0));
+  EXPECT_FALSE(narrow.MayReachBall(glm::dvec3(0, 0, -10), 1.0));
+}
+
 // The list shader's float test (mirrored above) passes wherever the double test does,
 // balls near the cone's edge and near the apex included.
 TEST(SpotBounds, ShaderFormulaPassesWhereverTheCoreTestDoes)

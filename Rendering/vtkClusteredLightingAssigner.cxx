@@ -290,6 +290,7 @@ const vtkClusteredLightingAssignment& vtkClusteredLightingAssigner::Update(
   r.NumberOfAlwaysOn = static_cast<int>(prepared.NumberOfAlwaysOn);
   r.NumberOfBelowCutoff = static_cast<int>(prepared.NumberOfBelowCutoff);
   r.NumberOfSpots = static_cast<int>(prepared.NumberOfSpots);
+  r.FirstSpot = static_cast<int>(prepared.FirstSpot);
   r.NumberOfExplicitRadius = static_cast<int>(prepared.NumberOfExplicitRadius);
 
   // 3. Limits (may choose a smaller grid) and the plain loop when clustering cannot cull.

@@ -141,6 +141,7 @@ struct vtkClusteredLightingAssignment
   int NumberOfAlwaysOn = 0;
   int NumberOfBelowCutoff = 0;
   int NumberOfSpots = 0;
+  int FirstSpot = 0; ///< index of the first spot light in the uploaded order (lights when none)
   int NumberOfExplicitRadius = 0; ///< lights with an explicit radius (their model's range)
   int NumberOfAssigned = 0;       ///< lights with at least one list-pass quad
   int NumberOfQuads = 0;

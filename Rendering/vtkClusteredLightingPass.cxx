@@ -1448,6 +1448,12 @@ bool vtkClusteredLightingPass::SetShaderParameters(
   {
     program->SetUniformi("clLightCount", r.NumberOfLights);
   }
+  if (program->IsUniformUsed("clSpotBatch"))
+  {
+    // The lights below this batch are walked without the spot code (PrepareLights orders
+    // spot lights last; without MortonOrder the first spot light may come anywhere).
+    program->SetUniformi("clSpotBatch", r.FirstSpot / 32);
+  }
   vtkActor* actor = vtkActor::SafeDownCast(prop);
   const bool blended = actor && actor->IsRenderingTranslucentPolygonalGeometry();
   if (program->IsUniformUsed("clClampsAtOne"))

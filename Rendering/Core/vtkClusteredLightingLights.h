@@ -107,6 +107,10 @@ struct PreparedLights
   std::size_t NumberOfBelowCutoff = 0;
   std::size_t NumberOfSpots = 0;
   std::size_t NumberOfExplicitRadius = 0; ///< lights whose model has its own range
+  /// Index in Lights of the first spot light (Lights.size() when none). With MortonOrder
+  /// the spot lights come last, so the lights before it need no spot code in the shader
+  /// (the walk's batches below FirstSpot / 32 run without it).
+  std::size_t FirstSpot = 0;
 };
 
 /// Attenuation exactly as VTK's shader computes it.
@@ -248,7 +252,8 @@ inline std::string ValidateLightSource(const LightSource& l, const std::string& 
 }
 
 /// Validates, derives radii (at options.Cutoff, or FarFieldCutoff for the lights a far field
-/// may split when it is set) and sorts (always-on lights first, then Morton order).
+/// may split when it is set) and sorts: point lights before spot lights, always-on lights
+/// first among each, then Morton order (with options.MortonOrder; else the input order).
 /// nameOf(i) names source i in messages (default: "light i").
 inline PreparedLights PrepareLights(const std::vector<LightSource>& sources,
   const LightPreparationOptions& options,
@@ -311,7 +316,8 @@ inline PreparedLights PrepareLights(const std::vector<LightSource>& sources,
     for (std::size_t i = 0; i < valid.size(); ++i)
     {
       points[i] = valid[i].PositionWC;
-      group[i] = std::isinf(valid[i].Radius) ? 0 : 1;
+      group[i] = static_cast<std::uint8_t>(
+        (valid[i].IsSpot() ? 2 : 0) + (std::isinf(valid[i].Radius) ? 0 : 1));
     }
     const std::vector<std::uint32_t> order = ComputeMortonOrder(points, &group);
     out.Lights.reserve(valid.size());
@@ -323,6 +329,15 @@ inline PreparedLights PrepareLights(const std::vector<LightSource>& sources,
   else
   {
     out.Lights = std::move(valid);
+  }
+  out.FirstSpot = out.Lights.size();
+  for (std::size_t i = 0; i < out.Lights.size(); ++i)
+  {
+    if (out.Lights[i].IsSpot())
+    {
+      out.FirstSpot = i;
+      break;
+    }
   }
   return out;
 }

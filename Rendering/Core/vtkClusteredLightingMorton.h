@@ -70,7 +70,8 @@ inline std::uint32_t QuantizeMorton10(double t, double lo, double hi)
 /**
  * Permutation that sorts points by Morton code within their bounding box. group[i]
  * (optional, same size) sorts first: lower groups come first (the pass puts always-on
- * lights in group 0 so they pack into the first batches). Ties keep input order, so
+ * lights first so they pack into the first batches, and spot lights last, see
+ * PrepareLights). Ties keep input order, so
  * the result is deterministic.
  */
 inline std::vector<std::uint32_t> ComputeMortonOrder(

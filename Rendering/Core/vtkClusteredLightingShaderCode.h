@@ -13,6 +13,13 @@
  *   //CL_ELSE          the lines up to //CL_ENDIF are kept only when FLAG is not set;
  *   //CL_ENDIF         ends the block.
  *
+ *   //CL_TWICE(FLAG)   the lines up to //CL_END_TWICE are emitted twice when FLAG is
+ *                      set, each copy in braces that first declare `const int clCopy`
+ *                      (0, then 1), and once (clCopy 0) when it is not; the //CL_IF
+ *                      blocks inside are selected in each copy. The shader's walk runs
+ *                      this way without, then with, the spot lights' code (a constant
+ *                      clCopy folds it away; llvmpipe would run a branch's both sides).
+ *
  * Blocks nest; a block inside a dropped block is dropped whatever its flag. Leading
  * blanks before a directive are allowed; the directive lines themselves never reach the
  * output. SelectShaderCode() keeps the lines of the set flags, so the text injected into a
@@ -37,13 +44,88 @@ namespace vtkClusteredLighting
 {
 
 /**
- * Keeps the lines of `source` whose //CL_IF conditions hold for `flags`. Returns an empty
- * string and sets `error` (when given) if the directives do not balance.
+ * Expands the //CL_TWICE(FLAG) ... //CL_END_TWICE blocks of `source` (see the file
+ * description). Returns an empty string and sets `error` (when given) if a block is not
+ * closed, is nested in another, or an //CL_END_TWICE has no //CL_TWICE.
+ */
+inline std::string ExpandShaderCopies(
+  const std::string& source, const std::set<std::string>& flags, std::string* error = nullptr)
+{
+  std::istringstream in(source);
+  std::string line, out, block;
+  bool inside = false, twice = false;
+  int lineNumber = 0;
+  auto fail = [&](const std::string& what)
+  {
+    if (error)
+    {
+      *error = what + " at line " + std::to_string(lineNumber);
+    }
+    return std::string();
+  };
+  while (std::getline(in, line))
+  {
+    ++lineNumber;
+    const auto first = line.find_first_not_of(" \t");
+    const std::string trimmed = first == std::string::npos ? std::string() : line.substr(first);
+    if (trimmed.rfind("//CL_TWICE(", 0) == 0)
+    {
+      const auto close = trimmed.find(')');
+      if (close == std::string::npos)
+      {
+        return fail("//CL_TWICE without a closing parenthesis");
+      }
+      if (inside)
+      {
+        return fail("//CL_TWICE inside another");
+      }
+      inside = true;
+      twice = flags.count(trimmed.substr(11, close - 11)) > 0;
+      block.clear();
+    }
+    else if (trimmed.rfind("//CL_END_TWICE", 0) == 0)
+    {
+      if (!inside)
+      {
+        return fail("//CL_END_TWICE without //CL_TWICE");
+      }
+      inside = false;
+      for (int copy = 0; copy < (twice ? 2 : 1); ++copy)
+      {
+        out += "  {\n  const int clCopy = " + std::to_string(copy) + ";\n" + block + "  }\n";
+      }
+    }
+    else
+    {
+      (inside ? block : out) += line + '\n';
+    }
+  }
+  if (inside)
+  {
+    return fail("//CL_TWICE not closed by the end");
+  }
+  return out;
+}
+
+/**
+ * Keeps the lines of `source` whose //CL_IF conditions hold for `flags`, after expanding
+ * its //CL_TWICE blocks (ExpandShaderCopies). Returns an empty string and sets `error`
+ * (when given) if the directives do not balance.
  */
 inline std::string SelectShaderCode(
   const std::string& source, const std::set<std::string>& flags, std::string* error = nullptr)
 {
-  std::istringstream in(source);
+  std::string copyError;
+  const std::string expanded = ExpandShaderCopies(source, flags, &copyError);
+  if (!copyError.empty())
+  {
+    if (error)
+    {
+      *error = copyError;
+    }
+    return std::string();
+  }
+  std::istringstream in(expanded);
   std::string line, out;
   // One entry per open block: (its condition, whether its lines are emitted).
   std::vector<std::pair<bool, bool>> open;

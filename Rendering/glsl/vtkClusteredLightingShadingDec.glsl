@@ -67,6 +67,23 @@ ivec2 clMasterTexel(ivec3 c, int m)
 {
   return ivec2(c.z * clGrid.x + c.x, c.y * clMasterTexels + m);
 }
+//CL_IF(SPOT)
+// The bits below n of a 32-bit word (none for n <= 0, all for n >= 32).
+uint clBitsBelow(int n)
+{
+  return n >= 32 ? 0xffffffffu : (1u << uint(max(n, 0))) - 1u;
+}
+
+// The bits of the four master texels from batch `first` on (32 batches each) whose
+// batches lie in [begin, end).
+uvec4 clBatchMask(int first, int begin, int end)
+{
+  return uvec4(clBitsBelow(end - first) & ~clBitsBelow(begin - first),
+    clBitsBelow(end - first - 32) & ~clBitsBelow(begin - first - 32),
+    clBitsBelow(end - first - 64) & ~clBitsBelow(begin - first - 64),
+    clBitsBelow(end - first - 96) & ~clBitsBelow(begin - first - 96));
+}
+//CL_ENDIF
 //CL_ENDIF
 //CL_IF(SATURATION)
 // true where the draw's colour target clamps at 1 (fixed point) and the fragment is not
@@ -75,6 +92,11 @@ uniform bool clClampsAtOne;
 //CL_ENDIF
 //CL_IF(BRUTE_FORCE)
 uniform int clLightCount;
+//CL_ENDIF
+//CL_IF(SPOT)
+// The first batch of 32 lights that holds a spot light (the pass orders them last): the
+// lights below it are walked, and brute force evaluates them, without the spot code.
+uniform int clSpotBatch;
 //CL_ENDIF
 //CL_IF(FAR_FIELD)
 // The far field (Rendering/Core/vtkClusteredLightingFarField.h): per node of a world
@@ -182,8 +204,9 @@ vec3 clHeatColor(float t)
 // explicit radius); returns false if the light does not reach P. L is the unit direction
 // from the light to P (VTK's vertLightDirectionVC). Clustered shading also stops at the
 // culling radius (where the light falls below the cutoff); brute force evaluates the
-// light model alone.
-bool clLightAttenuation(int i, vec3 P, out vec3 L, out float att, out vec3 color)
+// light model alone. `spot` is a constant at every call: false where light i is known not
+// to be a spot light (below clSpotBatch), which compiles the spot code away there.
+bool clLightAttenuation(int i, vec3 P, bool spot, out vec3 L, out float att, out vec3 color)
 {
   vec4 view0 = texelFetch(clLightView, 2 * i);
   vec3 toP = P - view0.xyz;
@@ -210,7 +233,7 @@ bool clLightAttenuation(int i, vec3 P, out vec3 L, out float att, out vec3 color
   vec4 data1 = texelFetch(clLightData, 2 * i + 1);
   att = 1.0 / max(data1.x + data1.y * d + data1.z * d * d, 1e-30);
 //CL_IF(SPOT)
-  if (data1.w > -1.5)
+  if (spot && data1.w > -1.5)
   {
     float coneDot = dot(L, view1.xyz);
     if (coneDot < data1.w)
@@ -255,13 +278,13 @@ bool clLightAttenuation(int i, vec3 P, out vec3 L, out float att, out vec3 color
 
 //CL_IF(PHONG)
 // VTK's positional-light Phong terms (vtkOpenGLPolyDataMapper, lighting complexity 3).
-bool clShadeLight(int i, vec3 P, vec3 N, vec3 V, float power, inout vec3 diffuse,
+bool clShadeLight(int i, bool spot, vec3 P, vec3 N, vec3 V, float power, inout vec3 diffuse,
   inout vec3 specular)
 {
   vec3 L;
   float att;
   vec3 color;
-  if (!clLightAttenuation(i, P, L, att, color))
+  if (!clLightAttenuation(i, P, spot, L, att, color))
   {
     return false;
   }
@@ -292,13 +315,13 @@ vec3 clPbrTerms(vec3 L, vec3 N, vec3 V, float NdV, vec3 albedo, float roughness,
 }
 
 // VTK's positional-light PBR terms (isotropic, vtkPBRFunctions.glsl).
-bool clShadeLight(int i, vec3 P, vec3 N, vec3 V, float NdV, vec3 albedo, float roughness,
+bool clShadeLight(int i, bool spot, vec3 P, vec3 N, vec3 V, float NdV, vec3 albedo, float roughness,
   float metallic, vec3 F0, vec3 F90, inout vec3 Lo)
 {
   vec3 Lin;
   float att;
   vec3 color;
-  if (!clLightAttenuation(i, P, Lin, att, color))
+  if (!clLightAttenuation(i, P, spot, Lin, att, color))
   {
     return false;
   }
@@ -321,24 +344,24 @@ bool clShadeLight(int i, vec3 P, vec3 N, vec3 V, float NdV, vec3 albedo, float r
 //CL_IF(BRUTE_FORCE)
 //CL_IF(PHONG)
 // Brute force's light i, if there is one; counts (evaluated, reached).
-void clBruteForceLight(int i, vec3 P, vec3 N, vec3 V, float power, inout vec3 diffuse,
-  inout vec3 specular, inout ivec2 counts)
+void clBruteForceLight(int i, bool spot, vec3 P, vec3 N, vec3 V, float power,
+  inout vec3 diffuse, inout vec3 specular, inout ivec2 counts)
 {
   if (i < clLightCount)
   {
-    bool hit = clShadeLight(i, P, N, V, power, diffuse, specular);
+    bool hit = clShadeLight(i, spot, P, N, V, power, diffuse, specular);
     counts += ivec2(1, hit ? 1 : 0);
   }
 }
 //CL_ENDIF
 //CL_IF(PBR)
 // Brute force's light i, if there is one; counts (evaluated, reached).
-void clBruteForceLight(int i, vec3 P, vec3 N, vec3 V, float NdV, vec3 albedo, float roughness,
-  float metallic, vec3 F0, vec3 F90, inout vec3 Lo, inout ivec2 counts)
+void clBruteForceLight(int i, bool spot, vec3 P, vec3 N, vec3 V, float NdV, vec3 albedo,
+  float roughness, float metallic, vec3 F0, vec3 F90, inout vec3 Lo, inout ivec2 counts)
 {
   if (i < clLightCount)
   {
-    bool hit = clShadeLight(i, P, N, V, NdV, albedo, roughness, metallic, F0, F90, Lo);
+    bool hit = clShadeLight(i, spot, P, N, V, NdV, albedo, roughness, metallic, F0, F90, Lo);
     counts += ivec2(1, hit ? 1 : 0);
   }
 }

@@ -90,46 +90,57 @@
   // 16 lights per iteration: llvmpipe ends a shader after 65,535 loop iterations in all
   // (see clBruteForceLight).
   ivec2 clCounts = ivec2(0);
-  for (int clGroup = 0; clGroup < clLightCount; clGroup += 16)
+  // With spot lights, twice: the lights below the first batch that holds a spot light
+  // without the spot code, then the others with it (the pass orders spot lights last).
+//CL_TWICE(SPOT)
+  const bool clSpot = clCopy == 1;
+  int clBegin = 0;
+  int clEnd = clLightCount;
+//CL_IF(SPOT)
+  clBegin = clCopy == 0 ? 0 : min(32 * clSpotBatch, clLightCount);
+  clEnd = clCopy == 0 ? min(32 * clSpotBatch, clLightCount) : clLightCount;
+//CL_ENDIF
+  for (int clGroup = clBegin; clGroup < clEnd; clGroup += 16)
   {
 //CL_IF(PHONG)
     vec3 clNv = normalVCVSOutput;
-    clBruteForceLight(clGroup, clP, clNv, clV, specularPower, clDiffuse, clSpecular, clCounts);
-    clBruteForceLight(clGroup + 1, clP, clNv, clV, specularPower, clDiffuse, clSpecular, clCounts);
-    clBruteForceLight(clGroup + 2, clP, clNv, clV, specularPower, clDiffuse, clSpecular, clCounts);
-    clBruteForceLight(clGroup + 3, clP, clNv, clV, specularPower, clDiffuse, clSpecular, clCounts);
-    clBruteForceLight(clGroup + 4, clP, clNv, clV, specularPower, clDiffuse, clSpecular, clCounts);
-    clBruteForceLight(clGroup + 5, clP, clNv, clV, specularPower, clDiffuse, clSpecular, clCounts);
-    clBruteForceLight(clGroup + 6, clP, clNv, clV, specularPower, clDiffuse, clSpecular, clCounts);
-    clBruteForceLight(clGroup + 7, clP, clNv, clV, specularPower, clDiffuse, clSpecular, clCounts);
-    clBruteForceLight(clGroup + 8, clP, clNv, clV, specularPower, clDiffuse, clSpecular, clCounts);
-    clBruteForceLight(clGroup + 9, clP, clNv, clV, specularPower, clDiffuse, clSpecular, clCounts);
-    clBruteForceLight(clGroup + 10, clP, clNv, clV, specularPower, clDiffuse, clSpecular, clCounts);
-    clBruteForceLight(clGroup + 11, clP, clNv, clV, specularPower, clDiffuse, clSpecular, clCounts);
-    clBruteForceLight(clGroup + 12, clP, clNv, clV, specularPower, clDiffuse, clSpecular, clCounts);
-    clBruteForceLight(clGroup + 13, clP, clNv, clV, specularPower, clDiffuse, clSpecular, clCounts);
-    clBruteForceLight(clGroup + 14, clP, clNv, clV, specularPower, clDiffuse, clSpecular, clCounts);
-    clBruteForceLight(clGroup + 15, clP, clNv, clV, specularPower, clDiffuse, clSpecular, clCounts);
+    clBruteForceLight(clGroup, clSpot, clP, clNv, clV, specularPower, clDiffuse, clSpecular, clCounts);
+    clBruteForceLight(clGroup + 1, clSpot, clP, clNv, clV, specularPower, clDiffuse, clSpecular, clCounts);
+    clBruteForceLight(clGroup + 2, clSpot, clP, clNv, clV, specularPower, clDiffuse, clSpecular, clCounts);
+    clBruteForceLight(clGroup + 3, clSpot, clP, clNv, clV, specularPower, clDiffuse, clSpecular, clCounts);
+    clBruteForceLight(clGroup + 4, clSpot, clP, clNv, clV, specularPower, clDiffuse, clSpecular, clCounts);
+    clBruteForceLight(clGroup + 5, clSpot, clP, clNv, clV, specularPower, clDiffuse, clSpecular, clCounts);
+    clBruteForceLight(clGroup + 6, clSpot, clP, clNv, clV, specularPower, clDiffuse, clSpecular, clCounts);
+    clBruteForceLight(clGroup + 7, clSpot, clP, clNv, clV, specularPower, clDiffuse, clSpecular, clCounts);
+    clBruteForceLight(clGroup + 8, clSpot, clP, clNv, clV, specularPower, clDiffuse, clSpecular, clCounts);
+    clBruteForceLight(clGroup + 9, clSpot, clP, clNv, clV, specularPower, clDiffuse, clSpecular, clCounts);
+    clBruteForceLight(clGroup + 10, clSpot, clP, clNv, clV, specularPower, clDiffuse, clSpecular, clCounts);
+    clBruteForceLight(clGroup + 11, clSpot, clP, clNv, clV, specularPower, clDiffuse, clSpecular, clCounts);
+    clBruteForceLight(clGroup + 12, clSpot, clP, clNv, clV, specularPower, clDiffuse, clSpecular, clCounts);
+    clBruteForceLight(clGroup + 13, clSpot, clP, clNv, clV, specularPower, clDiffuse, clSpecular, clCounts);
+    clBruteForceLight(clGroup + 14, clSpot, clP, clNv, clV, specularPower, clDiffuse, clSpecular, clCounts);
+    clBruteForceLight(clGroup + 15, clSpot, clP, clNv, clV, specularPower, clDiffuse, clSpecular, clCounts);
 //CL_ENDIF
 //CL_IF(PBR)
-    clBruteForceLight(clGroup, clP, N, V, NdV, albedo, roughness, metallic, F0, F90, clLo, clCounts);
-    clBruteForceLight(clGroup + 1, clP, N, V, NdV, albedo, roughness, metallic, F0, F90, clLo, clCounts);
-    clBruteForceLight(clGroup + 2, clP, N, V, NdV, albedo, roughness, metallic, F0, F90, clLo, clCounts);
-    clBruteForceLight(clGroup + 3, clP, N, V, NdV, albedo, roughness, metallic, F0, F90, clLo, clCounts);
-    clBruteForceLight(clGroup + 4, clP, N, V, NdV, albedo, roughness, metallic, F0, F90, clLo, clCounts);
-    clBruteForceLight(clGroup + 5, clP, N, V, NdV, albedo, roughness, metallic, F0, F90, clLo, clCounts);
-    clBruteForceLight(clGroup + 6, clP, N, V, NdV, albedo, roughness, metallic, F0, F90, clLo, clCounts);
-    clBruteForceLight(clGroup + 7, clP, N, V, NdV, albedo, roughness, metallic, F0, F90, clLo, clCounts);
-    clBruteForceLight(clGroup + 8, clP, N, V, NdV, albedo, roughness, metallic, F0, F90, clLo, clCounts);
-    clBruteForceLight(clGroup + 9, clP, N, V, NdV, albedo, roughness, metallic, F0, F90, clLo, clCounts);
-    clBruteForceLight(clGroup + 10, clP, N, V, NdV, albedo, roughness, metallic, F0, F90, clLo, clCounts);
-    clBruteForceLight(clGroup + 11, clP, N, V, NdV, albedo, roughness, metallic, F0, F90, clLo, clCounts);
-    clBruteForceLight(clGroup + 12, clP, N, V, NdV, albedo, roughness, metallic, F0, F90, clLo, clCounts);
-    clBruteForceLight(clGroup + 13, clP, N, V, NdV, albedo, roughness, metallic, F0, F90, clLo, clCounts);
-    clBruteForceLight(clGroup + 14, clP, N, V, NdV, albedo, roughness, metallic, F0, F90, clLo, clCounts);
-    clBruteForceLight(clGroup + 15, clP, N, V, NdV, albedo, roughness, metallic, F0, F90, clLo, clCounts);
+    clBruteForceLight(clGroup, clSpot, clP, N, V, NdV, albedo, roughness, metallic, F0, F90, clLo, clCounts);
+    clBruteForceLight(clGroup + 1, clSpot, clP, N, V, NdV, albedo, roughness, metallic, F0, F90, clLo, clCounts);
+    clBruteForceLight(clGroup + 2, clSpot, clP, N, V, NdV, albedo, roughness, metallic, F0, F90, clLo, clCounts);
+    clBruteForceLight(clGroup + 3, clSpot, clP, N, V, NdV, albedo, roughness, metallic, F0, F90, clLo, clCounts);
+    clBruteForceLight(clGroup + 4, clSpot, clP, N, V, NdV, albedo, roughness, metallic, F0, F90, clLo, clCounts);
+    clBruteForceLight(clGroup + 5, clSpot, clP, N, V, NdV, albedo, roughness, metallic, F0, F90, clLo, clCounts);
+    clBruteForceLight(clGroup + 6, clSpot, clP, N, V, NdV, albedo, roughness, metallic, F0, F90, clLo, clCounts);
+    clBruteForceLight(clGroup + 7, clSpot, clP, N, V, NdV, albedo, roughness, metallic, F0, F90, clLo, clCounts);
+    clBruteForceLight(clGroup + 8, clSpot, clP, N, V, NdV, albedo, roughness, metallic, F0, F90, clLo, clCounts);
+    clBruteForceLight(clGroup + 9, clSpot, clP, N, V, NdV, albedo, roughness, metallic, F0, F90, clLo, clCounts);
+    clBruteForceLight(clGroup + 10, clSpot, clP, N, V, NdV, albedo, roughness, metallic, F0, F90, clLo, clCounts);
+    clBruteForceLight(clGroup + 11, clSpot, clP, N, V, NdV, albedo, roughness, metallic, F0, F90, clLo, clCounts);
+    clBruteForceLight(clGroup + 12, clSpot, clP, N, V, NdV, albedo, roughness, metallic, F0, F90, clLo, clCounts);
+    clBruteForceLight(clGroup + 13, clSpot, clP, N, V, NdV, albedo, roughness, metallic, F0, F90, clLo, clCounts);
+    clBruteForceLight(clGroup + 14, clSpot, clP, N, V, NdV, albedo, roughness, metallic, F0, F90, clLo, clCounts);
+    clBruteForceLight(clGroup + 15, clSpot, clP, N, V, NdV, albedo, roughness, metallic, F0, F90, clLo, clCounts);
 //CL_ENDIF
   }
+//CL_END_TWICE
 //CL_IF(COUNT)
   clEvaluated += clCounts.x;
   clReached += clCounts.y;
@@ -141,14 +152,29 @@
   // an iteration, so a while loop ends with one masked iteration for every fragment group,
   // and an empty master texel cost a list read and a masked light (docs/depth.md). A set
   // master bit means a non-empty list texel, so each inner first iteration has a light.
+  // With spot lights, twice: the batches below clSpotBatch without the spot code, then
+  // the others with it (the pass orders spot lights last; a constant clSpot compiles the
+  // spot code away, where llvmpipe would run both sides of a branch on the light's kind).
   ivec3 clCluster = clComputeCluster(vertexVC);
+//CL_TWICE(SPOT)
+  const bool clSpot = clCopy == 1;
   int clG = 0;
+  int clGEnd = clMasterTexels;
+//CL_IF(SPOT)
+  int clBatchBegin = clCopy == 0 ? 0 : clSpotBatch;
+  int clBatchEnd = clCopy == 0 ? clSpotBatch : 32 * clMasterTexels;
+  clG = clBatchBegin / 32;
+  clGEnd = min(clMasterTexels, (clBatchEnd + 31) / 32);
+//CL_ENDIF
   do
   {
     uvec4 clWords = uvec4(texelFetch(clMaster, clMasterTexel(clCluster, clG), 0).r,
       clG + 1 < clMasterTexels ? texelFetch(clMaster, clMasterTexel(clCluster, clG + 1), 0).r : 0u,
       clG + 2 < clMasterTexels ? texelFetch(clMaster, clMasterTexel(clCluster, clG + 2), 0).r : 0u,
       clG + 3 < clMasterTexels ? texelFetch(clMaster, clMasterTexel(clCluster, clG + 3), 0).r : 0u);
+//CL_IF(SPOT)
+    clWords &= clBatchMask(32 * clG, clBatchBegin, clBatchEnd);
+//CL_ENDIF
     if (any(notEqual(clWords, uvec4(0u))))
     {
       do
@@ -164,11 +190,11 @@
           clBits &= clBits - 1u;
 //CL_IF(PHONG)
           bool clHit =
-            clShadeLight(clLight, clP, normalVCVSOutput, clV, specularPower, clDiffuse, clSpecular);
+            clShadeLight(clLight, clSpot, clP, normalVCVSOutput, clV, specularPower, clDiffuse, clSpecular);
 //CL_ENDIF
 //CL_IF(PBR)
           bool clHit =
-            clShadeLight(clLight, clP, N, V, NdV, albedo, roughness, metallic, F0, F90, clLo);
+            clShadeLight(clLight, clSpot, clP, N, V, NdV, albedo, roughness, metallic, F0, F90, clLo);
 //CL_ENDIF
 //CL_IF(COUNT)
           ++clEvaluated;
@@ -190,7 +216,8 @@
       } while (any(notEqual(clWords, uvec4(0u))));
     }
     clG += 4;
-  } while (clG < clMasterTexels);
+  } while (clG < clGEnd);
+//CL_END_TWICE
 //CL_ENDIF
 //CL_IF(FAR_FIELD)
   {

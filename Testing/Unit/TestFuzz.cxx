@@ -312,7 +312,8 @@ TEST(Fuzz, PrepareLightsKeepsOrRejectsEveryLightAndPreparesOnlyFiniteData)
     ASSERT_EQ(prepared.Lights.size() + prepared.Problems.size(), sources.size());
     std::vector<bool> seen(sources.size(), false);
     std::size_t alwaysOn = 0, below = 0, spots = 0;
-    bool finiteSeen = false;
+    bool finiteSeen = false, spotSeen = false;
+    std::size_t firstSpot = prepared.Lights.size();
     for (const PreparedLight& p : prepared.Lights)
     {
       ASSERT_LT(p.SourceIndex, sources.size());
@@ -331,9 +332,18 @@ TEST(Fuzz, PrepareLightsKeepsOrRejectsEveryLightAndPreparesOnlyFiniteData)
       ASSERT_TRUE(IsFinite(p.DirectionWC));
       const double len = glm::length(p.DirectionWC);
       ASSERT_TRUE(p.CosCone == -2.0 ? len == 0.0 : std::abs(len - 1.0) < 1e-9) << len;
-      // Always-on lights come first in Morton order.
+      // In Morton order point lights come before spot lights (the shader walks the
+      // lights below FirstSpot without the spot code), and always-on lights first among each.
+      const bool spot = p.CosCone != -2.0;
+      if (spot && !spotSeen)
+      {
+        firstSpot = static_cast<std::size_t>(&p - prepared.Lights.data());
+        spotSeen = true;
+        finiteSeen = false;
+      }
       if (options.MortonOrder)
       {
+        ASSERT_FALSE(spotSeen && !spot) << "point light after a spot light";
         ASSERT_FALSE(finiteSeen && std::isinf(p.Radius)) << "always-on light after a finite one";
       }
       finiteSeen = finiteSeen || !std::isinf(p.Radius);
@@ -344,6 +354,7 @@ TEST(Fuzz, PrepareLightsKeepsOrRejectsEveryLightAndPreparesOnlyFiniteData)
     EXPECT_EQ(prepared.NumberOfAlwaysOn, alwaysOn);
     EXPECT_EQ(prepared.NumberOfBelowCutoff, below);
     EXPECT_EQ(prepared.NumberOfSpots, spots);
+    EXPECT_EQ(prepared.FirstSpot, firstSpot);
     for (const std::string& problem : prepared.Problems)
     {
       ASSERT_NE(problem.find("skipped"), std::string::npos) << problem;

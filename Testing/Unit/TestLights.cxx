@@ -132,6 +132,35 @@ TEST(LightPreparation, AlwaysOnLightsComeFirstAndEveryValidLightIsKept)
   }
 }
 
+// Spot lights come after every point light in Morton order (the shader walks the lights
+// below FirstSpot without the spot code); without it the input order stays and FirstSpot
+// is the first spot light wherever it is; with no spot light FirstSpot is the count.
+TEST(LightPreparation, SpotLightsComeLastAndFirstSpotFindsThem)
+{
+  std::vector<LightSource> lights(90);
+  for (std::size_t i = 0; i < lights.size(); ++i)
+  {
+    lights[i].PositionWC = glm::dvec3(std::sin(i * 1.7) * 10, std::cos(i * 0.3) * 10, 0.0);
+    lights[i].Attenuation = (i % 9 == 2) ? glm::dvec3(1, 0, 0) : glm::dvec3(1, 0, 0.2);
+    lights[i].ConeAngle = (i % 4 == 1) ? 30.0 : 180.0;
+    lights[i].DirectionWC = glm::dvec3(0, 0, -1);
+  }
+  const PreparedLights morton = PrepareLights(lights, LightPreparationOptions());
+  ASSERT_EQ(morton.Lights.size(), lights.size());
+  EXPECT_EQ(morton.NumberOfSpots, 23u);
+  EXPECT_EQ(morton.FirstSpot, lights.size() - 23u);
+  for (std::size_t i = 0; i < morton.Lights.size(); ++i)
+  {
+    EXPECT_EQ(morton.Lights[i].IsSpot(), i >= morton.FirstSpot) << i;
+  }
+  // Always-on lights first among the spot lights too (sources 2 and 11 ... are always-on).
+  EXPECT_TRUE(std::isinf(morton.Lights[morton.FirstSpot].Radius));
+  const PreparedLights input = PrepareLights(lights, LightPreparationOptions{ 1e-3, false });
+  EXPECT_EQ(input.FirstSpot, 1u);
+  lights.resize(1);
+  EXPECT_EQ(PrepareLights(lights, LightPreparationOptions()).FirstSpot, 1u);
+}
+
 TEST(LightPreparation, SpotParametersFollowVTKConventions)
 {
   LightSource spot;

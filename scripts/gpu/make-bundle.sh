@@ -59,8 +59,15 @@ echo "$root" > "$out/root.txt"
 import json, shlex, sys
 tests = json.load(sys.stdin)["tests"]
 print("#!/bin/bash")
-print("mkdir -p /tmp/gpu-tests " + shlex.quote(sys.argv[1] + "/Testing/Temporary"))
-print("pass=0; fail=0")
+print("# TEST_JOBS (default 1): how many tests run at once (each makes its own window)")
+print("jobs_max=${TEST_JOBS:-1}")
+print("rm -rf /tmp/gpu-tests; mkdir -p /tmp/gpu-tests " + shlex.quote(sys.argv[1] + "/Testing/Temporary"))
+print("t() { # t NAME DIR COMMAND...: one test in the background, its log and result in /tmp/gpu-tests")
+print("  local name=$1 dir=$2; shift 2")
+print("  (mkdir -p \"$dir\" && cd \"$dir\" && s=$(date +%s%N) && timeout 120 \"$@\" > \"/tmp/gpu-tests/$name.log\" 2>&1")
+print("   rc=$?; echo \"$name rc=$rc $(( ($(date +%s%N) - s) / 1000000 )) ms\" | tee \"/tmp/gpu-tests/$name.rc\") &")
+print("  while [ \"$(jobs -rp | wc -l)\" -ge \"$jobs_max\" ]; do wait -n; done")
+print("}")
 for t in tests:
     command = t.get("command") or []
     if not command or not ("vtkRenderingClusteredCxxTests" in command[0] or t["name"] == "Example.ManyLights"):
@@ -68,10 +75,9 @@ for t in tests:
     wd = [p["value"] for p in t.get("properties", []) if p["name"] == "WORKING_DIRECTORY"]
     wd = wd[0] if wd else "."
     name = t["name"].split("-")[-1]
-    print(f"mkdir -p {shlex.quote(wd)}; cd {shlex.quote(wd)}")
-    print(f"s=$(date +%s%N); timeout 120 {shlex.join(command)} > /tmp/gpu-tests/{name}.log 2>&1; rc=$?")
-    print(f"echo \"{name} rc=$rc $(( ($(date +%s%N) - s) / 1000000 )) ms\"")
-    print("[ $rc = 0 ] && pass=$((pass + 1)) || fail=$((fail + 1))")
+    print(f"t {shlex.quote(name)} {shlex.quote(wd)} {shlex.join(command)}")
+print("wait")
+print("pass=$(grep -l \" rc=0 \" /tmp/gpu-tests/*.rc | wc -l); fail=$(grep -L \" rc=0 \" /tmp/gpu-tests/*.rc | wc -l)")
 print("echo \"GL tests: $pass passed, $fail failed\"")
 ' "$build" > "$out/tests.sh"
 du -sh "$out"

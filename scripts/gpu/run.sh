@@ -5,7 +5,7 @@
 # benchmark. Writes tests.txt, test-logs.tgz, bench.log and bench.tgz to $OUT (default
 # ./gpu-out). Run as root (it unpacks libglvnd and Xvfb's files into /).
 # Environment: VARIANTS (names of library variants, see the end), REQUIRE_GPU=0 runs on whatever renders (to try the harness without a GPU), BENCH_S (seconds the benchmark may run, default 280; it prints each row as
-# it is measured), BENCH_ARGS (e.g. --filter REGEX), TESTS=0 to skip the tests.
+# it is measured), BENCH_ARGS (e.g. --filter REGEX), TESTS=0 to skip the tests, TEST_JOBS (tests run at once, default 1).
 set -uo pipefail
 here="$PWD"
 out="${OUT:-$here/gpu-out}"

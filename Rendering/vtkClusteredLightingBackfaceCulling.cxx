@@ -13,6 +13,7 @@
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
 #include "vtkRenderState.h"
+#include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtk_glew.h"
 
@@ -73,7 +74,12 @@ void vtkClusteredLightingBackfaceCulling::BeginFrame(
 {
   this->SetActive(false);
   this->Faces.clear();
-  ++this->Renders;
+  vtkRenderer* ren = s->GetRenderer();
+  vtkCamera* camera = ren->GetActiveCamera();
+  vtkRenderWindow* window = ren->GetRenderWindow();
+  const bool stereo = window && window->GetStereoRender();
+  this->CurrentView = View(ren, stereo ? camera->GetLeftEye() : 1);
+  this->CurrentViewRender = ++this->ViewRenders[this->CurrentView];
   // Forget polydata that were deleted (their address may come back).
   for (auto it = this->Closures.begin(); it != this->Closures.end();)
   {
@@ -84,8 +90,6 @@ void vtkClusteredLightingBackfaceCulling::BeginFrame(
   {
     return;
   }
-  vtkRenderer* ren = s->GetRenderer();
-  vtkCamera* camera = ren->GetActiveCamera();
   this->ClipFromWorld =
     ToGlm(camera->GetCompositeProjectionTransformMatrix(ren->GetTiledAspectRatio(), -1.0, 1.0)
             ->GetData());
@@ -123,26 +127,34 @@ const vtkClusteredLighting::SurfaceClosure& vtkClusteredLightingBackfaceCulling:
   CachedClosure& cached = this->Closures[data];
   const vtkMTimeType time = data->GetMTime();
   const bool known = cached.Data == data;
-  if (known && cached.Time == time && cached.Tested)
+  const bool firstView = known && cached.ChangedIn == this->CurrentView;
+  if (known && cached.Time == time)
   {
-    return cached.Closure;
+    // A version seen before: tested, or left untested as animated until the view that
+    // first saw it renders it again unchanged (other views take its decision).
+    if (cached.Tested || !firstView || cached.ChangedAt == this->CurrentViewRender)
+    {
+      return cached.Closure;
+    }
   }
-  const bool changedAgain = known && cached.Time != time && cached.ChangedAt + 1 == this->Renders;
-  if (!known || cached.Time != time)
+  else
   {
-    cached.ChangedAt = this->Renders;
+    // A new version: modified again in the next render of the view that first saw the
+    // last one (an animated mesh), it is not tested, and not culled.
+    const bool changedAgain = firstView && cached.ChangedAt + 1 == this->CurrentViewRender;
+    cached.Data = data;
+    cached.Time = time;
+    cached.ChangedIn = this->CurrentView;
+    cached.ChangedAt = this->CurrentViewRender;
+    if (changedAgain)
+    {
+      cached.Tested = false;
+      cached.Closure = vtkClusteredLighting::SurfaceClosure();
+      cached.Closure.Reason = "modified in consecutive renders";
+      return cached.Closure;
+    }
   }
-  cached.Data = data;
-  cached.Time = time;
-  cached.Tested = !changedAgain;
-  if (changedAgain)
-  {
-    // Modified in consecutive renders (an animated mesh): not tested, not culled, until a
-    // render in which it stays unchanged.
-    cached.Closure = vtkClusteredLighting::SurfaceClosure();
-    cached.Closure.Reason = "modified in consecutive renders";
-    return cached.Closure;
-  }
+  cached.Tested = true;
 
   vtkDataArray* coordinates = data->GetPoints()->GetData();
   const vtkIdType n = coordinates->GetNumberOfTuples();

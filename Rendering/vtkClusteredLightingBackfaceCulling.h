@@ -22,7 +22,11 @@
  *     some), and is closed with one orientation (ComputeSurfaceClosure, about 0.2 s for a
  *     million triangles, cached per polydata until it is modified; a polydata modified in
  *     consecutive renders, an animated mesh, is not tested, and not culled, until a render
- *     in which it stays unchanged);
+ *     in which it stays unchanged). Renders count per view, a renderer and an eye: a pass
+ *     shared by several renderers, or a stereo pair's two eyes, renders a frame in several
+ *     views, and a mesh modified once per frame is then modified in consecutive renders
+ *     of the view that first sees each version; the other views take that view's
+ *     decision for the version;
  *   - its bounding box lies beyond the near plane (IsBoxBeyondNearPlane, with the camera
  *     of this render: each eye of a stereo pair decides for itself).
  * The face culled follows from the orientation and the determinant of the map from model
@@ -44,7 +48,9 @@
 #include "vtkType.h"                           // for vtkMTimeType
 #include "vtkWeakPointer.h"                    // for vtkWeakPointer
 
+#include <map>           // for std::map
 #include <unordered_map> // for std::unordered_map
+#include <utility>       // for std::pair
 
 class vtkOpenGLState;
 class vtkPolyData;
@@ -81,12 +87,15 @@ private:
   /// The closure of `data`, computed once per modification.
   const vtkClusteredLighting::SurfaceClosure& GetClosure(vtkPolyData* data);
 
+  /// A view: a renderer and an eye (1 left or mono, 0 right).
+  using View = std::pair<const void*, int>;
   struct CachedClosure
   {
     vtkWeakPointer<vtkPolyData> Data;
     vtkMTimeType Time = 0;            ///< the polydata's MTime when last seen
-    unsigned long long ChangedAt = 0; ///< the render in which it was last seen changed
-    bool Tested = false;              ///< Closure is the test of that version
+    View ChangedIn;                   ///< the view that first saw this version
+    unsigned long long ChangedAt = 0; ///< that view's render (ViewRenders) in which it did
+    bool Tested = false;              ///< Closure is the test of this version
     vtkClusteredLighting::SurfaceClosure Closure;
   };
   std::unordered_map<vtkPolyData*, CachedClosure> Closures;
@@ -94,7 +103,9 @@ private:
   std::unordered_map<vtkProp*, int> Faces; ///< this render's props and their culled faces
   glm::dmat4 ClipFromWorld{ 1.0 };         ///< this render's camera
   vtkOpenGLState* State = nullptr;
-  unsigned long long Renders = 0; ///< BeginFrame calls
+  std::map<View, unsigned long long> ViewRenders; ///< BeginFrame calls per view
+  View CurrentView;                               ///< this render's view
+  unsigned long long CurrentViewRender = 0;       ///< its count in ViewRenders
   bool Active = false;
   bool Culled = false; ///< a draw enabled culling since SetActive(true)
 };

@@ -219,7 +219,15 @@ void vtkClusteredLightingBackfaceCulling::Apply(vtkProp* prop)
   {
     return;
   }
-  const int face = this->GetFace(prop);
+  int face = this->GetFace(prop);
+  if (face != 0 && vtkClusteredLightingHasShaderCode(vtkActor::SafeDownCast(prop)))
+  {
+    // Shader code that appeared after the decision: a mapper moves VTK 9.0's deprecated
+    // per-mapper replacements to its actor when it builds its shaders, at the draw, and
+    // the prepass's reuse signature decides before any draw. Not culled from here on.
+    face = 0;
+    this->Faces[prop] = 0;
+  }
   if (face != 0)
   {
     this->State->vtkglCullFace(face > 0 ? GL_BACK : GL_FRONT);

@@ -15,7 +15,9 @@
  *   - a plain vtkActor (vtkOpenGLActor: not a follower, LOD or assembly part) drawn by a
  *     plain vtkPolyDataMapper (vtkOpenGLPolyDataMapper: not composite, glyph or impostor
  *     mappers), with no clipping planes and no shader code or replacements of its own
- *     (which may move vertices or discard fragments);
+ *     (which may move vertices or discard fragments; checked again at each draw, because
+ *     a mapper moves VTK 9.0's deprecated per-mapper replacements to its actor's shader
+ *     property only when it builds its shaders);
  *   - opaque (no translucent geometry), drawn as a surface, without textures, and with
  *     neither of vtkProperty's own face cullings;
  *   - its polydata has polygons, no triangle strips and no ghost cells (the mapper hides

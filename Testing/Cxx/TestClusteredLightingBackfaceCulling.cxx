@@ -7,7 +7,8 @@
 //    (outward, inward, mirrored by a negative scale; followed by an image slice seen from
 //    behind, which must not be culled with it) and a cube whose faces have points of their
 //    own; not an open sphere, a translucent or wireframe ball, a ball of triangle
-//    strips, one with clipping planes, one with VTK's own culling, one that the near plane
+//    strips, one with clipping planes, one whose mapper discards fragments (VTK 9.0's
+//    deprecated per-mapper replacement), one with VTK's own culling, one that the near plane
 //    cuts, or a sphere around the camera;
 //  - that the image is the one with the option off: no pixel off by more than one step,
 //    except at most a few at the rim, where a back face and a front face meet at one
@@ -30,9 +31,11 @@
 #include "vtkImageActor.h"
 #include "vtkImageData.h"
 #include "vtkImageMapper3D.h"
+#include "vtkOpenGLPolyDataMapper.h"
 #include "vtkPlane.h"
 #include "vtkProperty.h"
 #include "vtkReverseSense.h"
+#include "vtkShader.h"
 #include "vtkSphereSource.h"
 #include "vtkStripper.h"
 #include "vtk_glew.h"
@@ -220,6 +223,24 @@ int TestClusteredLightingBackfaceCulling(int, char*[])
         plane->SetOrigin(0.0, 0.2, 0.0);
         plane->SetNormal(0.3, -1.0, 0.2);
         ball->GetMapper()->AddClippingPlane(plane);
+      } },
+    { "ball whose mapper discards its near half (VTK 9.0's deprecated per-mapper replacement)", 0,
+      0.0,
+      [](vtkRenderer*, vtkActor* ball, vtkSphereSource*)
+      {
+  // VTK moves a mapper's own replacements to the actor's shader property when it
+  // builds the shaders. The ball's centre is about 7.45 from the eye: its far half,
+  // seen from inside, shows where the near half is discarded, unless it is culled.
+#if defined(__GNUC__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wdeprecated-declarations"
+#endif
+        vtkOpenGLPolyDataMapper::SafeDownCast(ball->GetMapper())
+          ->AddShaderReplacement(vtkShader::Fragment, "//VTK::Clip::Impl", true,
+            "//VTK::Clip::Impl\n  if (vertexVC.z > -7.45) { discard; }\n", false);
+#if defined(__GNUC__)
+#pragma GCC diagnostic pop
+#endif
       } },
     { "ball with VTK's own back-face culling", 0, 0.0,
       [](vtkRenderer*, vtkActor* ball, vtkSphereSource*)

@@ -3,7 +3,8 @@
 # benchmark on a bare headless NVIDIA GPU machine (no X server, no VTK, no network):
 #   gl/            libglvnd's loaders (Debian packages, unpacked there)
 #   bundle.tar.xz  Debian's VTK and every other library the tests and the benchmark load,
-#                  Xvfb with its keymaps and Mesa's software GLX for Xvfb's own use
+#                  and Xvfb with its keymaps (started without its GLX extension: the shim
+#                  answers every GLX call on the client's side)
 #   libglx-over-egl.so, gl-info   (scripts/gpu/README.md)
 #   bunny.obj.xz   the benchmark's mesh; tests.sh   the GL tests' ctest command lines
 # Run it here after scripts/build.sh; then send the checkout with .gpu/ and the build's
@@ -15,7 +16,7 @@ out="$root/.gpu"
 rm -rf "$out" && mkdir -p "$out/gl"
 stage="$(mktemp -d)"
 trap 'rm -rf "$stage"' EXIT
-mkdir -p "$stage/lib" "$stage/bin" "$stage/dri"
+mkdir -p "$stage/lib" "$stage/bin"
 
 # libglvnd's loaders, as Debian packages (the GPU machine's driver brings the vendor side).
 (cd "$out/gl" && apt-get download libegl1 libglvnd0 libopengl0 libgl1 libglx0 libgles2 2>/dev/null)
@@ -25,25 +26,13 @@ mkdir -p "$stage/lib" "$stage/bin" "$stage/dri"
 # copy here would go first on the library path there, and a stale one crashes the
 # programs built with a newer header).
 programs=("$build/bin/vtkRenderingClusteredCxxTests" "$build/Examples/ManyLights"
-  "$build/Testing/Benchmark/ClusteredLightingBenchmark" /usr/bin/Xvfb /usr/bin/xkbcomp
-  /usr/lib/x86_64-linux-gnu/dri/swrast_dri.so)
+  "$build/Testing/Benchmark/ClusteredLightingBenchmark" /usr/bin/Xvfb /usr/bin/xkbcomp)
 skip='^(libvtkRenderingClustered|libc|libm|libdl|libpthread|librt|ld-linux-x86-64|libstdc\+\+|libgcc_s|libGL|libGLX|libGLdispatch|libOpenGL|libEGL|libGLESv2)\.so'
 for p in "${programs[@]}"; do ldd "$p" | awk '$3 ~ /^\// { print $3 }'; done | sort -u |
   while read -r lib; do
     basename "$lib" | grep -Eq "$skip" || cp -L "$lib" "$stage/lib/"
   done
-# Xvfb's GLX loads Mesa's software driver, which links LLVM, which links Z3 and ICU's
-# data (30 MB together) for features Xvfb never calls: stubs keep the bundle under the
-# GPU machine's 64 MiB transfer limit.
-nm -D --undefined-only "$stage/lib/libLLVM-15.so.1" | awk '$2 ~ /^Z3_/ { print $2 }' |
-  sed 's/@.*//' | sort -u | awk 'BEGIN { print "#include <stdlib.h>" } { print "void " $1 "(void) { abort(); }" }' \
-  > "$stage/z3.c"
-gcc -shared -fPIC -o "$stage/lib/libz3.so.4" -Wl,-soname,libz3.so.4 "$stage/z3.c"
-echo 'const char icudt72_dat[4096] = { 0 };' > "$stage/icu.c"
-gcc -shared -fPIC -o "$stage/lib/libicudata.so.72" -Wl,-soname,libicudata.so.72 "$stage/icu.c"
-rm -f "$stage/z3.c" "$stage/icu.c"
 cp /usr/bin/Xvfb /usr/bin/xkbcomp "$stage/bin/"
-cp /usr/lib/x86_64-linux-gnu/dri/swrast_dri.so "$stage/dri/"
 cp -r /usr/share/X11/xkb "$stage/xkb"
 tar -C "$stage" -cf - . | xz -T0 -6 > "$out/bundle.tar.xz"
 

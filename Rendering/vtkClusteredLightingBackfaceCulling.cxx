@@ -66,6 +66,66 @@ vtkPolyData* GetPlainOpaqueSurface(vtkActor* actor)
   }
   return data;
 }
+
+/// The map from world to clip coordinates of `ren`'s active camera.
+glm::dmat4 ClipFromWorldOf(vtkRenderer* ren)
+{
+  return ToGlm(ren->GetActiveCamera()
+                 ->GetCompositeProjectionTransformMatrix(ren->GetTiledAspectRatio(), -1.0, 1.0)
+                 ->GetData());
+}
+
+/// The face `actor`'s draws may cull (+1 GL_BACK, -1 GL_FRONT, 0 none) under the camera
+/// `clipFromWorld`, with `closureOf(polydata)` giving its surface's closure: the class's
+/// rules.
+template <typename ClosureOf>
+int DecideFace(vtkActor* actor, const glm::dmat4& clipFromWorld, ClosureOf&& closureOf)
+{
+  vtkPolyData* data = actor ? GetPlainOpaqueSurface(actor) : nullptr;
+  if (!data)
+  {
+    return 0;
+  }
+  const glm::dmat4 clipFromModel = clipFromWorld * ToGlm(actor->GetMatrix()->GetData());
+  if (!vtkClusteredLighting::IsBoxBeyondNearPlane(clipFromModel, data->GetBounds()))
+  {
+    return 0;
+  }
+  const vtkClusteredLighting::SurfaceClosure& closure = closureOf(data);
+  return closure.Closed
+    ? vtkClusteredLighting::ChooseCulledFace(closure.Orientation, glm::determinant(clipFromModel))
+    : 0;
+}
+}
+
+//------------------------------------------------------------------------------
+vtkClusteredLighting::SurfaceClosure vtkClusteredLightingComputeSurfaceClosure(vtkPolyData* data)
+{
+  if (!data || !data->GetPoints() || !data->GetPolys())
+  {
+    return vtkClusteredLighting::SurfaceClosure();
+  }
+  vtkDataArray* coordinates = data->GetPoints()->GetData();
+  const vtkIdType n = coordinates->GetNumberOfTuples();
+  std::vector<double> points(static_cast<std::size_t>(3 * n));
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    coordinates->GetTuple(i, points.data() + 3 * i);
+  }
+  std::vector<std::int64_t> offsets{ 0 };
+  std::vector<std::int64_t> connectivity;
+  offsets.reserve(static_cast<std::size_t>(data->GetNumberOfPolys() + 1));
+  connectivity.reserve(static_cast<std::size_t>(data->GetPolys()->GetNumberOfConnectivityIds()));
+  vtkCellArray* polys = data->GetPolys();
+  vtkIdType size = 0;
+  const vtkIdType* ids = nullptr;
+  for (polys->InitTraversal(); polys->GetNextCell(size, ids);)
+  {
+    connectivity.insert(connectivity.end(), ids, ids + size);
+    offsets.push_back(static_cast<std::int64_t>(connectivity.size()));
+  }
+  return vtkClusteredLighting::ComputeSurfaceClosure(points.data(), n, offsets.data(),
+    connectivity.data(), static_cast<std::int64_t>(offsets.size()) - 1);
 }
 
 //------------------------------------------------------------------------------
@@ -90,9 +150,7 @@ void vtkClusteredLightingBackfaceCulling::BeginFrame(
   {
     return;
   }
-  this->ClipFromWorld =
-    ToGlm(camera->GetCompositeProjectionTransformMatrix(ren->GetTiledAspectRatio(), -1.0, 1.0)
-            ->GetData());
+  this->ClipFromWorld = ClipFromWorldOf(ren);
   // Decided at each prop's first draw, when its mapper has brought its input up to date.
   for (int i = 0; i < s->GetPropArrayCount(); ++i)
   {
@@ -103,21 +161,25 @@ void vtkClusteredLightingBackfaceCulling::BeginFrame(
 //------------------------------------------------------------------------------
 int vtkClusteredLightingBackfaceCulling::Decide(vtkProp* prop)
 {
-  vtkActor* actor = vtkActor::SafeDownCast(prop);
-  vtkPolyData* data = actor ? GetPlainOpaqueSurface(actor) : nullptr;
-  if (!data)
+  return DecideFace(vtkActor::SafeDownCast(prop), this->ClipFromWorld,
+    [this](vtkPolyData* data) -> const vtkClusteredLighting::SurfaceClosure&
+    { return this->GetClosure(data); });
+}
+
+//------------------------------------------------------------------------------
+int vtkClusteredLightingChooseCulledFace(vtkActor* actor, vtkRenderer* ren)
+{
+  if (!actor || !ren || !ren->GetActiveCamera())
   {
     return 0;
   }
-  const glm::dmat4 clipFromModel = this->ClipFromWorld * ToGlm(actor->GetMatrix()->GetData());
-  if (!vtkClusteredLighting::IsBoxBeyondNearPlane(clipFromModel, data->GetBounds()))
-  {
-    return 0;
-  }
-  const vtkClusteredLighting::SurfaceClosure& closure = this->GetClosure(data);
-  return closure.Closed
-    ? vtkClusteredLighting::ChooseCulledFace(closure.Orientation, glm::determinant(clipFromModel))
-    : 0;
+  vtkClusteredLighting::SurfaceClosure closure;
+  return DecideFace(actor, ClipFromWorldOf(ren),
+    [&closure](vtkPolyData* data) -> const vtkClusteredLighting::SurfaceClosure&
+    {
+      closure = vtkClusteredLightingComputeSurfaceClosure(data);
+      return closure;
+    });
 }
 
 //------------------------------------------------------------------------------
@@ -156,27 +218,7 @@ const vtkClusteredLighting::SurfaceClosure& vtkClusteredLightingBackfaceCulling:
   }
   cached.Tested = true;
 
-  vtkDataArray* coordinates = data->GetPoints()->GetData();
-  const vtkIdType n = coordinates->GetNumberOfTuples();
-  std::vector<double> points(static_cast<std::size_t>(3 * n));
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    coordinates->GetTuple(i, points.data() + 3 * i);
-  }
-  std::vector<std::int64_t> offsets{ 0 };
-  std::vector<std::int64_t> connectivity;
-  offsets.reserve(static_cast<std::size_t>(data->GetNumberOfPolys() + 1));
-  connectivity.reserve(static_cast<std::size_t>(data->GetPolys()->GetNumberOfConnectivityIds()));
-  vtkCellArray* polys = data->GetPolys();
-  vtkIdType size = 0;
-  const vtkIdType* ids = nullptr;
-  for (polys->InitTraversal(); polys->GetNextCell(size, ids);)
-  {
-    connectivity.insert(connectivity.end(), ids, ids + size);
-    offsets.push_back(static_cast<std::int64_t>(connectivity.size()));
-  }
-  cached.Closure = vtkClusteredLighting::ComputeSurfaceClosure(points.data(), n, offsets.data(),
-    connectivity.data(), static_cast<std::int64_t>(offsets.size()) - 1);
+  cached.Closure = vtkClusteredLightingComputeSurfaceClosure(data);
   return cached.Closure;
 }
 

@@ -54,10 +54,21 @@
 #include <unordered_map> // for std::unordered_map
 #include <utility>       // for std::pair
 
+class vtkActor;
 class vtkOpenGLState;
 class vtkPolyData;
 class vtkProp;
 class vtkRenderState;
+class vtkRenderer;
+
+/// The closure of `data`'s polygons (ComputeSurfaceClosure; strips and other cells are
+/// not read), computed now.
+vtkClusteredLighting::SurfaceClosure vtkClusteredLightingComputeSurfaceClosure(vtkPolyData* data);
+
+/// The face the pass would cull in `actor`'s draws under `ren`'s active camera now (+1
+/// GL_BACK, -1 GL_FRONT, 0 none), by the class's rules, its closure computed now (not
+/// cached): for the benchmark's stock VTK rows with the same faces culled by hand.
+int vtkClusteredLightingChooseCulledFace(vtkActor* actor, vtkRenderer* ren);
 
 class vtkClusteredLightingBackfaceCulling
 {

@@ -5,10 +5,12 @@
 
 #include "vtkActor.h"
 #include "vtkActorCollection.h"
+#include "vtkClusteredLightingBackfaceCulling.h"
 #include "vtkMapper.h"
 #include "vtkPolyData.h"
 #include "vtkProperty.h"
 #include "vtkRenderer.h"
+#include "vtkSmartPointer.h"
 
 #include <array>
 #include <cstdio>
@@ -75,28 +77,27 @@ void SwitchSpecular(Context& ctx, bool off)
   }
 }
 
-/// VTK's own back-face culling on the scene's largest mesh (the bunny: closed, its
-/// normals out) and off again: stock VTK with the culling a user who knows the mesh sets
-/// by hand, beside the pass's AutomaticBackfaceCulling.
-void SwitchLargestMeshCulling(Context& ctx, bool on)
+/// VTK's own face culling set by hand on the actors whose faces the pass's
+/// AutomaticBackfaceCulling culls (vtkClusteredLightingChooseCulledFace: its rules, under
+/// the camera of the row's setup): stock VTK with the culling a user who knows the
+/// meshes sets, beside the pass. Returns the actors culled, to switch back.
+std::vector<vtkSmartPointer<vtkActor>> CullClosedMeshesByHand(Context& ctx)
 {
-  vtkActorCollection* actors = ctx.GetRenderer()->GetActors();
+  std::vector<vtkSmartPointer<vtkActor>> culled;
+  vtkRenderer* ren = ctx.GetRenderer();
+  vtkActorCollection* actors = ren->GetActors();
   actors->InitTraversal();
-  vtkActor* largest = nullptr;
-  vtkIdType most = -1;
   while (vtkActor* a = actors->GetNextActor())
   {
-    vtkPolyData* pd = vtkPolyData::SafeDownCast(a->GetMapper()->GetInputDataObject(0, 0));
-    if (pd && pd->GetNumberOfPolys() > most)
+    const int face = vtkClusteredLightingChooseCulledFace(a, ren);
+    if (face != 0)
     {
-      most = pd->GetNumberOfPolys();
-      largest = a;
+      (face > 0 ? a->GetProperty()->BackfaceCullingOn() : a->GetProperty()->FrontfaceCullingOn());
+      culled.emplace_back(a);
     }
   }
-  if (largest)
-  {
-    largest->GetProperty()->SetBackfaceCulling(on);
-  }
+  std::printf("culled by hand: %zu of %d actors\n", culled.size(), actors->GetNumberOfItems());
+  return culled;
 }
 
 /// Every actor forced opaque, and back (a step that changes the scene).
@@ -429,9 +430,10 @@ std::vector<Step> MakePlan(const PlanOptions& options)
       s.Note = "first frame compiles VTK's unrolled per-light shader";
       plan.push_back(s);
     }
-    // Stock VTK with the bunny's back faces culled by hand (vtkProperty::BackfaceCulling),
-    // as the pass culls them itself: the same images, beside the rows above.
-    for (int n : main && !quick ? std::vector<int>{ 1, 8 } : std::vector<int>{})
+    // Stock VTK with the closed meshes' hidden faces culled by hand (vtkProperty's
+    // culling), as the pass culls them itself: the same images, beside the rows above (on
+    // every scene: the Floors table takes its base frame from them).
+    for (int n : !quick ? std::vector<int>{ 1, 8 } : std::vector<int>{})
     {
       Step s = base;
       s.Lights = n;
@@ -441,8 +443,17 @@ std::vector<Step> MakePlan(const PlanOptions& options)
       s.Frames = F;
       s.Counts = false;
       s.Reference = false;
-      s.Setup = [](Context& ctx) { SwitchLargestMeshCulling(ctx, true); };
-      s.Teardown = [](Context& ctx) { SwitchLargestMeshCulling(ctx, false); };
+      auto culled = std::make_shared<std::vector<vtkSmartPointer<vtkActor>>>();
+      s.Setup = [culled](Context& ctx) { *culled = CullClosedMeshesByHand(ctx); };
+      s.Teardown = [culled](Context&)
+      {
+        for (vtkActor* a : *culled)
+        {
+          a->GetProperty()->BackfaceCullingOff();
+          a->GetProperty()->FrontfaceCullingOff();
+        }
+        culled->clear();
+      };
       plan.push_back(s);
     }
 

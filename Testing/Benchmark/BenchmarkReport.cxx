@@ -260,7 +260,7 @@ void WriteCSV(const std::vector<Row>& rows, const std::string& path)
 // pixel). The default frame is then split into that floor and what it pays above it.
 // The pass culls the hidden faces of closed surfaces (AutomaticBackfaceCulling), and so
 // does brute force: where the run has stock VTK with them culled by hand (the `culling`
-// row of the main scene), that is the base frame, the same geometry the pass draws.
+// row of each scene), that is the base frame, the same geometry the pass draws.
 static void WriteFloors(const std::vector<Row>& rows, std::ostream& out)
 {
   auto find = [&rows](const std::string& scene, int lights, const std::string& method,

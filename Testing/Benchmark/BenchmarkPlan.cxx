@@ -92,7 +92,14 @@ std::vector<vtkSmartPointer<vtkActor>> CullClosedMeshesByHand(Context& ctx)
     const int face = vtkClusteredLightingChooseCulledFace(a, ren);
     if (face != 0)
     {
-      (face > 0 ? a->GetProperty()->BackfaceCullingOn() : a->GetProperty()->FrontfaceCullingOn());
+      if (face > 0)
+      {
+        a->GetProperty()->BackfaceCullingOn();
+      }
+      else
+      {
+        a->GetProperty()->FrontfaceCullingOn();
+      }
       culled.emplace_back(a);
     }
   }

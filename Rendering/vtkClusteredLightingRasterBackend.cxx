@@ -73,6 +73,7 @@ void vtkClusteredLightingRasterBackend::ReleaseGraphicsResources(vtkWindow* w)
   vtkClusteredLightingReleaseObject(this->List, w);
   vtkClusteredLightingReleaseObject(this->Master, w);
   vtkClusteredLightingReleaseObject(this->ClusterDepths, w);
+  vtkClusteredLightingReleaseObject(this->ClusterRects, w);
   vtkClusteredLightingReleaseObject(this->FBO, w);
   this->VAO.Release(w);
   this->ListSize[0] = this->ListSize[1] = 0;
@@ -85,6 +86,7 @@ int vtkClusteredLightingRasterBackend::GetNumberOfGLObjects() const
   return this->Quads.GetNumberOfGLObjects() + ((this->List && this->List->GetHandle()) ? 1 : 0) +
     ((this->Master && this->Master->GetHandle()) ? 1 : 0) +
     ((this->ClusterDepths && this->ClusterDepths->GetHandle()) ? 1 : 0) +
+    ((this->ClusterRects && this->ClusterRects->GetHandle()) ? 1 : 0) +
     ((this->FBO && this->FBO->GetFBOIndex()) ? 1 : 0) + this->VAO.GetNumberOfGLObjects();
 }
 
@@ -92,7 +94,8 @@ void vtkClusteredLightingRasterBackend::GetGLObjectNames(
   std::vector<std::pair<unsigned int, unsigned int>>& names) const
 {
   this->Quads.GetGLObjectNames(names);
-  for (vtkTextureObject* tex : { this->List, this->Master, this->ClusterDepths })
+  for (vtkTextureObject* tex :
+    { this->List, this->Master, this->ClusterDepths, this->ClusterRects })
   {
     if (tex && tex->GetHandle())
     {
@@ -160,30 +163,40 @@ bool vtkClusteredLightingRasterBackend::Assign(vtkOpenGLRenderWindow* rw,
 }
 
 //------------------------------------------------------------------------------
-// Each cluster's depth interval as an RG32F texel (s * X + tx, ty).
+// Each cluster's depth interval as an RG32F texel (s * X + tx, ty), and its screen
+// rectangle as an RGBA32F texel of a second texture.
 bool vtkClusteredLightingRasterBackend::UploadClusterDepths(
   vtkOpenGLRenderWindow* rw, const ClusterDepthBounds& bounds)
 {
-  vtkTextureObject*& tex = this->ClusterDepths;
-  if (tex &&
-    (static_cast<int>(tex->GetWidth()) != bounds.Width ||
-      static_cast<int>(tex->GetHeight()) != bounds.Height))
+  if (bounds.Rects.size() != 2 * bounds.LoHi.size())
   {
-    vtkClusteredLightingReleaseObject(tex, rw);
+    return false;
   }
-  if (!tex)
+  auto upload = [&](vtkTextureObject*& tex, int components, const float* data)
   {
-    tex = NewTexelTexture(rw, bounds.Width, bounds.Height, GL_RG32F, GL_RG, GL_FLOAT, 2, VTK_FLOAT);
+    if (tex &&
+      (static_cast<int>(tex->GetWidth()) != bounds.Width ||
+        static_cast<int>(tex->GetHeight()) != bounds.Height))
+    {
+      vtkClusteredLightingReleaseObject(tex, rw);
+    }
+    const GLenum format = components == 2 ? GL_RG : GL_RGBA;
     if (!tex)
     {
-      return false;
+      tex = NewTexelTexture(rw, bounds.Width, bounds.Height,
+        components == 2 ? GL_RG32F : GL_RGBA32F, format, GL_FLOAT, components, VTK_FLOAT);
+      if (!tex)
+      {
+        return false;
+      }
     }
-  }
-  tex->Bind();
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-  glTexSubImage2D(
-    GL_TEXTURE_2D, 0, 0, 0, bounds.Width, bounds.Height, GL_RG, GL_FLOAT, bounds.LoHi.data());
-  return true;
+    tex->Bind();
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, bounds.Width, bounds.Height, format, GL_FLOAT, data);
+    return true;
+  };
+  return upload(this->ClusterDepths, 2, bounds.LoHi.data()) &&
+    upload(this->ClusterRects, 4, bounds.Rects.data());
 }
 
 //------------------------------------------------------------------------------
@@ -247,6 +260,11 @@ bool vtkClusteredLightingRasterBackend::RunListPass(vtkOpenGLRenderWindow* rw,
   {
     return false;
   }
+  if (depthAware)
+  {
+    this->ClusterRects->Activate();
+    program->SetUniformi("clClusterRects", this->ClusterRects->GetTextureUnit());
+  }
   vtkTextureObject* quads = this->Quads.GetTexture();
   quads->Activate();
   lightView->Activate();
@@ -279,6 +297,10 @@ bool vtkClusteredLightingRasterBackend::RunListPass(vtkOpenGLRenderWindow* rw,
   this->VAO.Unbind();
   lightView->Deactivate();
   quads->Deactivate();
+  if (depthAware)
+  {
+    this->ClusterRects->Deactivate();
+  }
   this->DeactivateDepths(depthAware);
   return true;
 }
@@ -320,6 +342,7 @@ bool vtkClusteredLightingRasterBackend::RunMasterPass(
 void vtkClusteredLightingRasterBackend::ReleaseDepthResources(vtkOpenGLRenderWindow* rw)
 {
   vtkClusteredLightingReleaseObject(this->ClusterDepths, rw);
+  vtkClusteredLightingReleaseObject(this->ClusterRects, rw);
 }
 
 //------------------------------------------------------------------------------

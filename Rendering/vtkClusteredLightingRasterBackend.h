@@ -86,6 +86,7 @@ private:
   vtkTextureObject* List = nullptr;
   vtkTextureObject* Master = nullptr;
   vtkTextureObject* ClusterDepths = nullptr; ///< RG32F, depth-aware clusters only
+  vtkTextureObject* ClusterRects = nullptr;  ///< RGBA32F, depth-aware clusters only
   vtkOpenGLFramebufferObject* FBO = nullptr;
   vtkClusteredLightingVertexArray VAO;
   int ListSize[2] = { 0, 0 };

@@ -12,8 +12,15 @@
  * Shading", HPG 2012: clusters from the actual samples). The list pass then tests each
  * light against the cluster's cell cut to that interval, and drops empty clusters.
  *
+ * Each cluster also records the screen rectangle its fragments cover (Rects, in the
+ * viewport's normalized device coordinates: the pixels it holds, each as its whole square
+ * grown by the same slack that made it count in the tile), so a cluster that the surface
+ * crosses in a corner or a band of its tile (a receding wall cut by the slices, an
+ * object's silhouette) is tested as that part of its tile only: the tight bounds of
+ * Olsson et al. in x and y as well as in depth.
+ *
  * Conservative by construction: every fragment the shading pass shades in cluster c has
- * a view depth inside c's interval.
+ * a view depth inside c's interval and a projected position inside c's rectangle.
  *  - A pixel's window depth w is read as the interval [w - m, w + m]: m covers the
  *    depth buffer's quantization (24 bits) and VTK's coincident-topology offsets (the
  *    mappers write gl_FragDepth = gl_FragCoord.z + cOffset / 65000; the pass reads the
@@ -168,9 +175,12 @@ struct DepthImage
 struct ClusterDepthBounds
 {
   bool Valid = false;
-  int Width = 0;            ///< TilesX * Slices
-  int Height = 0;           ///< TilesY
-  std::vector<float> LoHi;  ///< 2 floats per texel; an empty cluster has lo > hi
+  int Width = 0;           ///< TilesX * Slices
+  int Height = 0;          ///< TilesY
+  std::vector<float> LoHi; ///< 2 floats per texel; an empty cluster has lo > hi
+  /// 4 floats per texel: the NDC rectangle (x0, y0, x1, y1) of the cluster's fragments
+  /// (x0 > x1 when empty; the whole plane where any fragment of the tile may count).
+  std::vector<float> Rects;
   double VisibleNear = 0.0; ///< nearest opaque depth (0 when none is visible)
   double VisibleFar = 0.0;  ///< deepest opaque depth
   std::size_t VisiblePixels = 0;
@@ -179,7 +189,7 @@ struct ClusterDepthBounds
   bool operator==(const ClusterDepthBounds& o) const
   {
     return this->Valid == o.Valid && this->Width == o.Width && this->Height == o.Height &&
-      this->LoHi == o.LoHi;
+      this->LoHi == o.LoHi && this->Rects == o.Rects;
   }
   bool operator!=(const ClusterDepthBounds& o) const { return !(*this == o); }
 
@@ -191,6 +201,25 @@ struct ClusterDepthBounds
     lo = this->LoHi[2 * t];
     hi = this->LoHi[2 * t + 1];
     return lo <= hi;
+  }
+
+  /// NDC rectangle (x0, y0, x1, y1) of cluster (tx, ty, s): false when it holds no
+  /// fragment (or has no rectangles).
+  bool GetRect(int tx, int ty, int s, int tilesX, double rect[4]) const
+  {
+    const std::size_t t =
+      static_cast<std::size_t>(ty) * this->Width + static_cast<std::size_t>(s) * tilesX + tx;
+    rect[0] = rect[1] = 1.0;
+    rect[2] = rect[3] = -1.0;
+    if (4 * t + 3 >= this->Rects.size())
+    {
+      return false;
+    }
+    for (int i = 0; i < 4; ++i)
+    {
+      rect[i] = this->Rects[4 * t + i];
+    }
+    return rect[0] <= rect[2] && rect[1] <= rect[3];
   }
 };
 
@@ -304,7 +333,46 @@ inline void InitializeClusterDepthBounds(const ClusterGridParams& grid, ClusterD
     out.LoHi[t] = std::numeric_limits<float>::max();
     out.LoHi[t + 1] = -std::numeric_limits<float>::max();
   }
+  out.Rects.assign(4 * static_cast<std::size_t>(out.Width) * out.Height, 0.0f);
+  for (std::size_t t = 0; t < out.Rects.size(); t += 4)
+  {
+    out.Rects[t] = out.Rects[t + 1] = std::numeric_limits<float>::max();
+    out.Rects[t + 2] = out.Rects[t + 3] = -std::numeric_limits<float>::max();
+  }
 }
+
+namespace Detail
+{
+/**
+ * For each of `pixels` pixels along one axis, the NDC interval (lo, hi) its fragments'
+ * projected positions lie in: its square, grown by the reach that counts it in a tile
+ * (`slack` tiles plus `pixelSlack` pixels, as ComputePixelTiles), rounded outward to
+ * float. Never narrower than what made the pixel count in a tile, so the interval meets
+ * every tile the pixel counts in. A reach that is not finite gives the whole line.
+ */
+inline std::vector<float> ComputePixelExtents(
+  int pixels, int tiles, double slack, double pixelSlack)
+{
+  std::vector<float> out(2 * static_cast<std::size_t>(pixels));
+  const double reach =
+    0.5 + slack * pixels / tiles + (pixelSlack > 0.0 || std::isnan(pixelSlack) ? pixelSlack : 0.0);
+  const float inf = std::numeric_limits<float>::max();
+  for (int p = 0; p < pixels; ++p)
+  {
+    if (!std::isfinite(reach))
+    {
+      out[2 * static_cast<std::size_t>(p)] = -inf;
+      out[2 * static_cast<std::size_t>(p) + 1] = inf;
+      continue;
+    }
+    const double lo = 2.0 * (p + 0.5 - reach) / pixels - 1.0;
+    const double hi = 2.0 * (p + 0.5 + reach) / pixels - 1.0;
+    out[2 * static_cast<std::size_t>(p)] = std::nextafter(static_cast<float>(lo), -inf);
+    out[2 * static_cast<std::size_t>(p) + 1] = std::nextafter(static_cast<float>(hi), inf);
+  }
+  return out;
+}
+} // namespace Detail
 
 inline void ComputeClusterDepthBoundsRows(const DepthImage& image, const glm::dmat4& vcdc,
   const ClusterGridParams& grid, const DepthBoundsOptions& options, int tileRowBegin,
@@ -354,11 +422,24 @@ inline void ComputeClusterDepthBoundsRows(const DepthImage& image, const glm::dm
   // Texel of cluster (tx, ty, s) in the (X * Z) x Y image.
   auto texel = [&](int tx, int ty, int s)
   { return static_cast<std::size_t>(ty) * out.Width + static_cast<std::size_t>(s) * X + tx; };
-  auto grow = [&](std::size_t t, const float interval[2])
+  // Each pixel's NDC extent on both axes (ComputePixelExtents); a tile that may hold a
+  // translucent fragment or one on the far plane anywhere takes the whole plane.
+  const std::vector<float> columnExtents =
+    Detail::ComputePixelExtents(image.Width, X, options.TileSlack, options.PixelSlack);
+  const std::vector<float> rowExtents =
+    Detail::ComputePixelExtents(image.Height, grid.TilesY, options.TileSlack, options.PixelSlack);
+  const float inf = std::numeric_limits<float>::max();
+  const float wholePlane[4] = { -inf, -inf, inf, inf };
+  auto grow = [&](std::size_t t, const float interval[2], const float rect[4])
   {
     float* b = &out.LoHi[2 * t];
     b[0] = std::min(b[0], interval[0]);
     b[1] = std::max(b[1], interval[1]);
+    float* r = &out.Rects[4 * t];
+    r[0] = std::min(r[0], rect[0]);
+    r[1] = std::min(r[1], rect[1]);
+    r[2] = std::max(r[2], rect[2]);
+    r[3] = std::max(r[3], rect[3]);
   };
   std::vector<float> tileDeepest(static_cast<std::size_t>(X));
   std::vector<char> tileBackground(static_cast<std::size_t>(X));
@@ -436,11 +517,15 @@ inline void ComputeClusterDepthBoundsRows(const DepthImage& image, const glm::dm
         const int s0 = sliceOf(lo, guess);
         const int s1 = sliceOf(hi, s0);
         guess = s0;
+        const std::size_t ex = 2 * static_cast<std::size_t>(x);
+        const std::size_t ey = 2 * static_cast<std::size_t>(y);
+        const float rect[4] = { columnExtents[ex], rowExtents[ey], columnExtents[ex + 1],
+          rowExtents[ey + 1] };
         for (int s = s0; s <= s1; ++s)
         {
           for (int tx = c.Lo; tx <= c.Hi; ++tx)
           {
-            grow(texel(tx, ty, s), interval);
+            grow(texel(tx, ty, s), interval, rect);
           }
         }
       }
@@ -460,14 +545,14 @@ inline void ComputeClusterDepthBoundsRows(const DepthImage& image, const glm::dm
           const int s1 = sliceOf(interval[1], Z - 1);
           for (int s = 0; s <= s1; ++s)
           {
-            grow(texel(tx, ty, s), interval);
+            grow(texel(tx, ty, s), interval, wholePlane);
           }
         }
       }
       else if (tileBackground[tx])
       {
         const float interval[2] = { farLo, static_cast<float>(deepest) };
-        grow(texel(tx, ty, Z - 1), interval);
+        grow(texel(tx, ty, Z - 1), interval, wholePlane);
       }
     }
   }

@@ -90,6 +90,8 @@ inline ClusterCell ComputeClusterCell(int tx, int ty, int s, const ClusterGridPa
   ClusterCell cell;
   double z0 = s == 0 ? nearVC : std::max(ComputeSliceBoundary(s, grid), nearVC);
   double z1 = s == grid.Slices - 1 ? farVC : std::min(ComputeSliceBoundary(s + 1, grid), farVC);
+  double x[2] = { 2.0 * tx / grid.TilesX - 1.0, 2.0 * (tx + 1) / grid.TilesX - 1.0 };
+  double y[2] = { 2.0 * ty / grid.TilesY - 1.0, 2.0 * (ty + 1) / grid.TilesY - 1.0 };
   if (depths && depths->Valid)
   {
     double lo = 0.0, hi = 0.0;
@@ -99,14 +101,21 @@ inline ClusterCell ComputeClusterCell(int tx, int ty, int s, const ClusterGridPa
     }
     z0 = std::max(z0, lo);
     z1 = std::min(z1, hi);
+    // The tile cut to the rectangle its fragments cover (as the list pass does).
+    double rect[4];
+    if (depths->GetRect(tx, ty, s, grid.TilesX, rect))
+    {
+      x[0] = std::max(x[0], rect[0]);
+      y[0] = std::max(y[0], rect[1]);
+      x[1] = std::max(std::min(x[1], rect[2]), x[0]);
+      y[1] = std::max(std::min(y[1], rect[3]), y[0]);
+    }
   }
   if (!(z1 > z0))
   {
     return cell;
   }
   cell.Empty = false;
-  const double x[2] = { 2.0 * tx / grid.TilesX - 1.0, 2.0 * (tx + 1) / grid.TilesX - 1.0 };
-  const double y[2] = { 2.0 * ty / grid.TilesY - 1.0, 2.0 * (ty + 1) / grid.TilesY - 1.0 };
   const double z[2] = { z0, z1 };
   glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-lo);
   for (int i = 0; i < 8; ++i)

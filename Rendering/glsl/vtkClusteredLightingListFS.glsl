@@ -12,7 +12,8 @@
 //
 // Depth-aware clusters (CL_DEPTH_AWARE): the cell is cut to the depths the cluster's
 // fragments really have (clClusterDepths, from the depth prepass,
-// vtkClusteredLightingDepthBounds.h); a cluster without fragments gets no light. The
+// vtkClusteredLightingDepthBounds.h) and its tile to the screen rectangle they cover
+// (clClusterRects); a cluster without fragments gets no light. The
 // CPU has already shrunk each quad to the clusters whose intervals the light's depth
 // extent overlaps (ShrinkToReachableClusters, vtkClusteredLightingAssignment.h), a subset
 // of what this test rejects, so it only saves texels.
@@ -31,6 +32,7 @@ uniform vec4 clSlicing;      // ComputeSliceShaderParameters
 uniform vec2 clDepthRange;   // camera near depth, deepest fragment (GetMaxFragmentDepth)
 #ifdef CL_DEPTH_AWARE
 uniform sampler2D clClusterDepths; // (lo, hi) per cluster, texel (s * X + tx, ty)
+uniform sampler2D clClusterRects;  // NDC (x0, y0, x1, y1) per cluster, the same texel
 #endif
 
 flat in uint clBitVSOutput;
@@ -105,6 +107,11 @@ void main()
 #endif
     vec2 ndc0 = 2.0 * vec2(tx, ty) / vec2(clGrid.xy) - 1.0;
     vec2 ndc1 = 2.0 * vec2(tx + 1, ty + 1) / vec2(clGrid.xy) - 1.0;
+#ifdef CL_DEPTH_AWARE
+    vec4 rect = texelFetch(clClusterRects, ivec2(inBlock, ty), 0);
+    ndc0 = max(ndc0, rect.xy);
+    ndc1 = max(min(ndc1, rect.zw), ndc0);
+#endif
     vec4 xs = vec4(clUnproject(clProjectionX, ndc0.x, z0), clUnproject(clProjectionX, ndc1.x, z0),
       clUnproject(clProjectionX, ndc0.x, z1), clUnproject(clProjectionX, ndc1.x, z1));
     vec4 ys = vec4(clUnproject(clProjectionY, ndc0.y, z0), clUnproject(clProjectionY, ndc1.y, z0),

@@ -81,7 +81,8 @@ void MakeLights(vtkClusteredLightSet* lights, int n, double radius, const double
   }
 }
 
-/// Every visible pixel's exact depth inside its cluster's recorded interval.
+/// Every visible pixel's exact depth inside its cluster's recorded interval, and its
+/// centre inside the cluster's recorded rectangle.
 int CountPixelsOutside(vtkClusteredLightingPass* pass, vtkRenderWindow* rw, vtkRenderer* ren)
 {
   vtkClusteredLightingInspector inspect(pass);
@@ -109,8 +110,11 @@ int CountPixelsOutside(vtkClusteredLightingPass* pass, vtkRenderWindow* rw, vtkR
       const int tx = vtkClusteredLighting::ComputeTileIndex(x + 0.5, w, g.TilesX);
       const int ty = vtkClusteredLighting::ComputeTileIndex(y + 0.5, h, g.TilesY);
       const int s = vtkClusteredLighting::ComputeSliceIndex(depth, g);
-      double lo = 0.0, hi = 0.0;
-      if (!frame.DepthBounds.GetInterval(tx, ty, s, g.TilesX, lo, hi) || depth < lo || depth > hi)
+      double lo = 0.0, hi = 0.0, rect[4];
+      const double nx = 2.0 * (x + 0.5) / w - 1.0, ny = 2.0 * (y + 0.5) / h - 1.0;
+      if (!frame.DepthBounds.GetInterval(tx, ty, s, g.TilesX, lo, hi) || depth < lo || depth > hi ||
+        !frame.DepthBounds.GetRect(tx, ty, s, g.TilesX, rect) || nx < rect[0] || nx > rect[2] ||
+        ny < rect[1] || ny > rect[3])
       {
         ++outside;
       }

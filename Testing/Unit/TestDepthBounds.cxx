@@ -117,8 +117,59 @@ void ForEachFragment(const Synthetic& s, F f)
   }
 }
 
-/// Checks that each fragment's exact depth is inside the interval of its cluster, for the
-/// slice the shader could compute in float (the exact one and its neighbours within 1e-6).
+/// Whether window position (px, py) of an image w x h lies in the NDC rectangle of
+/// cluster (tx, ty, slice).
+bool InRect(const ClusterDepthBounds& b, const ClusterGridParams& g, int tx, int ty, int slice,
+  double px, double py, int w, int h)
+{
+  double rect[4];
+  const double nx = 2.0 * px / w - 1.0, ny = 2.0 * py / h - 1.0;
+  return b.GetRect(tx, ty, slice, g.TilesX, rect) && nx >= rect[0] && nx <= rect[2] &&
+    ny >= rect[1] && ny <= rect[3];
+}
+
+/// Whether the rectangle of cluster (tx, ty, s) holds its whole tile.
+bool CoversTile(const ClusterDepthBounds& b, const ClusterGridParams& g, int tx, int ty, int s)
+{
+  double rect[4];
+  return b.GetRect(tx, ty, s, g.TilesX, rect) && rect[0] <= 2.0 * tx / g.TilesX - 1.0 &&
+    rect[1] <= 2.0 * ty / g.TilesY - 1.0 && rect[2] >= 2.0 * (tx + 1) / g.TilesX - 1.0 &&
+    rect[3] >= 2.0 * (ty + 1) / g.TilesY - 1.0;
+}
+
+/// Mean over the non-empty clusters of the part of its tile its rectangle covers.
+double MeanRectAreaInTile(const ClusterDepthBounds& b, const ClusterGridParams& g)
+{
+  double sum = 0.0;
+  int n = 0;
+  for (int s = 0; s < g.Slices; ++s)
+  {
+    for (int ty = 0; ty < g.TilesY; ++ty)
+    {
+      for (int tx = 0; tx < g.TilesX; ++tx)
+      {
+        double lo = 0.0, hi = 0.0, rect[4];
+        if (!b.GetInterval(tx, ty, s, g.TilesX, lo, hi))
+        {
+          continue;
+        }
+        EXPECT_TRUE(b.GetRect(tx, ty, s, g.TilesX, rect));
+        const double w = 2.0 / g.TilesX, h = 2.0 / g.TilesY;
+        const double x0 = std::max(rect[0], tx * w - 1.0),
+                     x1 = std::min(rect[2], (tx + 1) * w - 1.0);
+        const double y0 = std::max(rect[1], ty * h - 1.0),
+                     y1 = std::min(rect[3], (ty + 1) * h - 1.0);
+        sum += std::max(x1 - x0, 0.0) * std::max(y1 - y0, 0.0) / (w * h);
+        ++n;
+      }
+    }
+  }
+  return n ? sum / n : 0.0;
+}
+
+/// Checks that each fragment's exact depth is inside the interval of its cluster, and its
+/// pixel's centre inside the cluster's rectangle, for the slice the shader could compute
+/// in float (the exact one and its neighbours within 1e-6).
 int CountMisses(const Synthetic& s, const ClusterDepthBounds& b, const ClusterGridParams& g)
 {
   int misses = 0;
@@ -131,7 +182,8 @@ int CountMisses(const Synthetic& s, const ClusterDepthBounds& b, const ClusterGr
       {
         const int slice = ComputeSliceIndex(d * f, g);
         double lo = 0.0, hi = 0.0;
-        if (!b.GetInterval(tx, ty, slice, g.TilesX, lo, hi) || d < lo || d > hi)
+        if (!b.GetInterval(tx, ty, slice, g.TilesX, lo, hi) || d < lo || d > hi ||
+          !InRect(b, g, tx, ty, slice, x + 0.5, y + 0.5, s.Width, s.Height))
         {
           ++misses;
         }
@@ -142,8 +194,8 @@ int CountMisses(const Synthetic& s, const ClusterDepthBounds& b, const ClusterGr
 
 /// Fragments positioned off their pixel's centre, by up to `reach` pixels on each axis
 /// (a line's fragment takes the position of a point of the line, a point's its centre):
-/// counts the pixels whose exact depth is outside the cluster of a tile the shader could
-/// find from such a position (sampled on a 5 x 5 grid of offsets).
+/// counts the pixels whose exact depth (or that position) is outside the cluster of a
+/// tile the shader could find from such a position (sampled on a 5 x 5 grid of offsets).
 int CountMissesOffCentre(
   const Synthetic& s, const ClusterDepthBounds& b, const ClusterGridParams& g, double reach)
 {
@@ -157,10 +209,12 @@ int CountMissesOffCentre(
       {
         for (int j = -2; j <= 2 && !missed; ++j)
         {
-          const int tx = ComputeTileIndex(x + 0.5 + 0.5 * i * reach, s.Width, g.TilesX);
-          const int ty = ComputeTileIndex(y + 0.5 + 0.5 * j * reach, s.Height, g.TilesY);
+          const double px = x + 0.5 + 0.5 * i * reach, py = y + 0.5 + 0.5 * j * reach;
+          const int tx = ComputeTileIndex(px, s.Width, g.TilesX);
+          const int ty = ComputeTileIndex(py, s.Height, g.TilesY);
           double lo = 0.0, hi = 0.0;
-          missed = !b.GetInterval(tx, ty, slice, g.TilesX, lo, hi) || d < lo || d > hi;
+          missed = !b.GetInterval(tx, ty, slice, g.TilesX, lo, hi) || d < lo || d > hi ||
+            !InRect(b, g, tx, ty, slice, px, py, s.Width, s.Height);
         }
       }
       misses += missed ? 1 : 0;
@@ -211,6 +265,11 @@ TEST(DepthBounds, EveryFragmentIsInsideItsClusterAtEveryScale)
       const double fraction = double(b.NonEmptyClusters) / (b.LoHi.size() / 2);
       EXPECT_LT(fraction, 0.35) << "scale " << scale;
       EXPECT_GT(fraction, 0.0);
+      // And a non-empty cluster's rectangle is a part of its tile: the slices cut the
+      // tilted floor and the sphere into bands.
+      const double area = MeanRectAreaInTile(b, g);
+      EXPECT_LT(area, 0.75) << "scale " << scale << (parallel ? " parallel" : "");
+      EXPECT_GT(area, 0.0);
     }
   }
 }
@@ -386,6 +445,7 @@ TEST(DepthBounds, BackgroundKeepsTheFarPlaneInTheLastSlice)
       double lo = 0.0, hi = 0.0;
       ASSERT_TRUE(b.GetInterval(tx, ty, g.Slices - 1, g.TilesX, lo, hi));
       EXPECT_GE(hi, g.FarVC);
+      EXPECT_TRUE(CoversTile(b, g, tx, ty, g.Slices - 1));      // anywhere in the tile
       EXPECT_FALSE(b.GetInterval(tx, ty, 0, g.TilesX, lo, hi)); // nothing nearer
     }
   }
@@ -394,7 +454,8 @@ TEST(DepthBounds, BackgroundKeepsTheFarPlaneInTheLastSlice)
 namespace
 {
 /// Whether tile (tx, ty)'s clusters hold every depth from the near plane to `d` (sampled
-/// at 4 points), where a translucent fragment in front of an opaque surface at `d` may be.
+/// at 4 points), where a translucent fragment in front of an opaque surface at `d` may be,
+/// anywhere in the tile.
 bool HoldsEverythingInFront(
   const ClusterDepthBounds& b, const ClusterGridParams& g, int tx, int ty, double d)
 {
@@ -402,8 +463,9 @@ bool HoldsEverythingInFront(
   {
     const double z = g.NearVC + t * (d - g.NearVC);
     double lo = 0.0, hi = 0.0;
-    if (!b.GetInterval(tx, ty, ComputeSliceIndex(z, g), g.TilesX, lo, hi) || lo > z ||
-      hi < z * (1.0 - 1e-6))
+    const int s = ComputeSliceIndex(z, g);
+    if (!b.GetInterval(tx, ty, s, g.TilesX, lo, hi) || lo > z || hi < z * (1.0 - 1e-6) ||
+      !CoversTile(b, g, tx, ty, s))
     {
       return false;
     }

@@ -56,9 +56,13 @@ ivec3 clComputeCluster(vec4 positionVC)
 }
 
 // Mirrors ClusterTextureLayout::ListTexel / MasterTexel.
+// The column b / clGrid.w comes from a float division, corrected to the exact quotient:
+// llvmpipe has no vector integer division and divides lane by lane, once per batch.
 ivec2 clListTexel(ivec3 c, int b)
 {
-  int column = b / clGrid.w;
+  int column = int((float(b) + 0.5) / float(clGrid.w));
+  column -= column * clGrid.w > b ? 1 : 0;
+  column += (column + 1) * clGrid.w <= b ? 1 : 0;
   int row = b - column * clGrid.w;
   return ivec2(column * clGrid.x * clGrid.z + c.z * clGrid.x + c.x, row * clGrid.y + c.y);
 }

@@ -40,12 +40,12 @@
  * into TilesX by TilesY screen tiles and Slices depth slices. A depth prepass draws the
  * opaque geometry depth-only first (DepthPrepass, kept per renderer only where timing
  * shows it pays: AutomaticDepthPrepass), so no hidden fragment is shaded; its
- * depth, read back, cuts every cluster to the depths it holds and places the slices
- * between the nearest and deepest visible surfaces (DepthAwareClusters, docs/depth.md).
- * When lights, camera, viewport or visible depths change, the CPU (GL-free core in
- * Rendering/Core) gives every light an
- * influence radius and exact screen and depth bounds; a list pass draws one quad per
- * light into a texture of per-cluster light bitmasks; a master pass folds it into one
+ * depth, read back, cuts every cluster to the depths and screen rectangle it holds and
+ * places the slices between the nearest and deepest visible surfaces
+ * (DepthAwareClusters, docs/depth.md). When lights, camera, viewport or visible depths
+ * change, the CPU (GL-free core in Rendering/Core) gives every light an influence
+ * radius and exact screen and depth bounds; a list pass draws one quad per light into a
+ * texture of per-cluster light bitmasks; a master pass folds it into one
  * bit per non-empty batch of 32 lights. The fragment shaders find their cluster, walk
  * the master bits, then the list bits, and shade those lights with VTK's own formulas
  * (attenuation, spot cone, Phong or PBR).
@@ -544,12 +544,12 @@ public:
   //@{
   /**
    * Depth-aware clusters: after the depth prepass, read the viewport's depth back and cut
-   * each cluster to the depths its fragments really have (an empty cluster gets no
-   * light), and put the depth slices between the nearest and deepest visible surfaces
-   * instead of the camera's clipping range. Conservative: in a multisampled framebuffer
-   * (VTK's default window) the prepass records the depths its fragments have at the
-   * pixel centres, where they are shaded (vtkClusteredLightingSampleDepths); translucent
-   * geometry widens the clusters of the tiles its props' boxes cover on screen (every
+   * each cluster to the depths its fragments really have and its tile to the screen
+   * rectangle they cover (an empty cluster gets no light), and put the depth slices between the
+   * nearest and deepest visible surfaces instead of the camera's clipping range. Conservative: in a
+   * multisampled framebuffer (VTK's default window) the prepass records the depths its fragments
+   * have at the pixel centres, where they are shaded (vtkClusteredLightingSampleDepths);
+   * translucent geometry widens the clusters of the tiles its props' boxes cover on screen (every
    * tile for props whose fragments may leave their box: impostor mappers, custom shader
    * code, VTK's LOD actors) to everything in front of the tile's deepest opaque
    * surface (in a multisampled framebuffer, to the far plane); a frame whose depths

@@ -545,11 +545,12 @@ public:
   /**
    * Depth-aware clusters: after the depth prepass, read the viewport's depth back and cut
    * each cluster to the depths its fragments really have and its tile to the screen
-   * rectangle they cover (an empty cluster gets no light), and put the depth slices between the
-   * nearest and deepest visible surfaces instead of the camera's clipping range. Conservative: in a
-   * multisampled framebuffer (VTK's default window) the prepass records the depths its fragments
-   * have at the pixel centres, where they are shaded (vtkClusteredLightingSampleDepths);
-   * translucent geometry widens the clusters of the tiles its props' boxes cover on screen (every
+   * rectangle they cover (an empty cluster gets no light), and put the depth slices
+   * between the nearest and deepest visible surfaces instead of the camera's clipping
+   * range. Conservative: in a multisampled framebuffer (VTK's default window) the
+   * prepass records the depths its fragments have at the pixel centres, where they are
+   * shaded (vtkClusteredLightingSampleDepths); translucent geometry widens the clusters
+   * of the tiles its props' boxes cover on screen (every
    * tile for props whose fragments may leave their box: impostor mappers, custom shader
    * code, VTK's LOD actors) to everything in front of the tile's deepest opaque
    * surface (in a multisampled framebuffer, to the far plane); a frame whose depths

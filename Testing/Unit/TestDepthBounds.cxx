@@ -266,9 +266,10 @@ TEST(DepthBounds, EveryFragmentIsInsideItsClusterAtEveryScale)
       EXPECT_LT(fraction, 0.35) << "scale " << scale;
       EXPECT_GT(fraction, 0.0);
       // And a non-empty cluster's rectangle is a part of its tile: the slices cut the
-      // tilted floor and the sphere into bands.
+      // tilted floor and the sphere into bands (0.32 of a tile on average in perspective,
+      // 0.25 in parallel projection, at every scale).
       const double area = MeanRectAreaInTile(b, g);
-      EXPECT_LT(area, 0.75) << "scale " << scale << (parallel ? " parallel" : "");
+      EXPECT_LT(area, 0.5) << "scale " << scale << (parallel ? " parallel" : "");
       EXPECT_GT(area, 0.0);
     }
   }

@@ -193,11 +193,16 @@ struct ClusterDepthBounds
   }
   bool operator!=(const ClusterDepthBounds& o) const { return !(*this == o); }
 
+  /// Texel of cluster (tx, ty, s) in the (X * Z) x Y image.
+  std::size_t Texel(int tx, int ty, int s, int tilesX) const
+  {
+    return static_cast<std::size_t>(ty) * this->Width + static_cast<std::size_t>(s) * tilesX + tx;
+  }
+
   /// Interval of cluster (tx, ty, s): false when it holds no fragment.
   bool GetInterval(int tx, int ty, int s, int tilesX, double& lo, double& hi) const
   {
-    const std::size_t t =
-      static_cast<std::size_t>(ty) * this->Width + static_cast<std::size_t>(s) * tilesX + tx;
+    const std::size_t t = this->Texel(tx, ty, s, tilesX);
     lo = this->LoHi[2 * t];
     hi = this->LoHi[2 * t + 1];
     return lo <= hi;
@@ -207,8 +212,7 @@ struct ClusterDepthBounds
   /// fragment (or has no rectangles).
   bool GetRect(int tx, int ty, int s, int tilesX, double rect[4]) const
   {
-    const std::size_t t =
-      static_cast<std::size_t>(ty) * this->Width + static_cast<std::size_t>(s) * tilesX + tx;
+    const std::size_t t = this->Texel(tx, ty, s, tilesX);
     rect[0] = rect[1] = 1.0;
     rect[2] = rect[3] = -1.0;
     if (4 * t + 3 >= this->Rects.size())
@@ -419,9 +423,7 @@ inline void ComputeClusterDepthBoundsRows(const DepthImage& image, const glm::dm
     }
     return s;
   };
-  // Texel of cluster (tx, ty, s) in the (X * Z) x Y image.
-  auto texel = [&](int tx, int ty, int s)
-  { return static_cast<std::size_t>(ty) * out.Width + static_cast<std::size_t>(s) * X + tx; };
+  auto texel = [&](int tx, int ty, int s) { return out.Texel(tx, ty, s, X); };
   // Each pixel's NDC extent on both axes (ComputePixelExtents); a tile that may hold a
   // translucent fragment or one on the far plane anywhere takes the whole plane.
   const std::vector<float> columnExtents =

@@ -67,8 +67,8 @@ int TestClusteredLightingResources(int, char*[])
   Check(pass->GetNumberOfClusteredLights() == 303, "303 clustered lights");
   // LightData, LightView, Quads (texture + buffer each), list, master, FBO, VAO, and the
   // far field's moment textures (the scene's lights are inverse-square), the cluster
-  // depths and rectangles (depth-aware clusters are on by default), and the copy of the prepass's depths
-  // for the next frame (ReuseDepthPrepass, on by default).
+  // depths and rectangles (depth-aware clusters are on by default), and the copy of the prepass's
+  // depths for the next frame (ReuseDepthPrepass, on by default).
   const int per = GLObjectsPerRenderer(pass);
   Check(per == AssignmentGLObjects + FarFieldGLObjects + DepthAwareGLObjects + SavedDepthGLObjects,
     "the lights have a far field, the clusters are depth-aware, the prepass's depths are kept");

@@ -550,10 +550,12 @@ bool GetTranslucentBox(vtkProp* prop, double box[6])
 }
 
 void vtkClusteredLightingDepthPrepass::ComputeTranslucentRects(const vtkRenderState* s,
-  const glm::dmat4& wcvc, const glm::dmat4& vcdc, bool& translucent, std::vector<glm::dvec4>& rects)
+  const glm::dmat4& wcvc, const glm::dmat4& vcdc, bool& translucent, std::vector<glm::dvec4>& rects,
+  std::vector<glm::dvec2>& depths)
 {
   translucent = false;
   rects.clear();
+  depths.clear();
   bool bounded = true;
   for (int i = 0; i < s->GetPropArrayCount(); ++i)
   {
@@ -565,10 +567,14 @@ void vtkClusteredLightingDepthPrepass::ComputeTranslucentRects(const vtkRenderSt
     translucent = true;
     double box[6];
     glm::dvec4 rect;
-    if (bounded && GetTranslucentBox(prop, box) &&
-      vtkClusteredLighting::ProjectBoxToViewport(box, wcvc, vcdc, rect))
+    glm::dvec2 depth;
+    if (bounded && GetTranslucentBox(prop, box))
     {
+      // A box reaching behind the camera covers the whole viewport (the rectangle
+      // ProjectBoxToViewport leaves then), still within its depths.
+      vtkClusteredLighting::ProjectBoxToViewport(box, wcvc, vcdc, rect, &depth);
       rects.push_back(rect);
+      depths.push_back(depth);
     }
     else
     {
@@ -578,6 +584,7 @@ void vtkClusteredLightingDepthPrepass::ComputeTranslucentRects(const vtkRenderSt
   if (!bounded)
   {
     rects.clear();
+    depths.clear();
   }
 }
 

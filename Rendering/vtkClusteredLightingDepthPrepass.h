@@ -165,11 +165,13 @@ public:
   /// VTK's polydata or composite polydata mapper and whose shader property holds no
   /// shader code or replacements keeps its fragments' positions inside that box; for any
   /// other translucent prop (impostor mappers, followers, VTK's LOD actors, assemblies,
-  /// custom shaders), or a box reaching behind the camera, `rects` is left empty:
-  /// translucent fragments may be anywhere. `translucent` tells whether any
-  /// visible prop has translucent geometry.
+  /// custom shaders), `rects` is left empty: translucent fragments may be anywhere. A box
+  /// reaching behind the camera gives the whole viewport. `depths` gets the view depths of
+  /// each box (DepthBoundsOptions::TranslucentDepths), one per rectangle. `translucent`
+  /// tells whether any visible prop has translucent geometry.
   static void ComputeTranslucentRects(const vtkRenderState* s, const glm::dmat4& wcvc,
-    const glm::dmat4& vcdc, bool& translucent, std::vector<glm::dvec4>& rects);
+    const glm::dmat4& vcdc, bool& translucent, std::vector<glm::dvec4>& rects,
+    std::vector<glm::dvec2>& depths);
 
   double GetMaximumCoincidentOffset() const { return this->MaxCoincidentOffset; }
   bool GetUnknownDepthWrites() const { return this->UnknownDepthWrites; }

@@ -831,8 +831,9 @@ void vtkClusteredLightingPass::RenderDepthPrepass(
     // boxes (none: anywhere).
     bool translucent = false;
     std::vector<glm::dvec4> translucentRects;
+    std::vector<glm::dvec2> translucentDepths;
     vtkClusteredLightingDepthPrepass::ComputeTranslucentRects(
-      s, inputs.View.WCVC, inputs.View.VCDC, translucent, translucentRects);
+      s, inputs.View.WCVC, inputs.View.VCDC, translucent, translucentRects, translucentDepths);
     std::string problem;
     if (prepass->GetUnknownDepthWrites())
     {
@@ -852,6 +853,7 @@ void vtkClusteredLightingPass::RenderDepthPrepass(
       inputs.DepthOptions.PixelSlack = vtkClusteredLightingDepthPrepass::ComputePixelSlack(s);
       inputs.DepthOptions.Translucent = translucent;
       inputs.DepthOptions.TranslucentRects = std::move(translucentRects);
+      inputs.DepthOptions.TranslucentDepths = std::move(translucentDepths);
       this->Internals->ReportedDepthProblem.clear();
     }
     else if (problem != this->Internals->ReportedDepthProblem)

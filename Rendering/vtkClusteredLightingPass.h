@@ -550,10 +550,10 @@ public:
    * range. Conservative: in a multisampled framebuffer (VTK's default window) the
    * prepass records the depths its fragments have at the pixel centres, where they are
    * shaded (vtkClusteredLightingSampleDepths); translucent geometry widens the clusters
-   * of the tiles its props' boxes cover on screen (every
-   * tile for props whose fragments may leave their box: impostor mappers, custom shader
-   * code, VTK's LOD actors) to everything in front of the tile's deepest opaque
-   * surface (in a multisampled framebuffer, to the far plane); a frame whose depths
+   * of the tiles its props' boxes cover on screen to the depths of those boxes in front
+   * of the tile's deepest opaque surface (every tile, from the near plane, for props whose
+   * fragments may leave their box: impostor mappers, custom shader code, VTK's LOD
+   * actors; in a multisampled framebuffer, to the far plane); a frame whose depths
    * cannot be used (opaque impostor mappers that write their own depth, an oblique
    * projection) falls back to whole clusters, with a warning once. Costs the prepass, a depth
    * readback and a CPU pass over its pixels (GetLastDepthPrepassTime, GetLastAssignmentTime); the

@@ -50,9 +50,14 @@
  *    TranslucentRects: the screen rectangles of the translucent props' boxes) holds every
  *    depth from the camera's near plane to the tile's deepest opaque depth (or the far
  *    plane where the tile shows background): translucent fragments are depth-tested
- *    against the opaque ones, so none lies deeper. In a multisampled framebuffer such a
- *    tile holds every depth to the far plane: a translucent fragment is shaded at its
- *    pixel's centre, whose depth may lie behind every opaque sample of the pixel.
+ *    against the opaque ones, so none lies deeper. Single-sampled, a translucent
+ *    fragment is shaded at a point of its primitive, inside its prop's box, so where every
+ *    rectangle of a tile comes with its box's depths (TranslucentDepths) the tile holds
+ *    only the hull of those depths, cut to the same deepest opaque depth. In a
+ *    multisampled framebuffer such a tile holds every depth to the far plane: a
+ *    translucent fragment is shaded at its pixel's centre, whose depth may lie behind
+ *    every opaque sample of the pixel (and outside its box: the primitive's plane is
+ *    extrapolated).
  *
  * The visible range (MeasureVisibleRange: the nearest and deepest opaque pixels) sets
  * the slicing range (ChooseSlicingRange): slices where the geometry is. Slicing is
@@ -92,30 +97,66 @@ struct DepthBoundsOptions
   /// Where translucent fragments may be: rectangles (x0, y0, x1, y1) in the viewport's
   /// normalized device coordinates (ProjectBoxToViewport). Empty: anywhere.
   std::vector<glm::dvec4> TranslucentRects;
+  /// The view depths (nearest, deepest) of each rectangle's box, widened for float
+  /// error (ProjectBoxToViewport). Used single-sampled only, and only when there is one
+  /// per rectangle; otherwise a translucent tile holds every depth from the near plane.
+  std::vector<glm::dvec2> TranslucentDepths;
 };
+
+/**
+ * The relative widening of a box's view depths in ProjectBoxToViewport: a fragment's
+ * view position comes from float transforms and interpolation, off by a few float steps
+ * (about 1e-7) of the coordinates involved, far below this share of the largest distance
+ * from the camera to a corner.
+ */
+constexpr double BoxDepthRelativeMargin = 1e-5;
 
 /**
  * The screen rectangle of a world box (x0, x1, y0, y1, z0, z1) in the normalized device
  * coordinates of the view `wcvc`, `vcdc`: the bounds of its projected corners, which
  * hold the projection of every point of the box when every corner lies in front of the
- * camera. False (rect: the whole viewport) when a corner does not, or the box is not
- * valid.
+ * camera. With `depths`, also the view depths (nearest, deepest) of the corners, which
+ * hold every point's (view depth is affine in the point), widened by
+ * BoxDepthRelativeMargin of the largest distance from the camera to a corner. False
+ * (rect: the whole viewport) when a corner does not lie in front of the camera, or the
+ * box is not valid; the depths are those of the box still where it is valid and finite
+ * (a box reaching behind the camera has them too), otherwise every depth.
  */
-inline bool ProjectBoxToViewport(
-  const double box[6], const glm::dmat4& wcvc, const glm::dmat4& vcdc, glm::dvec4& rect)
+inline bool ProjectBoxToViewport(const double box[6], const glm::dmat4& wcvc,
+  const glm::dmat4& vcdc, glm::dvec4& rect, glm::dvec2* depths = nullptr)
 {
+  const double huge = std::numeric_limits<double>::max();
   rect = glm::dvec4(-1.0, -1.0, 1.0, 1.0);
+  if (depths)
+  {
+    *depths = glm::dvec2(-huge, huge);
+  }
   if (!(box[0] <= box[1] && box[2] <= box[3] && box[4] <= box[5]))
   {
     return false;
   }
-  glm::dvec4 out(std::numeric_limits<double>::max(), std::numeric_limits<double>::max(),
-    -std::numeric_limits<double>::max(), -std::numeric_limits<double>::max());
+  auto corner = [box](int i)
+  { return glm::dvec4(box[i & 1], box[2 + ((i >> 1) & 1)], box[4 + (i >> 2)], 1.0); };
+  // The depths first: they hold for a box reaching behind the camera too.
+  glm::dvec2 depth(huge, -huge);
+  double farthest = 0.0;
+  for (int i = 0; i < 8; ++i)
+  {
+    const glm::dvec3 v = glm::dvec3(wcvc * corner(i));
+    depth.x = std::min(depth.x, -v.z);
+    depth.y = std::max(depth.y, -v.z);
+    farthest = std::max(farthest, glm::length(v));
+  }
+  if (depths && std::isfinite(farthest))
+  {
+    const double margin = BoxDepthRelativeMargin * farthest;
+    *depths = glm::dvec2(depth.x - margin, depth.y + margin);
+  }
+  glm::dvec4 out(huge, huge, -huge, -huge);
   const glm::dmat4 wcdc = vcdc * wcvc;
   for (int i = 0; i < 8; ++i)
   {
-    const glm::dvec4 p(box[i & 1], box[2 + ((i >> 1) & 1)], box[4 + (i >> 2)], 1.0);
-    const glm::dvec4 c = wcdc * p;
+    const glm::dvec4 c = wcdc * corner(i);
     // In front of the camera: positive clip w (perspective), or any point (parallel).
     if (!(c.w > 0.0) || !std::isfinite(c.x / c.w) || !std::isfinite(c.y / c.w))
     {
@@ -450,13 +491,27 @@ inline void ComputeClusterDepthBoundsRows(const DepthImage& image, const glm::dm
   // pixel slack (a wide line's fragments carry its centre line's position, which may lie
   // off screen) and the tile slack; every tile without rectangles.
   const bool everywhere = options.Translucent && options.TranslucentRects.empty();
-  std::vector<char> tileTranslucent(
-    static_cast<std::size_t>(X) * grid.TilesY, static_cast<char>(everywhere ? 1 : 0));
+  // Each translucent rectangle as tiles (x0, x1, y0, y1) and the view depths its
+  // fragments may have: its box's single-sampled, else from the near plane (every tile
+  // and depth without rectangles).
+  struct TranslucentRegion
+  {
+    int Tiles[4];
+    double Lo, Hi;
+  };
+  std::vector<TranslucentRegion> translucentRegions;
+  if (everywhere)
+  {
+    translucentRegions.push_back({ { 0, X - 1, 0, grid.TilesY - 1 }, nearest, deepest });
+  }
+  const bool boxDepths =
+    !image.DepthMax && options.TranslucentDepths.size() == options.TranslucentRects.size();
   const double growPixels = 1.0 +
     (std::isnan(options.PixelSlack) ? std::numeric_limits<double>::max()
                                     : std::max(0.0, options.PixelSlack));
-  for (const glm::dvec4& r : options.TranslucentRects)
+  for (std::size_t i = 0; i < options.TranslucentRects.size(); ++i)
   {
+    const glm::dvec4& r = options.TranslucentRects[i];
     const double gx = growPixels / image.Width * X + options.TileSlack;
     const double gy = growPixels / image.Height * grid.TilesY + options.TileSlack;
     // NDC to tiles (as doubles, clamped before the cast: a huge or NaN corner gives an
@@ -469,15 +524,17 @@ inline void ComputeClusterDepthBoundsRows(const DepthImage& image, const glm::dm
       t1 = b < tiles - 1 ? (b > 0.0 ? static_cast<int>(b) : 0) : tiles - 1;
       return !(b < 0.0 || a > tiles - 1);
     };
-    int x0, x1, y0, y1;
-    if (tileRange(r.x, r.z, gx, X, x0, x1) && tileRange(r.y, r.w, gy, grid.TilesY, y0, y1))
+    TranslucentRegion region;
+    if (tileRange(r.x, r.z, gx, X, region.Tiles[0], region.Tiles[1]) &&
+      tileRange(r.y, r.w, gy, grid.TilesY, region.Tiles[2], region.Tiles[3]))
     {
-      for (int ty = y0; ty <= y1; ++ty)
+      // Not-a-number depths give the whole range.
+      const glm::dvec2 d = boxDepths ? options.TranslucentDepths[i] : glm::dvec2(nearest, deepest);
+      region.Lo = d.x >= nearest ? d.x : nearest;
+      region.Hi = d.y <= deepest ? d.y : deepest;
+      if (region.Lo <= region.Hi)
       {
-        for (int tx = x0; tx <= x1; ++tx)
-        {
-          tileTranslucent[static_cast<std::size_t>(ty) * X + tx] = 1;
-        }
+        translucentRegions.push_back(region);
       }
     }
   }
@@ -535,23 +592,31 @@ inline void ComputeClusterDepthBoundsRows(const DepthImage& image, const glm::dm
     const float farLo = static_cast<float>(toView(1.0 - m) * (1.0 - rel));
     for (int tx = 0; tx < X; ++tx)
     {
-      if (tileTranslucent[static_cast<std::size_t>(ty) * X + tx])
+      for (const TranslucentRegion& region : translucentRegions)
       {
-        // Anything from the near plane to the deepest opaque depth (or the far plane,
-        // where the tile shows background or the framebuffer is multisampled).
-        const bool toFar = tileBackground[tx] || image.DepthMax;
-        const float interval[2] = { static_cast<float>(nearest),
-          toFar ? static_cast<float>(deepest) : tileDeepest[tx] };
-        if (interval[1] > 0.0f)
+        if (tx < region.Tiles[0] || tx > region.Tiles[1] || ty < region.Tiles[2] ||
+          ty > region.Tiles[3])
         {
-          const int s1 = sliceOf(interval[1], Z - 1);
-          for (int s = 0; s <= s1; ++s)
+          continue;
+        }
+        // The depths its translucent fragments may have, to the deepest opaque depth (or
+        // the far plane, where the tile shows background or the framebuffer is
+        // multisampled).
+        const bool toFar = tileBackground[tx] || image.DepthMax;
+        const float interval[2] = { static_cast<float>(region.Lo) * (1.0f - 1e-6f),
+          std::min(static_cast<float>(region.Hi) * (1.0f + 1e-6f),
+            toFar ? static_cast<float>(deepest) : tileDeepest[tx]) };
+        if (interval[1] > 0.0f && interval[0] <= interval[1])
+        {
+          const int s0 = sliceOf(interval[0], 0);
+          const int s1 = sliceOf(interval[1], s0);
+          for (int s = s0; s <= s1; ++s)
           {
             grow(texel(tx, ty, s), interval, wholePlane);
           }
         }
       }
-      else if (tileBackground[tx])
+      if (tileBackground[tx])
       {
         const float interval[2] = { farLo, static_cast<float>(deepest) };
         grow(texel(tx, ty, Z - 1), interval, wholePlane);

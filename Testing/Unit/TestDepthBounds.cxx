@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -596,6 +597,121 @@ TEST(DepthBounds, TranslucentRectanglesKeepTheirTilesAndCutTheOthers)
   }
 }
 
+TEST(DepthBounds, TranslucentBoxesKeepOnlyTheirDepths)
+{
+  // Single-sampled, a translucent fragment lies on its primitive, inside its prop's box:
+  // a tile its rectangle covers keeps only the clusters the box's depths reach (cut to
+  // the opaque depth), not everything from the near plane. Points sampled in each box
+  // (in front of the opaque surface at their pixel) must lie inside the interval and
+  // rectangle of the cluster the shader finds for them.
+  const glm::dmat4 P = ClusteredLightingTest::Perspective(40.0, 4.0 / 3.0, 0.5, 40.0);
+  const ClusterGridParams g =
+    ClusteredLightingTest::MakeGrid(16, 8, 32, 160, 120, 0.5, 40.0, SlicingScheme::Exponential);
+  const Synthetic s = Render(P, 160, 120, 1.0);
+  const glm::dmat4 wcvc(1.0); // world = view: the eye at the origin, looking down -z
+  // A pane in front of the sphere, a thick box over the floor, a box reaching behind the
+  // camera (the whole viewport, to its deepest corner) and one wholly behind it (none).
+  const std::vector<std::array<double, 6>> boxes = { { -0.9, -0.1, -0.6, 0.4, -3.3, -3.2 },
+    { 0.3, 1.6, -1.4, -0.6, -8.0, -6.0 }, { -0.5, 0.5, -0.3, 0.3, -2.0, 0.6 },
+    { -1.0, 1.0, -1.0, 1.0, 0.2, 3.0 } };
+  DepthBoundsOptions withDepths;
+  withDepths.Translucent = true;
+  for (const auto& box : boxes)
+  {
+    glm::dvec4 rect;
+    glm::dvec2 depths;
+    const bool front = ProjectBoxToViewport(box.data(), wcvc, P, rect, &depths);
+    EXPECT_EQ(front, box[5] < 0.0);
+    withDepths.TranslucentRects.push_back(rect);
+    withDepths.TranslucentDepths.push_back(depths);
+  }
+  DepthBoundsOptions withoutDepths = withDepths;
+  withoutDepths.TranslucentDepths.clear();
+  const ClusterDepthBounds b = ComputeClusterDepthBounds(s.Image(), P, g, withDepths);
+  const ClusterDepthBounds wide = ComputeClusterDepthBounds(s.Image(), P, g, withoutDepths);
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  int points = 0, misses = 0;
+  for (const auto& box : boxes)
+  {
+    for (int k = 0; k < 4000; ++k)
+    {
+      // Corners and faces too: the extremes of the box's depths.
+      auto pick = [&](int a)
+      {
+        const double t = k < 8 ? ((k >> a) & 1) : (k % 3 == a ? std::round(u(rng)) : u(rng));
+        return box[2 * a] + t * (box[2 * a + 1] - box[2 * a]);
+      };
+      const glm::dvec4 p(pick(0), pick(1), pick(2), 1.0);
+      const double d = -p.z;
+      const glm::dvec4 c = P * p;
+      if (!(d > g.NearVC) || std::abs(c.x / c.w) >= 1.0 || std::abs(c.y / c.w) >= 1.0)
+      {
+        continue; // clipped
+      }
+      const double px = (0.5 * c.x / c.w + 0.5) * s.Width, py = (0.5 * c.y / c.w + 0.5) * s.Height;
+      const double opaque =
+        s.ExactDepth[static_cast<std::size_t>(py) * s.Width + static_cast<std::size_t>(px)];
+      if (opaque != 0.0 && d > opaque)
+      {
+        continue; // behind the opaque surface: depth-tested away
+      }
+      ++points;
+      const int tx = ComputeTileIndex(px, s.Width, g.TilesX);
+      const int ty = ComputeTileIndex(py, s.Height, g.TilesY);
+      for (double f : { 1.0 - 1e-6, 1.0, 1.0 + 1e-6 })
+      {
+        const int slice = ComputeSliceIndex(d * f, g);
+        double lo = 0.0, hi = 0.0;
+        if (!b.GetInterval(tx, ty, slice, g.TilesX, lo, hi) || d < lo || d > hi ||
+          !InRect(b, g, tx, ty, slice, px, py, s.Width, s.Height))
+        {
+          ++misses;
+        }
+      }
+    }
+  }
+  EXPECT_GT(points, 5000);
+  EXPECT_EQ(misses, 0);
+  // Tighter than from the near plane: the pane's tiles keep nothing between the box
+  // reaching behind the camera (to depth 2) and the pane (from 3.2); everything they kept
+  // before is a superset.
+  int kept = 0, keptWide = 0;
+  for (int slice = 0; slice < g.Slices; ++slice)
+  {
+    for (int ty = 0; ty < g.TilesY; ++ty)
+    {
+      for (int tx = 0; tx < g.TilesX; ++tx)
+      {
+        double lo = 0.0, hi = 0.0, lo0 = 0.0, hi0 = 0.0;
+        const bool has = b.GetInterval(tx, ty, slice, g.TilesX, lo, hi);
+        const bool had = wide.GetInterval(tx, ty, slice, g.TilesX, lo0, hi0);
+        ASSERT_TRUE(!has || (had && lo0 <= lo && hi <= hi0));
+        kept += has ? 1 : 0;
+        keptWide += had ? 1 : 0;
+        if (ComputeSliceBoundary(slice, g) > 2.1 && ComputeSliceBoundary(slice + 1, g) < 3.1)
+        {
+          EXPECT_FALSE(has && lo < 3.1 && hi > 2.1)
+            << "tile " << tx << ", " << ty << ", slice " << slice;
+        }
+      }
+    }
+  }
+  EXPECT_LT(kept, keptWide * 3 / 4);
+  // Multisampled, the boxes' depths are not used: every depth to the far plane.
+  DepthImage image = s.Image();
+  image.DepthMax = s.Depth.data();
+  EXPECT_TRUE(ComputeClusterDepthBounds(image, P, g, withDepths) ==
+    ComputeClusterDepthBounds(image, P, g, withoutDepths));
+  // A box wholly behind the camera adds nothing: the bounds are the opaque ones.
+  DepthBoundsOptions behind;
+  behind.Translucent = true;
+  behind.TranslucentRects = { withDepths.TranslucentRects[3] };
+  behind.TranslucentDepths = { withDepths.TranslucentDepths[3] };
+  EXPECT_TRUE(ComputeClusterDepthBounds(s.Image(), P, g, behind) ==
+    ComputeClusterDepthBounds(s.Image(), P, g, {}));
+}
+
 TEST(DepthBounds, BoxesProjectToRectanglesHoldingEveryPoint)
 {
   std::mt19937 rng(7);
@@ -615,12 +731,16 @@ TEST(DepthBounds, BoxesProjectToRectanglesHoldingEveryPoint)
         box[2 * a + 1] = c + h;
       }
       glm::dvec4 rect;
-      ASSERT_TRUE(ProjectBoxToViewport(box, wcvc, P, rect));
+      glm::dvec2 depths;
+      ASSERT_TRUE(ProjectBoxToViewport(box, wcvc, P, rect, &depths));
       for (int k = 0; k < 50; ++k)
       {
         const glm::dvec4 p(box[0] + u(rng) * (box[1] - box[0]), box[2] + u(rng) * (box[3] - box[2]),
           box[4] + u(rng) * (box[5] - box[4]), 1.0);
         const glm::dvec4 c = P * wcvc * p;
+        const double d = -(wcvc * p).z;
+        EXPECT_GT(d, depths.x);
+        EXPECT_LT(d, depths.y);
         EXPECT_GE(c.x / c.w, rect.x - 1e-12);
         EXPECT_LE(c.x / c.w, rect.z + 1e-12);
         EXPECT_GE(c.y / c.w, rect.y - 1e-12);
@@ -637,8 +757,31 @@ TEST(DepthBounds, BoxesProjectToRectanglesHoldingEveryPoint)
   for (const double* box : { behind, invalid, nan })
   {
     glm::dvec4 rect(0.0);
-    EXPECT_FALSE(ProjectBoxToViewport(box, wcvc, P, rect));
+    glm::dvec2 depths(0.0);
+    EXPECT_FALSE(ProjectBoxToViewport(box, wcvc, P, rect, &depths));
     EXPECT_EQ(rect, glm::dvec4(-1.0, -1.0, 1.0, 1.0));
+    // The box behind keeps its depths (those of its corners, widened by a hair); the
+    // others every depth.
+    if (box == behind)
+    {
+      double lo = 1e300, hi = -1e300, farthest = 0.0;
+      for (int i = 0; i < 8; ++i)
+      {
+        const glm::dvec4 v =
+          wcvc * glm::dvec4(box[i & 1], box[2 + ((i >> 1) & 1)], box[4 + (i >> 2)], 1.0);
+        lo = std::min(lo, -v.z);
+        hi = std::max(hi, -v.z);
+        farthest = std::max(farthest, glm::length(glm::dvec3(v)));
+      }
+      ASSERT_LT(lo, 0.0); // it does reach behind the camera
+      EXPECT_NEAR(depths.x, lo - 1e-5 * farthest, 1e-12);
+      EXPECT_NEAR(depths.y, hi + 1e-5 * farthest, 1e-12);
+    }
+    else
+    {
+      EXPECT_EQ(depths,
+        glm::dvec2(-std::numeric_limits<double>::max(), std::numeric_limits<double>::max()));
+    }
   }
 }
 

@@ -76,6 +76,8 @@
 #include <algorithm> // for std::min, std::max
 #include <cmath>     // for std::floor
 #include <cstddef>   // for std::size_t
+#include <cstdint>   // for std::uint32_t
+#include <cstring>   // for std::memcpy
 #include <glm/glm.hpp>
 #include <limits> // for std::numeric_limits
 #include <vector> // for std::vector
@@ -419,6 +421,16 @@ inline std::vector<float> ComputePixelExtents(
 }
 } // namespace Detail
 
+/**
+ * Grows the clusters of tile rows [tileRowBegin, tileRowEnd) of `out` (initialized by
+ * InitializeClusterDepthBounds, the slicing range chosen) with the pixels of `image` that
+ * count in them, then adds the translucent and background terms of those tiles. Rows are
+ * independent: the assigner splits them over threads. A pixel's interval and slices only
+ * grow with its window depths, so the slices come from window-depth thresholds found
+ * once, and the pixels of a line that share tiles and slices grow them once, with the
+ * least and greatest window depths of the run: the same bounds, float for float, as pixel
+ * by pixel (`Core.DepthBounds.RunsOfPixelsGiveTheBoundsOfEachPixel`), in half the time.
+ */
 inline void ComputeClusterDepthBoundsRows(const DepthImage& image, const glm::dmat4& vcdc,
   const ClusterGridParams& grid, const DepthBoundsOptions& options, int tileRowBegin,
   int tileRowEnd, ClusterDepthBounds& out)
@@ -459,6 +471,61 @@ inline void ComputeClusterDepthBoundsRows(const DepthImage& image, const glm::dm
       --s;
     }
     while (s < Z - 1 && d >= boundary[s + 1])
+    {
+      ++s;
+    }
+    return s;
+  };
+  // A pixel of window depths [w, wMax] holds view depths [lowest(w), highest(wMax)]; both
+  // grow with the window depth.
+  auto lowest = [&](double w) { return toView(w - m) * (1.0 - rel); };
+  auto highest = [&](double w) { return std::min(toView(w + m) * (1.0 + rel), deepest); };
+  // So a pixel's slices change at fixed window depths: the least float w whose lowest (or
+  // highest) reaches boundary k, found once per frame by bisection over the floats of
+  // [0, 1] (2 when none does); pixels then find their slices without a division.
+  auto firstReaching = [&](const auto& f, double b)
+  {
+    std::uint32_t lo = 0, hi = 0x3F800000u; // the bits of 0.0f and 1.0f: ordered as floats
+    auto value = [](std::uint32_t u)
+    {
+      float v;
+      std::memcpy(&v, &u, sizeof v);
+      return v;
+    };
+    if (!(f(value(hi)) >= b))
+    {
+      return 2.0f;
+    }
+    while (lo < hi)
+    {
+      const std::uint32_t mid = lo + (hi - lo) / 2;
+      if (f(value(mid)) >= b)
+      {
+        hi = mid;
+      }
+      else
+      {
+        lo = mid + 1;
+      }
+    }
+    return value(lo);
+  };
+  std::vector<float> lowThreshold(static_cast<std::size_t>(Z) + 1, 0.0f);
+  std::vector<float> highThreshold(static_cast<std::size_t>(Z) + 1, 0.0f);
+  for (int k = 1; k < Z; ++k)
+  {
+    lowThreshold[k] = firstReaching(lowest, boundary[k]);
+    highThreshold[k] = firstReaching(highest, boundary[k]);
+  }
+  // The slice whose thresholds hold w, from a cached guess (as sliceOf for the depth).
+  auto sliceAt = [&](const std::vector<float>& t, float w, int guess)
+  {
+    int s = guess;
+    while (s > 0 && w < t[s])
+    {
+      --s;
+    }
+    while (s < Z - 1 && w >= t[s + 1])
     {
       ++s;
     }
@@ -552,42 +619,69 @@ inline void ComputeClusterDepthBoundsRows(const DepthImage& image, const glm::dm
       const float* lineMax =
         image.DepthMax ? image.DepthMax + static_cast<std::size_t>(y) * image.Width : line;
       int guess = 0;
+      // Consecutive pixels of the line in the same tiles and slices form a run: its
+      // interval (from its least and greatest window depths) and its rectangle (the union
+      // of its pixels') grow those clusters once, the same bounds as pixel by pixel.
+      struct Run
+      {
+        int Lo = 0, Hi = -1, S0 = 0, S1 = 0;
+        float W0 = 0.0f, W1 = 0.0f, Rect[4];
+      } run;
+      const std::size_t ey = 2 * static_cast<std::size_t>(y);
+      auto flush = [&]()
+      {
+        if (run.Lo > run.Hi)
+        {
+          return;
+        }
+        const float interval[2] = { static_cast<float>(lowest(run.W0)) * (1.0f - 1e-6f),
+          static_cast<float>(highest(run.W1)) * (1.0f + 1e-6f) };
+        for (int tx = run.Lo; tx <= run.Hi; ++tx)
+        {
+          tileDeepest[tx] = std::max(tileDeepest[tx], interval[1]);
+          for (int s = run.S0; s <= run.S1 && !everywhere; ++s)
+          {
+            grow(texel(tx, ty, s), interval, run.Rect);
+          }
+        }
+        run.Hi = run.Lo - 1;
+      };
       for (int x = 0; x < image.Width; ++x)
       {
-        const double w = line[x];
+        const float w = line[x];
         const Detail::PixelTiles& c = columns[x];
-        if (!(w < 1.0))
+        if (!(w < 1.0f))
         {
+          flush();
           std::fill(tileBackground.begin() + c.Lo, tileBackground.begin() + c.Hi + 1, 1);
           continue;
         }
-        const double lo = toView(w - m) * (1.0 - rel);
-        const double hi = std::min(toView(lineMax[x] + m) * (1.0 + rel), deepest);
-        const float interval[2] = { static_cast<float>(lo) * (1.0f - 1e-6f),
-          static_cast<float>(hi) * (1.0f + 1e-6f) };
-        for (int tx = c.Lo; tx <= c.Hi; ++tx)
-        {
-          tileDeepest[tx] = std::max(tileDeepest[tx], interval[1]);
-        }
-        if (everywhere)
-        {
-          continue;
-        }
-        const int s0 = sliceOf(lo, guess);
-        const int s1 = sliceOf(hi, s0);
+        const float wMax = lineMax[x];
+        const int s0 = sliceAt(lowThreshold, w, guess);
+        const int s1 = sliceAt(highThreshold, wMax, s0);
         guess = s0;
         const std::size_t ex = 2 * static_cast<std::size_t>(x);
-        const std::size_t ey = 2 * static_cast<std::size_t>(y);
-        const float rect[4] = { columnExtents[ex], rowExtents[ey], columnExtents[ex + 1],
-          rowExtents[ey + 1] };
-        for (int s = s0; s <= s1; ++s)
+        if (run.Lo <= run.Hi && c.Lo == run.Lo && c.Hi == run.Hi && s0 == run.S0 && s1 == run.S1)
         {
-          for (int tx = c.Lo; tx <= c.Hi; ++tx)
-          {
-            grow(texel(tx, ty, s), interval, rect);
-          }
+          run.W0 = std::min(run.W0, w);
+          run.W1 = std::max(run.W1, wMax);
+          run.Rect[0] = std::min(run.Rect[0], columnExtents[ex]);
+          run.Rect[2] = std::max(run.Rect[2], columnExtents[ex + 1]);
+          continue;
         }
+        flush();
+        run.Lo = c.Lo;
+        run.Hi = c.Hi;
+        run.S0 = s0;
+        run.S1 = s1;
+        run.W0 = w;
+        run.W1 = wMax;
+        run.Rect[0] = columnExtents[ex];
+        run.Rect[1] = rowExtents[ey];
+        run.Rect[2] = columnExtents[ex + 1];
+        run.Rect[3] = rowExtents[ey + 1];
       }
+      flush();
     }
     const float farLo = static_cast<float>(toView(1.0 - m) * (1.0 - rel));
     for (int tx = 0; tx < X; ++tx)

@@ -276,6 +276,152 @@ TEST(DepthBounds, EveryFragmentIsInsideItsClusterAtEveryScale)
   }
 }
 
+namespace
+{
+/// The bounds pixel by pixel, as the header's documentation defines them (the reference
+/// for its runs of pixels and its slices found from window-depth thresholds): each pixel
+/// of window depths [w, wMax] holds view depths [lowest(w), highest(wMax)] and grows
+/// every cluster of its tiles and of the slices those depths touch with them and its
+/// rectangle; a background pixel grows the last slice of its tiles with everything from
+/// the far plane's depth (less the margins) on, and the whole plane. Opaque geometry only.
+ClusterDepthBounds BoundsPixelByPixel(const DepthImage& image, const glm::dmat4& P,
+  const ClusterGridParams& g, const DepthBoundsOptions& o)
+{
+  ClusterDepthBounds out;
+  InitializeClusterDepthBounds(g, out);
+  const double nearest = g.NearVC, deepest = g.GetMaxFragmentDepth();
+  auto toView = [&](double w)
+  {
+    if (w <= 0.0 || w >= 1.0)
+    {
+      return w <= 0.0 ? nearest : deepest;
+    }
+    const double d = ViewDepthFromWindowDepth(w, P);
+    return d > 0.0 ? std::min(d, deepest) : nearest;
+  };
+  auto grow = [&](int tx, int ty, int s, const float interval[2], const float rect[4])
+  {
+    const std::size_t t = out.Texel(tx, ty, s, g.TilesX);
+    out.LoHi[2 * t] = std::min(out.LoHi[2 * t], interval[0]);
+    out.LoHi[2 * t + 1] = std::max(out.LoHi[2 * t + 1], interval[1]);
+    for (int k = 0; k < 4; ++k)
+    {
+      float& r = out.Rects[4 * t + k];
+      r = k < 2 ? std::min(r, rect[k]) : std::max(r, rect[k]);
+    }
+  };
+  const float whole[4] = { -std::numeric_limits<float>::max(), -std::numeric_limits<float>::max(),
+    std::numeric_limits<float>::max(), std::numeric_limits<float>::max() };
+  const float far[2] = { static_cast<float>(
+                           toView(1.0 - o.WindowMargin) * (1.0 - o.RelativeMargin)),
+    static_cast<float>(deepest) };
+  auto slice = [&](double d)
+  {
+    int s = 0;
+    while (s < g.Slices - 1 && d >= ComputeSliceBoundary(s + 1, g))
+    {
+      ++s;
+    }
+    return s;
+  };
+  const auto columns = Detail::ComputePixelTiles(image.Width, g.TilesX, o.TileSlack, o.PixelSlack);
+  const auto rows = Detail::ComputePixelTiles(image.Height, g.TilesY, o.TileSlack, o.PixelSlack);
+  const auto xs = Detail::ComputePixelExtents(image.Width, g.TilesX, o.TileSlack, o.PixelSlack);
+  const auto ys = Detail::ComputePixelExtents(image.Height, g.TilesY, o.TileSlack, o.PixelSlack);
+  for (int y = 0; y < image.Height; ++y)
+  {
+    for (int x = 0; x < image.Width; ++x)
+    {
+      const std::size_t p = static_cast<std::size_t>(y) * image.Width + x;
+      const double w = image.Depth[p];
+      if (!(w < 1.0))
+      {
+        for (int ty = rows[y].Lo; ty <= rows[y].Hi; ++ty)
+        {
+          for (int tx = columns[x].Lo; tx <= columns[x].Hi; ++tx)
+          {
+            grow(tx, ty, g.Slices - 1, far, whole);
+          }
+        }
+        continue;
+      }
+      const double wMax = image.DepthMax ? image.DepthMax[p] : w;
+      const double lo = toView(w - o.WindowMargin) * (1.0 - o.RelativeMargin);
+      const double hi = std::min(toView(wMax + o.WindowMargin) * (1.0 + o.RelativeMargin), deepest);
+      const float interval[2] = { static_cast<float>(lo) * (1.0f - 1e-6f),
+        static_cast<float>(hi) * (1.0f + 1e-6f) };
+      const float rect[4] = { xs[2 * x], ys[2 * y], xs[2 * x + 1], ys[2 * y + 1] };
+      for (int s = slice(lo); s <= slice(hi); ++s)
+      {
+        for (int ty = rows[y].Lo; ty <= rows[y].Hi; ++ty)
+        {
+          for (int tx = columns[x].Lo; tx <= columns[x].Hi; ++tx)
+          {
+            grow(tx, ty, s, interval, rect);
+          }
+        }
+      }
+    }
+  }
+  return out;
+}
+}
+
+TEST(DepthBounds, RunsOfPixelsGiveTheBoundsOfEachPixel)
+{
+  // The CPU pass over the depths takes the pixels of a line in runs (the same tiles and
+  // slices) and finds slices from window-depth thresholds, without a division per pixel:
+  // the same bounds, float for float, as pixel by pixel; perspective and parallel, scales
+  // 1e-3 to 1e6, coincident offsets, a pixel slack (pixels in several tiles) and pixel
+  // ranges as a multisampled framebuffer records them.
+  int compared = 0;
+  for (const bool perspective : { true, false })
+  {
+    for (const double scale : { 1e-3, 1.0, 1e6 })
+    {
+      const glm::dmat4 P = perspective
+        ? ClusteredLightingTest::Perspective(40.0, 4.0 / 3.0, 0.5 * scale, 40.0 * scale)
+        : ClusteredLightingTest::Parallel(3.0 * scale, 4.0 / 3.0, 0.5 * scale, 40.0 * scale);
+      ClusterGridParams g = ClusteredLightingTest::MakeGrid(
+        16, 8, 32, 160, 120, 0.5 * scale, 40.0 * scale, SlicingScheme::Exponential);
+      const Synthetic s = Render(P, 160, 120, scale, 3.0);
+      std::vector<float> wider(s.Depth);
+      for (std::size_t p = 0; p < wider.size(); ++p)
+      {
+        wider[p] = s.Depth[p] < 1.0f ? std::min(s.Depth[p] + 1e-3f * (p % 7), 1.0f) : 1.0f;
+      }
+      for (const bool multisampled : { false, true })
+      {
+        for (const double slack : { 0.0, 6.0 })
+        {
+          DepthImage image = s.Image();
+          image.DepthMax = multisampled ? wider.data() : nullptr;
+          DepthBoundsOptions o;
+          o.WindowMargin = ComputeWindowMargin(3.0);
+          o.PixelSlack = slack;
+          const VisibleRange range = MeasureVisibleRange(image, P);
+          ChooseSlicingRange(range.Visible, range.Nearest, range.Deepest, g);
+          ClusterDepthBounds b;
+          InitializeClusterDepthBounds(g, b);
+          ComputeClusterDepthBoundsRows(image, P, g, o, 0, g.TilesY, b);
+          const ClusterDepthBounds expected = BoundsPixelByPixel(image, P, g, o);
+          ASSERT_EQ(b.LoHi.size(), expected.LoHi.size());
+          for (std::size_t i = 0; i < b.LoHi.size(); ++i)
+          {
+            ASSERT_EQ(b.LoHi[i], expected.LoHi[i]) << "interval value " << i;
+          }
+          for (std::size_t i = 0; i < b.Rects.size(); ++i)
+          {
+            ASSERT_EQ(b.Rects[i], expected.Rects[i]) << "rectangle value " << i;
+          }
+          ++compared;
+        }
+      }
+    }
+  }
+  EXPECT_EQ(compared, 24);
+}
+
 TEST(DepthBounds, CoincidentOffsetsAreCoveredByTheMargin)
 {
   const glm::dmat4 P = ClusteredLightingTest::Perspective(40.0, 4.0 / 3.0, 0.5, 40.0);

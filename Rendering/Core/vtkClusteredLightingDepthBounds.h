@@ -53,7 +53,7 @@
  *    against the opaque ones, so none lies deeper. Single-sampled, a translucent
  *    fragment is shaded at a point of its primitive, inside its prop's box, so where every
  *    rectangle of a tile comes with its box's depths (TranslucentDepths) the tile holds
- *    only the hull of those depths, cut to the same deepest opaque depth. In a
+ *    only the depths of those boxes (each apart), cut to the same deepest opaque depth. In a
  *    multisampled framebuffer such a tile holds every depth to the far plane: a
  *    translucent fragment is shaded at its pixel's centre, whose depth may lie behind
  *    every opaque sample of the pixel (and outside its box: the primitive's plane is

@@ -137,37 +137,41 @@ inline bool ProjectBoxToViewport(const double box[6], const glm::dmat4& wcvc,
   {
     return false;
   }
-  auto corner = [box](int i)
-  { return glm::dvec4(box[i & 1], box[2 + ((i >> 1) & 1)], box[4 + (i >> 2)], 1.0); };
-  // The depths first: they hold for a box reaching behind the camera too.
+  // The depths hold for a box reaching behind the camera too: every corner is taken
+  // before the rectangle is refused.
   glm::dvec2 depth(huge, -huge);
   double farthest = 0.0;
+  glm::dvec4 out(huge, huge, -huge, -huge);
+  bool inFront = true;
+  const glm::dmat4 wcdc = vcdc * wcvc;
   for (int i = 0; i < 8; ++i)
   {
-    const glm::dvec3 v = glm::dvec3(wcvc * corner(i));
+    const glm::dvec4 p(box[i & 1], box[2 + ((i >> 1) & 1)], box[4 + (i >> 2)], 1.0);
+    const glm::dvec3 v = glm::dvec3(wcvc * p);
     depth.x = std::min(depth.x, -v.z);
     depth.y = std::max(depth.y, -v.z);
     farthest = std::max(farthest, glm::length(v));
+    const glm::dvec4 c = wcdc * p;
+    // In front of the camera: positive clip w (perspective), or any point (parallel).
+    // (No division by a w that is not positive.)
+    if (!(c.w > 0.0) || !std::isfinite(c.x / c.w) || !std::isfinite(c.y / c.w))
+    {
+      inFront = false;
+      continue;
+    }
+    out.x = std::min(out.x, c.x / c.w);
+    out.y = std::min(out.y, c.y / c.w);
+    out.z = std::max(out.z, c.x / c.w);
+    out.w = std::max(out.w, c.y / c.w);
   }
   if (depths && std::isfinite(farthest))
   {
     const double margin = BoxDepthRelativeMargin * farthest;
     *depths = glm::dvec2(depth.x - margin, depth.y + margin);
   }
-  glm::dvec4 out(huge, huge, -huge, -huge);
-  const glm::dmat4 wcdc = vcdc * wcvc;
-  for (int i = 0; i < 8; ++i)
+  if (!inFront)
   {
-    const glm::dvec4 c = wcdc * corner(i);
-    // In front of the camera: positive clip w (perspective), or any point (parallel).
-    if (!(c.w > 0.0) || !std::isfinite(c.x / c.w) || !std::isfinite(c.y / c.w))
-    {
-      return false;
-    }
-    out.x = std::min(out.x, c.x / c.w);
-    out.y = std::min(out.y, c.y / c.w);
-    out.z = std::max(out.z, c.x / c.w);
-    out.w = std::max(out.w, c.y / c.w);
+    return false;
   }
   rect = out;
   return true;
@@ -462,15 +466,16 @@ inline void ComputeClusterDepthBoundsRows(const DepthImage& image, const glm::dm
     const double d = ViewDepthFromWindowDepth(w, vcdc);
     return d > 0.0 ? std::min(d, deepest) : nearest;
   };
-  // Slice of a depth (boundary(s) <= d < boundary(s+1), clamped), from a cached guess.
-  auto sliceOf = [&](double d, int guess)
+  // The slice s with edges[s] <= v < edges[s + 1] (clamped), from a cached guess: edges
+  // are the slice boundaries for a view depth, or thresholds for a window depth (below).
+  auto sliceAt = [&](const auto& edges, auto v, int guess)
   {
     int s = guess;
-    while (s > 0 && d < boundary[s])
+    while (s > 0 && v < edges[s])
     {
       --s;
     }
-    while (s < Z - 1 && d >= boundary[s + 1])
+    while (s < Z - 1 && v >= edges[s + 1])
     {
       ++s;
     }
@@ -517,20 +522,6 @@ inline void ComputeClusterDepthBoundsRows(const DepthImage& image, const glm::dm
     lowThreshold[k] = firstReaching(lowest, boundary[k]);
     highThreshold[k] = firstReaching(highest, boundary[k]);
   }
-  // The slice whose thresholds hold w, from a cached guess (as sliceOf for the depth).
-  auto sliceAt = [&](const std::vector<float>& t, float w, int guess)
-  {
-    int s = guess;
-    while (s > 0 && w < t[s])
-    {
-      --s;
-    }
-    while (s < Z - 1 && w >= t[s + 1])
-    {
-      ++s;
-    }
-    return s;
-  };
   auto texel = [&](int tx, int ty, int s) { return out.Texel(tx, ty, s, X); };
   // Each pixel's NDC extent on both axes (ComputePixelExtents); a tile that may hold a
   // translucent fragment or one on the far plane anywhere takes the whole plane.
@@ -636,6 +627,8 @@ inline void ComputeClusterDepthBoundsRows(const DepthImage& image, const glm::dm
         }
         const float interval[2] = { static_cast<float>(lowest(run.W0)) * (1.0f - 1e-6f),
           static_cast<float>(highest(run.W1)) * (1.0f + 1e-6f) };
+        // With translucent geometry anywhere, every tile keeps every depth in front of
+        // its deepest opaque one (below): only that depth counts.
         for (int tx = run.Lo; tx <= run.Hi; ++tx)
         {
           tileDeepest[tx] = std::max(tileDeepest[tx], interval[1]);
@@ -702,8 +695,8 @@ inline void ComputeClusterDepthBoundsRows(const DepthImage& image, const glm::dm
             toFar ? static_cast<float>(deepest) : tileDeepest[tx]) };
         if (interval[1] > 0.0f && interval[0] <= interval[1])
         {
-          const int s0 = sliceOf(interval[0], 0);
-          const int s1 = sliceOf(interval[1], s0);
+          const int s0 = sliceAt(boundary, static_cast<double>(interval[0]), 0);
+          const int s1 = sliceAt(boundary, static_cast<double>(interval[1]), s0);
           for (int s = s0; s <= s1; ++s)
           {
             grow(texel(tx, ty, s), interval, wholePlane);

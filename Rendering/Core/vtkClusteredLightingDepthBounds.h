@@ -524,7 +524,8 @@ inline void ComputeClusterDepthBoundsRows(const DepthImage& image, const glm::dm
   }
   auto texel = [&](int tx, int ty, int s) { return out.Texel(tx, ty, s, X); };
   // Each pixel's NDC extent on both axes (ComputePixelExtents); a tile that may hold a
-  // translucent fragment or one on the far plane anywhere takes the whole plane.
+  // fragment on the far plane anywhere, or a translucent one of unknown props, takes the
+  // whole plane, one under a translucent prop's box the box's rectangle.
   const std::vector<float> columnExtents =
     Detail::ComputePixelExtents(image.Width, X, options.TileSlack, options.PixelSlack);
   const std::vector<float> rowExtents =
@@ -556,12 +557,21 @@ inline void ComputeClusterDepthBoundsRows(const DepthImage& image, const glm::dm
   {
     int Tiles[4];
     double Lo, Hi;
+    float Rect[4];
   };
   std::vector<TranslucentRegion> translucentRegions;
   if (everywhere)
   {
-    translucentRegions.push_back({ { 0, X - 1, 0, grid.TilesY - 1 }, nearest, deepest });
+    translucentRegions.push_back({ { 0, X - 1, 0, grid.TilesY - 1 }, nearest, deepest,
+      { wholePlane[0], wholePlane[1], wholePlane[2], wholePlane[3] } });
   }
+  // A rectangle's edge as a float rounded outward (not a number or past float's range:
+  // the whole plane on that side).
+  auto outwardLo = [inf](double v) {
+    return v > -inf ? std::nextafter(static_cast<float>(std::min(v, double{ inf })), -inf) : -inf;
+  };
+  auto outwardHi = [inf](double v)
+  { return v < inf ? std::nextafter(static_cast<float>(std::max(v, -double{ inf })), inf) : inf; };
   const bool boxDepths =
     !image.DepthMax && options.TranslucentDepths.size() == options.TranslucentRects.size();
   const double growPixels = 1.0 +
@@ -590,6 +600,12 @@ inline void ComputeClusterDepthBoundsRows(const DepthImage& image, const glm::dm
       const glm::dvec2 d = boxDepths ? options.TranslucentDepths[i] : glm::dvec2(nearest, deepest);
       region.Lo = d.x >= nearest ? d.x : nearest;
       region.Hi = d.y <= deepest ? d.y : deepest;
+      // Its clusters' rectangles: the box's, grown as its tiles were (a fragment's
+      // position lies in the box's projection, or within the grow of it).
+      region.Rect[0] = outwardLo(r.x - 2.0 * gx / X);
+      region.Rect[1] = outwardLo(r.y - 2.0 * gy / grid.TilesY);
+      region.Rect[2] = outwardHi(r.z + 2.0 * gx / X);
+      region.Rect[3] = outwardHi(r.w + 2.0 * gy / grid.TilesY);
       if (region.Lo <= region.Hi)
       {
         translucentRegions.push_back(region);
@@ -699,7 +715,7 @@ inline void ComputeClusterDepthBoundsRows(const DepthImage& image, const glm::dm
           const int s1 = sliceAt(boundary, static_cast<double>(interval[1]), s0);
           for (int s = s0; s <= s1; ++s)
           {
-            grow(texel(tx, ty, s), interval, wholePlane);
+            grow(texel(tx, ty, s), interval, region.Rect);
           }
         }
       }

@@ -30,7 +30,9 @@ translation each frame) and prints the median frame time, far-field build, light
 and assignment times (the first build of a still frame, which the default render's line
 gives, also allocates the far field's buffers and textures);
 --back-face-sums also renders with FarFieldExactSumsOnBackFaces on (the floor here is a
-back face: vtkPlaneSource's normal points down). --counts prints the lights evaluated and
+back face: vtkPlaneSource's normal points down). --specular-power POWER sets both actors'
+specular power (20 by default; VTK's own default is 1) and --floor-specular SPECULAR the
+floor's specular coefficient (0 by default; the sphere's is 0.5). --counts prints the lights evaluated and
 reaching per pixel of each clustered render. The
 default render's line also gives the far field's build time and how many lights it
 splits.
@@ -59,7 +61,7 @@ from vtkmodules.vtkRenderingCore import (
 import numpy
 
 
-def add_actor(renderer, source, color, specular=0.0, pbr=None):
+def add_actor(renderer, source, color, specular=0.0, pbr=None, power=20.0):
     """Adds an actor of source to renderer; returns it."""
     mapper = vtkPolyDataMapper()
     mapper.SetInputConnection(source.GetOutputPort())
@@ -67,7 +69,7 @@ def add_actor(renderer, source, color, specular=0.0, pbr=None):
     actor.SetMapper(mapper)
     actor.GetProperty().SetColor(*color)
     actor.GetProperty().SetSpecular(specular)
-    actor.GetProperty().SetSpecularPower(20)
+    actor.GetProperty().SetSpecularPower(power)
     if pbr is not None:  # (metallic, roughness)
         actor.GetProperty().SetInterpolationToPBR()
         actor.GetProperty().SetMetallic(pbr[0])
@@ -141,6 +143,11 @@ def main():
     parser.add_argument("--animate", type=int, default=0, metavar="FRAMES",
                         help="also render FRAMES frames in which every light moves and print "
                         "the median far-field build, light update and assignment times")
+    parser.add_argument("--specular-power", type=float, default=20.0, metavar="POWER",
+                        help="the specular power of both actors (VTK's default is 1; the "
+                        "sphere's specular is 0.5, the floor's SPECULAR)")
+    parser.add_argument("--floor-specular", type=float, default=0.0, metavar="SPECULAR",
+                        help="the floor's specular coefficient")
     parser.add_argument("--counts", action="store_true",
                         help="also print the lights evaluated and reaching per pixel of each "
                         "clustered render (the pass's evaluated-count view, one more render)")
@@ -154,12 +161,14 @@ def main():
     floor.SetPoint1(4, -1, -4)
     floor.SetPoint2(-4, -1, 4)
     floor.SetResolution(64, 64)
-    add_actor(renderer, floor, (0.8, 0.8, 0.8), pbr=pbr)
+    add_actor(renderer, floor, (0.8, 0.8, 0.8), specular=args.floor_specular, pbr=pbr,
+              power=args.specular_power)
     sphere = vtkSphereSource()
     sphere.SetRadius(0.6)
     sphere.SetThetaResolution(64)
     sphere.SetPhiResolution(48)
-    add_actor(renderer, sphere, (0.9, 0.85, 0.8), specular=0.5, pbr=pbr)
+    add_actor(renderer, sphere, (0.9, 0.85, 0.8), specular=0.5, pbr=pbr,
+              power=args.specular_power)
 
     points = vtkPointSource()
     points.SetNumberOfPoints(args.lights)

@@ -878,6 +878,7 @@ void vtkClusteredLightingAssigner::ActivateShading()
   {
     this->FarField.Activate();
     r.FarFieldUnits = this->FarField.GetUnits();
+    r.LobeTableUnit = this->FarField.GetLobeTableUnit();
   }
   r.LightDataUnit =
     this->LightData.GetTexture() ? this->LightData.GetTexture()->GetTextureUnit() : -1;
@@ -900,6 +901,7 @@ void vtkClusteredLightingAssigner::DeactivateShading()
   this->FarField.Deactivate();
   vtkClusteredLightingAssignment& r = this->Result;
   r.FarFieldUnits.fill(-1);
+  r.LobeTableUnit = -1;
   r.LightDataUnit = r.LightViewUnit = r.ListUnit = r.MasterUnit = -1;
 }
 

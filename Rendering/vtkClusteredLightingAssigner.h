@@ -184,6 +184,7 @@ struct vtkClusteredLightingAssignment
   float FarFieldFromVC[16] = { 0 }; ///< VC -> far-field texture coordinates (column-major)
   float WorldFromVC[9] = { 0 };     ///< VC -> world directions (column-major)
   std::array<int, vtkClusteredLighting::FarFieldTextures> FarFieldUnits{}; ///< while bound
+  int LobeTableUnit = -1; ///< the far specular's table, while bound
   std::uint64_t ListBytes = 0, MasterBytes = 0, LightBufferBytes = 0;
 
   // Messages new in this update (each problem is reported once while it persists).

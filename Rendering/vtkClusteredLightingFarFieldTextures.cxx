@@ -100,6 +100,25 @@ bool vtkClusteredLightingFarFieldTextures::Build(
       static_cast<unsigned int>(grid.Dims[1]), static_cast<unsigned int>(grid.Dims[2]), 4,
       VTK_FLOAT, this->Texels[static_cast<std::size_t>(q)].data());
   }
+  // The lobe table: the same for every far field, made once.
+  if (ok && !(this->LobeTable && this->LobeTable->GetHandle()))
+  {
+    if (!this->LobeTable)
+    {
+      this->LobeTable = vtkTextureObject::New();
+      this->LobeTable->SetContext(rw);
+      this->LobeTable->SetInternalFormat(GL_RGBA32F);
+      this->LobeTable->SetFormat(GL_RGBA);
+      this->LobeTable->SetDataType(GL_FLOAT);
+      this->LobeTable->SetMinificationFilter(vtkTextureObject::Nearest);
+      this->LobeTable->SetMagnificationFilter(vtkTextureObject::Nearest);
+      this->LobeTable->SetWrapS(vtkTextureObject::ClampToEdge);
+      this->LobeTable->SetWrapT(vtkTextureObject::ClampToEdge);
+    }
+    ok = this->LobeTable->Create2DFromRaw(static_cast<unsigned int>(LobeTableCosines),
+      static_cast<unsigned int>(LobeTableRows), 4, VTK_FLOAT,
+      const_cast<float*>(GetLobeProjectionTable().Texels.data()));
+  }
   this->Dims = ok ? grid.Dims : std::array<int, 3>{ { 0, 0, 0 } };
   this->SharedColor = ok ? plan.SharedColor : glm::dvec3(0.0);
   this->BuildTime =
@@ -117,6 +136,10 @@ void vtkClusteredLightingFarFieldTextures::Activate()
       tex->Activate();
     }
   }
+  if (this->LobeTable && this->LobeTable->GetHandle())
+  {
+    this->LobeTable->Activate();
+  }
 }
 
 void vtkClusteredLightingFarFieldTextures::Deactivate()
@@ -128,6 +151,15 @@ void vtkClusteredLightingFarFieldTextures::Deactivate()
       tex->Deactivate();
     }
   }
+  if (this->LobeTable && this->LobeTable->GetTextureUnit() >= 0)
+  {
+    this->LobeTable->Deactivate();
+  }
+}
+
+int vtkClusteredLightingFarFieldTextures::GetLobeTableUnit() const
+{
+  return this->LobeTable ? this->LobeTable->GetTextureUnit() : -1;
 }
 
 std::array<int, FarFieldTextures> vtkClusteredLightingFarFieldTextures::GetUnits() const
@@ -143,8 +175,15 @@ std::array<int, FarFieldTextures> vtkClusteredLightingFarFieldTextures::GetUnits
 //------------------------------------------------------------------------------
 std::uint64_t vtkClusteredLightingFarFieldTextures::GetBytes() const
 {
-  return 16ull * static_cast<std::uint64_t>(this->GetNumberOfGLObjects()) *
-    static_cast<std::uint64_t>(this->Dims[0]) * this->Dims[1] * this->Dims[2];
+  int moments = 0;
+  for (vtkTextureObject* tex : this->Textures)
+  {
+    moments += (tex && tex->GetHandle()) ? 1 : 0;
+  }
+  const bool table = this->LobeTable && this->LobeTable->GetHandle();
+  return 16ull * static_cast<std::uint64_t>(moments) * static_cast<std::uint64_t>(this->Dims[0]) *
+    this->Dims[1] * this->Dims[2] +
+    (table ? static_cast<std::uint64_t>(LobeTableBytes) : 0u);
 }
 
 int vtkClusteredLightingFarFieldTextures::GetNumberOfGLObjects() const
@@ -154,6 +193,7 @@ int vtkClusteredLightingFarFieldTextures::GetNumberOfGLObjects() const
   {
     n += (tex && tex->GetHandle()) ? 1 : 0;
   }
+  n += (this->LobeTable && this->LobeTable->GetHandle()) ? 1 : 0;
   return n;
 }
 
@@ -167,6 +207,10 @@ void vtkClusteredLightingFarFieldTextures::GetGLObjectNames(
       names.emplace_back(GL_TEXTURE, tex->GetHandle());
     }
   }
+  if (this->LobeTable && this->LobeTable->GetHandle())
+  {
+    names.emplace_back(GL_TEXTURE, this->LobeTable->GetHandle());
+  }
 }
 
 void vtkClusteredLightingFarFieldTextures::Release(vtkWindow* w)
@@ -175,6 +219,7 @@ void vtkClusteredLightingFarFieldTextures::Release(vtkWindow* w)
   {
     vtkClusteredLightingReleaseObject(tex, w);
   }
+  vtkClusteredLightingReleaseObject(this->LobeTable, w);
   this->Dims = { { 0, 0, 0 } };
   this->SharedColor = glm::dvec3(0.0);
   for (std::vector<float>& t : this->Texels)

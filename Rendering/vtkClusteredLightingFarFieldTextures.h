@@ -19,7 +19,9 @@
  * clamped to edge. When the far-field lights share a colour (FarFieldPlan::SharedColor,
  * FindFarFieldSharedColor) the far field is one channel times that colour: 3 textures (9
  * moments per node, 48 bytes), textures 3 to 6 released (their units -1), and the node
- * sums run for that channel only (a third of the multiply-adds).
+ * sums run for that channel only (a third of the multiply-adds). Beside them, made at the
+ * first build and kept: the Phong far specular's table (GetLobeProjectionTable, one RGBA32F
+ * 2D texture of 65 x 66 texels, 68,640 bytes, read with texelFetch).
  *
  * @sa vtkClusteredLightingAssigner
  */
@@ -62,6 +64,8 @@ public:
   void Activate();
   void Deactivate();
   std::array<int, vtkClusteredLighting::FarFieldTextures> GetUnits() const;
+  /// Unit of the lobe table's texture (-1 when not bound).
+  int GetLobeTableUnit() const;
   ///@}
 
   std::uint64_t GetBytes() const;
@@ -74,6 +78,7 @@ private:
   void operator=(const vtkClusteredLightingFarFieldTextures&) = delete;
 
   std::array<vtkTextureObject*, vtkClusteredLighting::FarFieldTextures> Textures{};
+  vtkTextureObject* LobeTable = nullptr; ///< the lit-side lobe's coefficients
   std::array<int, 3> Dims = { { 0, 0, 0 } };
   std::vector<double> Moments; ///< node sums, reused from build to build (animated lights)
   std::array<std::vector<float>, vtkClusteredLighting::FarFieldTextures> Texels; ///< packed, reused

@@ -1427,6 +1427,10 @@ bool vtkClusteredLightingPass::SetShaderParameters(
         program->SetUniformi(farFieldSamplers[q], r.FarFieldUnits[static_cast<std::size_t>(q)]);
       }
     }
+    if (program->IsUniformUsed("clLobeTable"))
+    {
+      program->SetUniformi("clLobeTable", r.LobeTableUnit);
+    }
     if (program->IsUniformUsed("clFarFieldColor"))
     {
       program->SetUniform3f("clFarFieldColor", r.FarFieldColor);

@@ -28,8 +28,11 @@
  *
  *   E(N) = S/4 + (V.N)/2 + (5/16) (3 N^T T N - S) / 2
  *
- * and Phong specular, sum g_j max(0, L_j.R)^n for the reflected view direction R, uses the
- * Legendre coefficients of max(0, t)^n the same way (ComputeLobeKernel). A node's
+ * and Phong specular, sum g_j max(0, L_j.R)^n over the lights in front of the surface
+ * (N.L_j > 0) for the reflected view direction R, the Legendre coefficients of the whole
+ * lobe (ComputeLobeKernel) where the far light is in front of the surface, and the order-2
+ * projection of the lit-side lobe where a share of it comes from behind (ApplyFarLobe,
+ * since 2026-12-06: the whole lobe alone was too bright at low powers). A node's
  * moments are interpolated trilinearly to the shaded point, then the kernels are applied.
  *
  * What the far field holds. Lights without an explicit radius (VTK's inverse-square and
@@ -57,6 +60,7 @@
 #define vtkClusteredLightingFarField_h
 
 #include "vtkClusteredLightingLights.h"
+#include "vtkClusteredLightingLobeProjection.h"
 
 #include <algorithm> // for std::max, std::any_of
 #include <array>     // for std::array
@@ -723,20 +727,14 @@ inline double ComputeLobeQuadraticUpperShift(double dS, double dV, double dD)
  * n = 1.2 a lobe can hold 20% more). Clamping an estimate into an interval that holds the truth
  * never increases its error; it removes the order-2 kernel's ringing where it matters most: a
  * surface facing away from most of the far light gets no phantom light (the kernel's
- * value at t = -1 is 1/16). `lower` and `upper` receive the interval.
+ * value at t = -1 is 1/16). `lower` and `upper` receive the interval
+ * (ComputeMomentInterval, from S, V.D and D^T T D alone).
  */
-inline double ApplyMomentKernel(const double* m, const glm::dvec3& k, const glm::dvec3& D,
-  bool lobe = false, double power = 1.0, double* lowerOut = nullptr, double* upperOut = nullptr)
+inline void ComputeMomentInterval(
+  double S, double VD, double DTD, bool lobe, double power, double& lower, double& upper)
 {
-  const double S = m[0];
-  const double VD = m[1] * D.x + m[2] * D.y + m[3] * D.z;
-  const double Tzz = S - m[4] - m[5];
-  const double DTD = m[4] * D.x * D.x + m[5] * D.y * D.y + Tzz * D.z * D.z +
-    2.0 * (m[6] * D.x * D.y + m[7] * D.x * D.z + m[8] * D.y * D.z);
-  const double estimate = k.x * S + k.y * VD + k.z * 0.5 * (3.0 * DTD - S);
-  double upper =
-    std::min(0.5 * (VD + std::sqrt(std::max(S * DTD, 0.0))), 0.25 * (S + 2.0 * VD + DTD));
-  double lower = std::max(std::max(VD, 0.0), 0.5 * (VD + DTD));
+  upper = std::min(0.5 * (VD + std::sqrt(std::max(S * DTD, 0.0))), 0.25 * (S + 2.0 * VD + DTD));
+  lower = std::max(std::max(VD, 0.0), 0.5 * (VD + DTD));
   if (lobe)
   {
     const LobeUpperEnd end = GetLobeUpperEnd(power);
@@ -746,6 +744,19 @@ inline double ApplyMomentKernel(const double* m, const glm::dvec3& k, const glm:
     lower = 0.0;
   }
   upper = std::max(upper, lower);
+}
+
+inline double ApplyMomentKernel(const double* m, const glm::dvec3& k, const glm::dvec3& D,
+  bool lobe = false, double power = 1.0, double* lowerOut = nullptr, double* upperOut = nullptr)
+{
+  const double S = m[0];
+  const double VD = m[1] * D.x + m[2] * D.y + m[3] * D.z;
+  const double Tzz = S - m[4] - m[5];
+  const double DTD = m[4] * D.x * D.x + m[5] * D.y * D.y + Tzz * D.z * D.z +
+    2.0 * (m[6] * D.x * D.y + m[7] * D.x * D.z + m[8] * D.y * D.z);
+  const double estimate = k.x * S + k.y * VD + k.z * 0.5 * (3.0 * DTD - S);
+  double lower = 0.0, upper = 0.0;
+  ComputeMomentInterval(S, VD, DTD, lobe, power, lower, upper);
   if (lowerOut)
   {
     *lowerOut = lower;
@@ -767,14 +778,66 @@ inline glm::dvec3 EvaluateFarDiffuse(
     ApplyMomentKernel(&m[std::size_t{ 2 } * FarFieldMomentsPerChannel], k, N));
 }
 
-/// Phong far specular (per channel) for the reflected view direction R and power n.
-inline glm::dvec3 EvaluateFarSpecular(
-  const std::array<double, FarFieldFloatsPerNode>& m, const glm::dvec3& R, double n)
+/**
+ * How much of the lit-side lobe's projection ApplyFarLobe takes (the rest from the zonal
+ * lobe): the far light behind the surface, cosine-weighted, B = sum g max(0, -N.L), as a
+ * share of D + B (D the diffuse estimate, the light in front), over LobeBlendShare, at
+ * most 1. B is taken at the least the moments allow, max(0, -V.N, (N^T T N - V.N) / 2)
+ * (ApplyMomentKernel's lower end for -N), which is exactly 0 wherever every far light is
+ * in front (there t^2 <= t). The zonal lobe is the better order-2 estimate there (a floor
+ * under the lights: the projection of the lit-side lobe, cut at the horizon, fits its lit
+ * side worse), the projection wherever a tenth of the light or more comes from behind (a
+ * sphere among the lights); docs/far-field.md, "Low specular powers".
+ */
+constexpr double LobeBlendShare = 0.1;
+inline double ComputeLobeBlend(double D, double VN, double NN)
 {
-  const glm::dvec3 k = ComputeLobeKernel(n);
-  return glm::dvec3(ApplyMomentKernel(&m[0], k, R, true, n),
-    ApplyMomentKernel(&m[FarFieldMomentsPerChannel], k, R, true, n),
-    ApplyMomentKernel(&m[std::size_t{ 2 } * FarFieldMomentsPerChannel], k, R, true, n));
+  const double back = std::max(std::max(-VN, 0.0), 0.5 * (NN - VN));
+  const double total = D + back;
+  return total > 0.0 ? std::min(back / (LobeBlendShare * total), 1.0) : 0.0;
+}
+
+/**
+ * Phong far specular of one channel's moments m for unit normal N, mirrored view R and
+ * power n: VTK's lobe on the lit side. The zonal lobe's estimate (ApplyMomentKernel, clamped
+ * into the lobe's interval, which `lower` and `upper` receive) moved toward the lit-side
+ * lobe's order-2 projection (vtkClusteredLightingLobeProjection.h, the table's
+ * coefficients) by ComputeLobeBlend, and clamped again: the result lies between the two
+ * clamped estimates, so its error is at most the larger of theirs (which the stated bound
+ * takes). Mirrors clApplyFarLobe.
+ */
+inline double ApplyFarLobe(const double* m, const glm::dvec3& N, const glm::dvec3& R, double n,
+  double* lowerOut = nullptr, double* upperOut = nullptr)
+{
+  double lower = 0.0, upper = 0.0;
+  const double zonal = ApplyMomentKernel(m, ComputeLobeKernel(n), R, true, n, &lower, &upper);
+  double c = 0.0;
+  const glm::dvec3 X = ComputeLobeAxis(N, R, c);
+  const double projected = ApplyLobeProjectionToMoments(m, LookupLobeProjection(c, n), X, R);
+  const double D = ApplyMomentKernel(m, ComputeLobeKernel(1.0), N);
+  const double zz = m[0] - m[4] - m[5];
+  const double NN = m[4] * N.x * N.x + m[5] * N.y * N.y + zz * N.z * N.z +
+    2.0 * (m[6] * N.x * N.y + m[7] * N.x * N.z + m[8] * N.y * N.z);
+  const double a = ComputeLobeBlend(D, m[1] * N.x + m[2] * N.y + m[3] * N.z, NN);
+  const double estimate = zonal + a * (projected - zonal);
+  if (lowerOut)
+  {
+    *lowerOut = lower;
+  }
+  if (upperOut)
+  {
+    *upperOut = upper;
+  }
+  return std::min(std::max(estimate, lower), upper);
+}
+
+/// Phong far specular (per channel) for unit normal N, mirrored view R and power n.
+inline glm::dvec3 EvaluateFarSpecular(const std::array<double, FarFieldFloatsPerNode>& m,
+  const glm::dvec3& N, const glm::dvec3& R, double n)
+{
+  return glm::dvec3(ApplyFarLobe(&m[0], N, R, n),
+    ApplyFarLobe(&m[FarFieldMomentsPerChannel], N, R, n),
+    ApplyFarLobe(&m[std::size_t{ 2 } * FarFieldMomentsPerChannel], N, R, n));
 }
 
 /**

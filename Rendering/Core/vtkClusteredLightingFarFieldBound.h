@@ -11,9 +11,13 @@
  *  1. Angular truncation: |sum_j g_j (q(t_j) - k(t_j))|, where g_j is light j's far part
  *     at the point, t_j the cosine to the normal (diffuse) or to the mirrored view
  *     (specular), k the true kernel (max(0, t), the Phong lobe with no light from behind
- *     the surface) and q its order-2 approximation. With the exact moments at the point,
- *     the kernel's estimate is sum_j g_j q(t_j), so this is its error exactly (a signed
- *     sum: the lights' errors partly cancel), not a bound of it.
+ *     the surface) and q its order-2 approximation (for the specular, two of them: the
+ *     whole lobe's, and the projection of the lit-side lobe, a function of the direction
+ *     rather than of t alone, with the table's coefficients,
+ *     vtkClusteredLightingLobeProjection.h; ApplyFarLobe takes a value between the two, so
+ *     the larger of their bounds holds). With the exact moments at the point, the kernel's
+ *     estimate is sum_j g_j q(t_j), so this is its error exactly (a signed sum: the
+ *     lights' errors partly cancel), not a bound of it.
  *  2. Interpolation and aggregation, source by source: the grid's value at the point is
  *     sum_c w_c (sum of the sources of corner c), the trilinear weights w_c of the 8
  *     corners and each corner's sources from the tree walk of its block. Grouping the
@@ -101,16 +105,37 @@ struct FarFieldBoundCache
 
 namespace Detail
 {
+/// A point's specular kernel: the lit-side lobe's projection and its axis
+/// (vtkClusteredLightingLobeProjection.h), as ApplyFarLobe takes them.
+struct BoundLobe
+{
+  glm::dvec3 Zonal = glm::dvec3(0.0); ///< ComputeLobeKernel(power)
+  LobeProjection K;
+  glm::dvec3 X = glm::dvec3(0.0);
+};
+inline BoundLobe MakeBoundLobe(const FarFieldShadingPoint& s)
+{
+  BoundLobe b;
+  b.Zonal = ComputeLobeKernel(s.Power);
+  double c = 0.0;
+  b.X = ComputeLobeAxis(s.N, s.R, c);
+  b.K = LookupLobeProjection(c, s.Power);
+  return b;
+}
+
 /// The quantities whose errors the bound needs, for one light's far part g (per unit
-/// colour) from unit direction u: S, V.N, N^T T N, q_1(N.u), V.R, R^T T R, q_n(R.u).
-constexpr int BoundQuantities = 7;
+/// colour) from unit direction u: S, V.N, N^T T N, q_1(N.u), V.R, R^T T R, and the two
+/// specular estimates ApplyFarLobe blends, q_n(R.u) (zonal) and the lit-side projection.
+constexpr int BoundQuantities = 8;
 inline void AddBoundQuantities(const FarFieldShadingPoint& s, const glm::dvec3& qd,
-  const glm::dvec3& qn, const glm::dvec3& color, double g, const glm::dvec3& u, double* out)
+  const BoundLobe& qn, const glm::dvec3& color, double g, const glm::dvec3& u, double* out)
 {
   const double tn = glm::dot(s.N, u), tr = glm::dot(s.R, u);
+  const glm::dvec3& qz = qn.Zonal;
   const double v[BoundQuantities] = { 1.0, tn, tn * tn,
     qd.x + qd.y * tn + qd.z * 0.5 * (3.0 * tn * tn - 1.0), tr, tr * tr,
-    qn.x + qn.y * tr + qn.z * 0.5 * (3.0 * tr * tr - 1.0) };
+    qz.x + qz.y * tr + qz.z * 0.5 * (3.0 * tr * tr - 1.0),
+    EvaluateLobeProjection(qn.K, qn.X, s.R, u) };
   for (int c = 0; c < 3; ++c)
   {
     for (int k = 0; k < BoundQuantities; ++k)
@@ -123,7 +148,7 @@ inline void AddBoundQuantities(const FarFieldShadingPoint& s, const glm::dvec3& 
 /// ComputeFarFieldTerms: S, V, T as xx, yy, xy, xz, yz; trace T = S), as a group's spread
 /// terms (ComputeGroupSpreadTerms) add them: each quantity is linear in the moments.
 inline void AddBoundMomentQuantities(const FarFieldShadingPoint& s, const glm::dvec3& qd,
-  const glm::dvec3& qn, const glm::dvec3& color, const double (&dm)[FarFieldMomentsPerChannel],
+  const BoundLobe& qn, const glm::dvec3& color, const double (&dm)[FarFieldMomentsPerChannel],
   double* out)
 {
   const glm::dvec3 V(dm[1], dm[2], dm[3]);
@@ -133,7 +158,8 @@ inline void AddBoundMomentQuantities(const FarFieldShadingPoint& s, const glm::d
   const double vr = glm::dot(V, s.R), rr = glm::dot(s.R, T * s.R);
   const double v[BoundQuantities] = { dm[0], vn, nn,
     qd.x * dm[0] + qd.y * vn + qd.z * 0.5 * (3.0 * nn - dm[0]), vr, rr,
-    qn.x * dm[0] + qn.y * vr + qn.z * 0.5 * (3.0 * rr - dm[0]) };
+    qn.Zonal.x * dm[0] + qn.Zonal.y * vr + qn.Zonal.z * 0.5 * (3.0 * rr - dm[0]),
+    ApplyLobeProjectionToMoments(dm, qn.K, qn.X, s.R) };
   for (int c = 0; c < 3; ++c)
   {
     for (int k = 0; k < BoundQuantities; ++k)
@@ -179,10 +205,10 @@ inline void ComputeFarFieldErrorBounds(const FarFieldShadingPoint* points, int c
   const FarFieldShadingPoint& s = points[0]; // the position all of them share
   const std::size_t n = static_cast<std::size_t>(count);
   const glm::dvec3 qd = ComputeLobeKernel(1.0);
-  std::vector<glm::dvec3> qn(n);
+  std::vector<Detail::BoundLobe> qn(n);
   for (std::size_t k = 0; k < n; ++k)
   {
-    qn[k] = ComputeLobeKernel(points[k].Power);
+    qn[k] = Detail::MakeBoundLobe(points[k]);
   }
   constexpr int Q = Detail::BoundQuantities;
   // Each atom's values: the points' 3 Q quantities one after the other.
@@ -398,7 +424,8 @@ inline void ComputeFarFieldErrorBounds(const FarFieldShadingPoint* points, int c
   // light of the tree is in every corner's list, so its atom has a slot already; a spot
   // light whose cone reaches no corner's block gets one here (its grid value is 0).
   std::vector<double> exact(interpolated.size(), 0.0);
-  std::vector<glm::dvec3> angularDiffuse(n, glm::dvec3(0.0)), angularSpecular(n, glm::dvec3(0.0));
+  std::vector<glm::dvec3> angularDiffuse(n, glm::dvec3(0.0)), angularZonal(n, glm::dvec3(0.0)),
+    angularProjected(n, glm::dvec3(0.0));
   std::vector<glm::dvec3> exactNN(n, glm::dvec3(0.0)), exactRR(n, glm::dvec3(0.0));
   glm::dvec3 exactS(0.0); // the far light at the point: S exactly
   const std::size_t inTree = tree.Order.size();
@@ -422,10 +449,11 @@ inline void ComputeFarFieldErrorBounds(const FarFieldShadingPoint* points, int c
       Detail::AddBoundQuantities(p, qd, qn[k], lights[li].Color, far, u, o);
       const double tn = glm::dot(p.N, u), tr = glm::dot(p.R, u);
       const double lobe = tn > 0.0 && tr > 0.0 ? std::pow(tr, p.Power) : 0.0;
-      const glm::dvec3& qk = qn[k];
       angularDiffuse[k] +=
         g * (qd.x + qd.y * tn + qd.z * 0.5 * (3 * tn * tn - 1) - std::max(0.0, tn));
-      angularSpecular[k] += g * (qk.x + qk.y * tr + qk.z * 0.5 * (3 * tr * tr - 1) - lobe);
+      const glm::dvec3& qz = qn[k].Zonal;
+      angularZonal[k] += g * (qz.x + qz.y * tr + qz.z * 0.5 * (3 * tr * tr - 1) - lobe);
+      angularProjected[k] += g * (EvaluateLobeProjection(qn[k].K, qn[k].X, p.R, u) - lobe);
       exactNN[k] += g * tn * tn;
       exactRR[k] += g * tr * tr;
     }
@@ -438,7 +466,7 @@ inline void ComputeFarFieldErrorBounds(const FarFieldShadingPoint* points, int c
     glm::dvec3& bound = bounds[k];
     for (int ch = 0; ch < 3; ++ch)
     {
-      double delta[Q] = {};
+      double delta[Q] = {}, total[Q] = {};
       for (int q = 0; q < Q; ++q)
       {
         delta[q] = edge[std::size_t{ 3 } * Q * k + static_cast<std::size_t>(ch * Q + q)];
@@ -450,10 +478,11 @@ inline void ComputeFarFieldErrorBounds(const FarFieldShadingPoint* points, int c
           const std::size_t at =
             stride * a + std::size_t{ 3 } * Q * k + static_cast<std::size_t>(ch * Q + q);
           delta[q] += std::abs(interpolated[at] - exact[at]);
+          total[q] += exact[at];
         }
       }
       const double dS = delta[0], dVN = delta[1], dNN = delta[2], dQd = delta[3];
-      const double dVR = delta[4], dRR = delta[5], dQn = delta[6];
+      const double dVR = delta[4], dRR = delta[5], dQz = delta[6], dQp = delta[7];
       // How far the clamp interval of ApplyMomentKernel can move.
       auto upperShift = [&](double dV, double dD, double D)
       {
@@ -461,16 +490,51 @@ inline void ComputeFarFieldErrorBounds(const FarFieldShadingPoint* points, int c
         const double d = std::max(exactS[ch] * dD + D * dS + dS * dD, 0.0);
         return std::max(0.5 * (dV + Detail::GetSquareRootShift(x, d)), 0.25 * (dS + 2.0 * dV + dD));
       };
-      const double lowerShiftN = std::max(dVN, 0.5 * (dVN + dNN));
-      const double diffuse = std::max(std::abs(angularDiffuse[k][ch]) + dQd,
-        std::max(lowerShiftN, upperShift(dVN, dNN, exactNN[k][ch])));
+      // An estimate within dQ of the exact moments' one, e, clamped into an interval whose
+      // ends lie within shiftLow and shiftHigh of the exact moments' [low, high]: its error
+      // is at most |e - truth| + dQ where the clamp cannot act (e at least dQ inside the
+      // interval's nearest possible ends), else also at most the ends' shift.
+      auto clamped = [](double angular, double dQ, double e, double low, double high,
+                       double shiftLow, double shiftHigh)
+      {
+        const double unclamped = std::abs(angular) + dQ;
+        const bool inside = e - dQ >= low + shiftLow && e + dQ <= high - shiftHigh;
+        return inside ? unclamped : std::max(unclamped, std::max(shiftLow, shiftHigh));
+      };
+      double low = 0.0, high = 0.0;
+      ComputeMomentInterval(exactS[ch], total[1], exactNN[k][ch], false, 1.0, low, high);
+      const double diffuseShiftLow = std::max(dVN, 0.5 * (dVN + dNN));
+      const double diffuseShiftHigh = upperShift(dVN, dNN, exactNN[k][ch]);
+      const double diffuse =
+        clamped(angularDiffuse[k][ch], dQd, total[3], low, high, diffuseShiftLow, diffuseShiftHigh);
+      // The blend weight ApplyFarLobe takes (ComputeLobeBlend of the clamped diffuse
+      // estimate, V.N and N^T T N), over every value those may have: a clamp moves by at
+      // most the most its value or its ends move; single precision adds its relative 1e-3.
+      const double slack = 1e-3 * std::max(exactS[ch], farLightAtCorners[ch]);
+      const double D0 = std::min(std::max(total[3], low), high);
+      const double dD = std::max(dQd, std::max(diffuseShiftLow, diffuseShiftHigh)) + slack;
+      // It grows with N^T T N and falls with D and V.N.
+      const double dV = dVN + slack, dN = dNN + slack;
+      const double blendLow =
+        ComputeLobeBlend(D0 + dD, total[1] + dV, std::max(exactNN[k][ch] - dN, 0.0));
+      const double blendHigh =
+        ComputeLobeBlend(std::max(D0 - dD, 0.0), total[1] - dV, exactNN[k][ch] + dN);
       // The lobe's upper end as ApplyMomentKernel takes it for this power.
       const LobeUpperEnd end = GetLobeUpperEnd(p.Power);
       const double lobeShift = end == LobeUpperEnd::SecondMoment
         ? std::max(
             upperShift(dVR, dRR, exactRR[k][ch]), ComputeLobeQuadraticUpperShift(dS, dVR, dRR))
         : (end == LobeUpperEnd::Diffuse ? upperShift(dVR, dRR, exactRR[k][ch]) : dS);
-      const double specular = std::max(std::abs(angularSpecular[k][ch]) + dQn, lobeShift);
+      // ApplyFarLobe's result lies between its two clamped estimates: at most the larger
+      // of their errors, or one's alone where the blend is surely 0 or 1.
+      ComputeMomentInterval(exactS[ch], total[4], exactRR[k][ch], true, p.Power, low, high);
+      const double zonalBound =
+        clamped(angularZonal[k][ch], dQz, total[6], low, high, 0.0, lobeShift);
+      const double projectedBound =
+        clamped(angularProjected[k][ch], dQp, total[7], low, high, 0.0, lobeShift);
+      const double specular = blendHigh <= 0.0
+        ? zonalBound
+        : (blendLow >= 1.0 ? projectedBound : std::max(zonalBound, projectedBound));
       const double precision =
         1e-3 * 1.25 * (p.Kd[ch] + p.Ks[ch]) * std::max(exactS[ch], farLightAtCorners[ch]);
       bound[ch] = p.Kd[ch] * diffuse + p.Ks[ch] * specular + precision;

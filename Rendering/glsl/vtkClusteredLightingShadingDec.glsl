@@ -193,6 +193,67 @@ vec3 clLobeKernel(float n)
 {
   return vec3(0.5 / (n + 1.0), 1.5 / (n + 2.0), 2.5 * (1.5 / (n + 3.0) - 0.5 / (n + 1.0)));
 }
+//CL_IF(SPECULAR)
+// The Phong far specular: VTK's lobe on the lit side only (N.L > 0), projected to order 2
+// (Rendering/Core/vtkClusteredLightingLobeProjection.h). Its six coefficients for c = N.R
+// and the power come from a 65 x 66 table (columns c in [-1, 1]; rows log2(1 + power) over
+// [0, log2(129)], (k_S, k_XV, k_RV, k_XX) in rows 0 to 32, (k_RR, k_XR) 33 rows further),
+// read texel by texel and interpolated bilinearly as LookupLobeProjection does.
+uniform sampler2D clLobeTable;
+vec4 clLobeTexel(ivec2 i, vec2 f, int row)
+{
+  return mix(mix(texelFetch(clLobeTable, i + ivec2(0, row), 0),
+               texelFetch(clLobeTable, i + ivec2(1, row), 0), f.x),
+    mix(texelFetch(clLobeTable, i + ivec2(0, row + 1), 0),
+      texelFetch(clLobeTable, i + ivec2(1, row + 1), 0), f.x),
+    f.y);
+}
+void clLobeProjection(float c, float power, out vec4 k0, out vec2 k1)
+{
+  vec2 f = vec2(clamp((c + 1.0) * 32.0, 0.0, 64.0),
+    log2(1.0 + clamp(power, 0.0, 128.0)) / log2(129.0) * 32.0);
+  ivec2 i = ivec2(min(floor(f), vec2(63.0, 31.0)));
+  f -= vec2(i);
+  k0 = clLobeTexel(i, f, 0);
+  k1 = clLobeTexel(i, f, 33).xy;
+}
+
+// Mirrors ApplyFarLobe for world normal N and mirrored view R: the zonal lobe's estimate
+// (clApplyFarKernel, clamped into the lobe's interval), moved toward the lit-side lobe's
+// projection by the share of far light behind the surface (ComputeLobeBlend: the least
+// light behind the moments allow, against D, the far diffuse estimate), clamped again.
+vec3 clApplyFarLobe(vec3 N, vec3 R, float power, vec3 D, vec3 S, vec3 Vx, vec3 Vy, vec3 Vz,
+  vec3 Txx, vec3 Tyy, vec3 Txy, vec3 Txz, vec3 Tyz, out vec3 lower, out vec3 upper)
+{
+  vec3 zonal = clApplyFarKernel(clLobeKernel(power), R, S, Vx, Vy, Vz, Txx, Tyy, Txy, Txz, Tyz,
+    true, power, lower, upper);
+  float c = dot(N, R);
+  vec3 w = N - c * R;
+  float len = length(w);
+  vec3 X = len > 1e-6 ? w / len : vec3(0.0);
+  vec4 k0;
+  vec2 k1;
+  clLobeProjection(c, power, k0, k1);
+  vec3 Tzz = S - Txx - Tyy;
+  vec3 XV = Vx * X.x + Vy * X.y + Vz * X.z;
+  vec3 RV = Vx * R.x + Vy * R.y + Vz * R.z;
+  vec3 XTX = Txx * (X.x * X.x) + Tyy * (X.y * X.y) + Tzz * (X.z * X.z) +
+    2.0 * (Txy * (X.x * X.y) + Txz * (X.x * X.z) + Tyz * (X.y * X.z));
+  vec3 RTR = Txx * (R.x * R.x) + Tyy * (R.y * R.y) + Tzz * (R.z * R.z) +
+    2.0 * (Txy * (R.x * R.y) + Txz * (R.x * R.z) + Tyz * (R.y * R.z));
+  vec3 XTR = Txx * (X.x * R.x) + Tyy * (X.y * R.y) + Tzz * (X.z * R.z) +
+    Txy * (X.x * R.y + X.y * R.x) + Txz * (X.x * R.z + X.z * R.x) + Tyz * (X.y * R.z + X.z * R.y);
+  vec3 projected = k0.x * S + k0.y * XV + k0.z * RV + k0.w * XTX + k1.x * RTR + k1.y * XTR;
+  vec3 VN = Vx * N.x + Vy * N.y + Vz * N.z;
+  vec3 NTN = Txx * (N.x * N.x) + Tyy * (N.y * N.y) + Tzz * (N.z * N.z) +
+    2.0 * (Txy * (N.x * N.y) + Txz * (N.x * N.z) + Tyz * (N.y * N.z));
+  vec3 back = max(max(-VN, vec3(0.0)), 0.5 * (NTN - VN));
+  vec3 total = D + back;
+  vec3 a = mix(vec3(0.0), min(back / max(0.1 * total, vec3(1e-30)), vec3(1.0)),
+    greaterThan(total, vec3(0.0)));
+  return min(max(zonal + a * (projected - zonal), lower), upper);
+}
+//CL_ENDIF
 //CL_ENDIF
 //CL_IF(HEAT_MAP)
 uniform float clHeatMapMaximum;

@@ -66,9 +66,10 @@
 //CL_IF(PHONG)
   vec3 clDiffuseScale = diffuseColor;
 //CL_IF(SPECULAR)
+  // VTK's lobe about the mirrored view, only for lights in front of the surface.
   vec3 clR = 2.0 * dot(clN, clV) * clN - clV;
-  clFarSpecular = clApplyFarKernel(clLobeKernel(specularPower), clWorldFromVC * clR, clS, clVx,
-    clVy, clVz, clTxx, clTyy, clTxy, clTxz, clTyz, true, specularPower, clSpecularLow,
+  clFarSpecular = clApplyFarLobe(clWorldFromVC * clN, clWorldFromVC * clR, specularPower,
+    clFarDiffuse, clS, clVx, clVy, clVz, clTxx, clTyy, clTxy, clTxz, clTyz, clSpecularLow,
     clSpecularHigh);
 //CL_ENDIF
 //CL_ENDIF

@@ -411,7 +411,7 @@ void PrintWorstSamples(const std::vector<Sample>& samples, const std::vector<glm
         }
       }
       q.PointD = EvaluateFarDiffuse(m, smp.N);
-      q.PointS = smp.Ks > 0.0 ? EvaluateFarSpecular(m, R, smp.Power) : glm::dvec3(0.0);
+      q.PointS = smp.Ks > 0.0 ? EvaluateFarSpecular(m, smp.N, R, smp.Power) : glm::dvec3(0.0);
       if (orders)
       {
         const auto& kd = diffuseKernel;
@@ -438,7 +438,7 @@ void PrintWorstSamples(const std::vector<Sample>& samples, const std::vector<glm
       }
       const auto g = InterpolateFarMoments(grid, values, smp.P);
       q.GridD = EvaluateFarDiffuse(g, smp.N);
-      q.GridS = smp.Ks > 0.0 ? EvaluateFarSpecular(g, R, smp.Power) : glm::dvec3(0.0);
+      q.GridS = smp.Ks > 0.0 ? EvaluateFarSpecular(g, smp.N, R, smp.Power) : glm::dvec3(0.0);
       double total = 0.0;
       for (int c = 0; c < 3; ++c)
       {
@@ -822,7 +822,7 @@ int main(int argc, char* argv[])
               const auto m = InterpolateFarMoments(grid, values, smp.P);
               const glm::dvec3 R = 2.0 * glm::dot(smp.N, smp.V) * smp.N - smp.V;
               sum += EvaluateFarDiffuse(m, smp.N) * smp.Kd +
-                (smp.Ks > 0.0 ? EvaluateFarSpecular(m, R, smp.Power) * smp.Ks : glm::dvec3(0.0));
+                (smp.Ks > 0.0 ? EvaluateFarSpecular(m, smp.N, R, smp.Power) * smp.Ks : glm::dvec3(0.0));
               if (bounds)
               {
                 // The stated bound per channel, against the actual (unrounded) error.

@@ -96,11 +96,12 @@ inline GLNames TakeGLNameCensus(vtkRenderWindow* rw)
 
 /// GL objects one renderer's assignment holds: 10 (light data and view textures and
 /// buffers, the list and master textures, framebuffers, vertex array), plus the far field's
-/// 7 moment textures while the renderer's lights have a far field, plus the cluster-depth
+/// 7 moment textures and its specular table while the renderer's lights have a far field
+/// (vtkClusteredLightingLobeProjection.h, since 2026-12-06), plus the cluster-depth
 /// and cluster-rectangle textures while its clusters are depth-aware, plus the copy of the
 /// prepass's depths (a framebuffer and a renderbuffer) while they are kept for the next frame.
 constexpr int AssignmentGLObjects = 10;
-constexpr int FarFieldGLObjects = 7;
+constexpr int FarFieldGLObjects = 8;
 constexpr int DepthAwareGLObjects = 2;
 constexpr int SavedDepthGLObjects = 2;
 

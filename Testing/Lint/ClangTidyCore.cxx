@@ -11,6 +11,7 @@
 #include "vtkClusteredLightingGrid.h"
 #include "vtkClusteredLightingLayout.h"
 #include "vtkClusteredLightingLights.h"
+#include "vtkClusteredLightingLobeProjection.h"
 #include "vtkClusteredLightingMessages.h"
 #include "vtkClusteredLightingMorton.h"
 #include "vtkClusteredLightingPrepassChoice.h"

@@ -95,7 +95,7 @@ glm::dvec3 ApproximateFar(
   const FarFieldShadingPoint& s, const FarFieldGrid& grid, const std::vector<double>& moments)
 {
   const std::array<double, FarFieldFloatsPerNode> m = InterpolateFarMoments(grid, moments, s.P);
-  return EvaluateFarDiffuse(m, s.N) * s.Kd + EvaluateFarSpecular(m, s.R, s.Power) * s.Ks;
+  return EvaluateFarDiffuse(m, s.N) * s.Kd + EvaluateFarSpecular(m, s.N, s.R, s.Power) * s.Ks;
 }
 
 /// Expects built node moments within 1e-4 of each node's far light S (single-precision
@@ -1374,8 +1374,13 @@ TEST(FarFieldBound, HoldsForUniformLightsAtEveryScale)
     const BoundCheck check = CheckBound(lights, b, lo, hi, 1500, "uniform");
     std::printf("uniform, scale %g: largest error / bound %.3f, mean bound / mean error %.2f\n",
       scale, check.Worst, check.SumBound / check.SumError);
-    // Informative as well as safe: on average within a few times the error (3.4 here;
+    // Informative as well as safe: on average within a few times the error (4.99 here;
     // 13.8 when the clamp's square-root end moved by sqrt(d) instead of what d allows).
+    // Until 2026-12-06 this read 3.4, but only because the zonal specular kernel's bias
+    // made the errors of the specular half of the points large (the diffuse points alone
+    // gave 7.7): the blend with the lit-side lobe (ApplyFarLobe) cut the summed error from
+    // 1,889 to 661, and the clamp term, now counted only where the clamp can act, the
+    // summed bound from 6,494 to 3,298.
     EXPECT_LT(check.SumBound, 5.0 * check.SumError) << scale;
   }
 }
@@ -1421,7 +1426,9 @@ TEST(FarFieldBound, HoldsForSpotLightsAcrossTheirConeEdges)
   const BoundCheck check = CheckBound(lights, b, glm::dvec3(-1), glm::dvec3(1), 1500, "spots");
   std::printf("spot lights: largest error / bound %.3f, mean bound / mean error %.2f\n",
     check.Worst, check.SumBound / check.SumError);
-  EXPECT_LT(check.SumBound, 5.0 * check.SumError);
+  // 6.06 here (50.1 against 8.26); 4.54 before 2026-12-06, when the zonal specular
+  // kernel's larger errors were in the denominator (see HoldsForUniformLightsAtEveryScale).
+  EXPECT_LT(check.SumBound, 6.5 * check.SumError);
 
   // The hardest edges: spot lights on grid nodes with 45-degree cones along the axes,
   // so that whole diagonals of nodes lie on their edges, where single precision may put a

@@ -822,7 +822,8 @@ int main(int argc, char* argv[])
               const auto m = InterpolateFarMoments(grid, values, smp.P);
               const glm::dvec3 R = 2.0 * glm::dot(smp.N, smp.V) * smp.N - smp.V;
               sum += EvaluateFarDiffuse(m, smp.N) * smp.Kd +
-                (smp.Ks > 0.0 ? EvaluateFarSpecular(m, smp.N, R, smp.Power) * smp.Ks : glm::dvec3(0.0));
+                (smp.Ks > 0.0 ? EvaluateFarSpecular(m, smp.N, R, smp.Power) * smp.Ks
+                              : glm::dvec3(0.0));
               if (bounds)
               {
                 // The stated bound per channel, against the actual (unrounded) error.

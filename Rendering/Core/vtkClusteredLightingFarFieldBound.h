@@ -105,8 +105,9 @@ struct FarFieldBoundCache
 
 namespace Detail
 {
-/// A point's specular kernel: the lit-side lobe's projection and its axis
-/// (vtkClusteredLightingLobeProjection.h), as ApplyFarLobe takes them.
+/// A point's two specular kernels, as ApplyFarLobe takes them: the zonal lobe's Legendre
+/// coefficients, and the lit-side lobe's projection with its axis
+/// (vtkClusteredLightingLobeProjection.h).
 struct BoundLobe
 {
   glm::dvec3 Zonal = glm::dvec3(0.0); ///< ComputeLobeKernel(power)

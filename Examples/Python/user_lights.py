@@ -32,10 +32,9 @@ gives, also allocates the far field's buffers and textures);
 --back-face-sums also renders with FarFieldExactSumsOnBackFaces on (the floor here is a
 back face: vtkPlaneSource's normal points down). --specular-power POWER sets both actors'
 specular power (20 by default; VTK's own default is 1) and --floor-specular SPECULAR the
-floor's specular coefficient (0 by default; the sphere's is 0.5). --counts prints the lights evaluated and
-reaching per pixel of each clustered render. The
-default render's line also gives the far field's build time and how many lights it
-splits.
+floor's specular coefficient (0 by default; the sphere's is 0.5). --counts prints the
+lights evaluated and reaching per pixel of each clustered render. The default render's
+line also gives the far field's build time and how many lights it splits.
 
     PYTHONPATH=build/lib/python3/dist-packages \\
       scripts/with-display.sh /usr/bin/python3 Examples/Python/user_lights.py

@@ -815,10 +815,8 @@ inline double ApplyFarLobe(const double* m, const glm::dvec3& N, const glm::dvec
   const glm::dvec3 X = ComputeLobeAxis(N, R, c);
   const double projected = ApplyLobeProjectionToMoments(m, LookupLobeProjection(c, n), X, R);
   const double D = ApplyMomentKernel(m, ComputeLobeKernel(1.0), N);
-  const double zz = m[0] - m[4] - m[5];
-  const double NN = m[4] * N.x * N.x + m[5] * N.y * N.y + zz * N.z * N.z +
-    2.0 * (m[6] * N.x * N.y + m[7] * N.x * N.z + m[8] * N.y * N.z);
-  const double a = ComputeLobeBlend(D, m[1] * N.x + m[2] * N.y + m[3] * N.z, NN);
+  const double a =
+    ComputeLobeBlend(D, m[1] * N.x + m[2] * N.y + m[3] * N.z, ComputeMomentForm(m, N, N));
   const double estimate = zonal + a * (projected - zonal);
   if (lowerOut)
   {

@@ -260,17 +260,23 @@ inline double EvaluateLobeProjection(
   return k.S + k.XV * x + k.RV * r + k.XX * x * x + k.RR * r * r + k.XR * x * r;
 }
 
-/// The projection summed over one channel's moments m (S, Vx, Vy, Vz, Txx, Tyy, Txy, Txz,
-/// Tyz; Tzz = S - Txx - Tyy).
+/// A^T T B for one channel's moments m (S, Vx, Vy, Vz, Txx, Tyy, Txy, Txz, Tyz; Tzz = S -
+/// Txx - Tyy). Mirrors clMomentForm.
+inline double ComputeMomentForm(const double* m, const glm::dvec3& A, const glm::dvec3& B)
+{
+  return m[4] * A.x * B.x + m[5] * A.y * B.y + (m[0] - m[4] - m[5]) * A.z * B.z +
+    m[6] * (A.x * B.y + A.y * B.x) + m[7] * (A.x * B.z + A.z * B.x) +
+    m[8] * (A.y * B.z + A.z * B.y);
+}
+
+/// The projection summed over one channel's moments m (as ComputeMomentForm's).
 inline double ApplyLobeProjectionToMoments(
   const double* m, const LobeProjection& k, const glm::dvec3& X, const glm::dvec3& R)
 {
-  const double S = m[0];
   const glm::dvec3 V(m[1], m[2], m[3]);
-  const double zz = S - m[4] - m[5];
-  const glm::dmat3 T(m[4], m[6], m[7], m[6], m[5], m[8], m[7], m[8], zz);
-  return k.S * S + k.XV * glm::dot(V, X) + k.RV * glm::dot(V, R) + k.XX * glm::dot(X, T * X) +
-    k.RR * glm::dot(R, T * R) + k.XR * glm::dot(X, T * R);
+  return k.S * m[0] + k.XV * glm::dot(V, X) + k.RV * glm::dot(V, R) +
+    k.XX * ComputeMomentForm(m, X, X) + k.RR * ComputeMomentForm(m, R, R) +
+    k.XR * ComputeMomentForm(m, X, R);
 }
 } // namespace vtkClusteredLighting
 

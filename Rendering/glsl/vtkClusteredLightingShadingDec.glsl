@@ -218,6 +218,14 @@ void clLobeProjection(float c, float power, out vec4 k0, out vec2 k1)
   k1 = clLobeTexel(i, f, 33).xy;
 }
 
+// A^T T B per channel, T the moments' second-order tensor (Tzz = S - Txx - Tyy): mirrors
+// ComputeMomentForm.
+vec3 clMomentForm(vec3 A, vec3 B, vec3 S, vec3 Txx, vec3 Tyy, vec3 Txy, vec3 Txz, vec3 Tyz)
+{
+  return Txx * (A.x * B.x) + Tyy * (A.y * B.y) + (S - Txx - Tyy) * (A.z * B.z) +
+    Txy * (A.x * B.y + A.y * B.x) + Txz * (A.x * B.z + A.z * B.x) + Tyz * (A.y * B.z + A.z * B.y);
+}
+
 // Mirrors ApplyFarLobe for world normal N and mirrored view R: the zonal lobe's estimate
 // (clApplyFarKernel, clamped into the lobe's interval), moved toward the lit-side lobe's
 // projection by the share of far light behind the surface (ComputeLobeBlend: the least
@@ -234,19 +242,13 @@ vec3 clApplyFarLobe(vec3 N, vec3 R, float power, vec3 D, vec3 S, vec3 Vx, vec3 V
   vec4 k0;
   vec2 k1;
   clLobeProjection(c, power, k0, k1);
-  vec3 Tzz = S - Txx - Tyy;
-  vec3 XV = Vx * X.x + Vy * X.y + Vz * X.z;
   vec3 RV = Vx * R.x + Vy * R.y + Vz * R.z;
-  vec3 XTX = Txx * (X.x * X.x) + Tyy * (X.y * X.y) + Tzz * (X.z * X.z) +
-    2.0 * (Txy * (X.x * X.y) + Txz * (X.x * X.z) + Tyz * (X.y * X.z));
-  vec3 RTR = Txx * (R.x * R.x) + Tyy * (R.y * R.y) + Tzz * (R.z * R.z) +
-    2.0 * (Txy * (R.x * R.y) + Txz * (R.x * R.z) + Tyz * (R.y * R.z));
-  vec3 XTR = Txx * (X.x * R.x) + Tyy * (X.y * R.y) + Tzz * (X.z * R.z) +
-    Txy * (X.x * R.y + X.y * R.x) + Txz * (X.x * R.z + X.z * R.x) + Tyz * (X.y * R.z + X.z * R.y);
-  vec3 projected = k0.x * S + k0.y * XV + k0.z * RV + k0.w * XTX + k1.x * RTR + k1.y * XTR;
+  vec3 projected = k0.x * S + k0.y * (Vx * X.x + Vy * X.y + Vz * X.z) + k0.z * RV +
+    k0.w * clMomentForm(X, X, S, Txx, Tyy, Txy, Txz, Tyz) +
+    k1.x * clMomentForm(R, R, S, Txx, Tyy, Txy, Txz, Tyz) +
+    k1.y * clMomentForm(X, R, S, Txx, Tyy, Txy, Txz, Tyz);
   vec3 VN = Vx * N.x + Vy * N.y + Vz * N.z;
-  vec3 NTN = Txx * (N.x * N.x) + Tyy * (N.y * N.y) + Tzz * (N.z * N.z) +
-    2.0 * (Txy * (N.x * N.y) + Txz * (N.x * N.z) + Tyz * (N.y * N.z));
+  vec3 NTN = clMomentForm(N, N, S, Txx, Tyy, Txy, Txz, Tyz);
   vec3 back = max(max(-VN, vec3(0.0)), 0.5 * (NTN - VN));
   vec3 total = D + back;
   vec3 a = mix(vec3(0.0), min(back / max(0.1 * total, vec3(1e-30)), vec3(1.0)),

@@ -13,7 +13,7 @@
 //   ClusteredLightingFarFieldStudy [--scene bunny|house|user|dense] [--always-on]
 //     [--lights N] [--samples S] [--cutoffs 1024,4096] [--nodes 32768] [--cells 2]
 //     [--grouping 0.05] [--hierarchy 0.02,0.1] [--bounds] [--copies] [--worst K]
-//     [--orders] [--blocks 255,2048] [--far-cutoffs]
+//     [--orders] [--blocks 255,2048] [--far-cutoffs] [--intensity I]
 //
 // Rows: "cut at 1/c" (before the far field: every light cut at its cutoff radius); "far
 // field" (design 1, the product's core code: PlanFarField, ComputeFarFieldMoments, the
@@ -560,6 +560,7 @@ int main(int argc, char* argv[])
   bool farCutoffs = false;
   bool copies = false;
   int worst = -1;
+  double intensity = -1.0;
   auto parseList = [](const char* text, double (*f)(double))
   {
     std::vector<double> out;
@@ -635,6 +636,11 @@ int main(int argc, char* argv[])
     {
       copies = true;
     }
+    else if (a == "--intensity" && value)
+    {
+      // Every light's intensity (the benchmark's always-on layout: 0.005).
+      intensity = std::atof(argv[++i]);
+    }
     else if (a == "--worst" && value)
     {
       worst = std::atoi(argv[++i]);
@@ -695,6 +701,13 @@ int main(int argc, char* argv[])
       set->SetColor(i, 1, 1, 1);
       set->SetIntensity(i, 1.0);
       set->SetAttenuation(i, 1.0, 0.0, 0.0);
+    }
+  }
+  if (intensity >= 0.0)
+  {
+    for (vtkIdType i = 0; i < set->GetNumberOfLights(); ++i)
+    {
+      set->SetIntensity(i, intensity);
     }
   }
   ctx.SetView();

@@ -102,9 +102,9 @@ ViewParameters vtkClusteredLightingAssigner::ComputeView(
 //------------------------------------------------------------------------------
 bool vtkClusteredLightingAssigner::PreparationKey::operator!=(const PreparationKey& o) const
 {
-  return this->Cutoff != o.Cutoff || this->ErrorBudget != o.ErrorBudget ||
-    this->Windowed != o.Windowed || this->MortonOrder != o.MortonOrder ||
-    this->FarField.Enabled != o.FarField.Enabled ||
+  return this->Cutoff != o.Cutoff || this->FarFieldCutoff != o.FarFieldCutoff ||
+    this->ErrorBudget != o.ErrorBudget || this->Windowed != o.Windowed ||
+    this->MortonOrder != o.MortonOrder || this->FarField.Enabled != o.FarField.Enabled ||
     this->FarField.CellsPerRadius != o.FarField.CellsPerRadius ||
     this->FarField.TargetNodes != o.FarField.TargetNodes ||
     this->FarField.Grouping != o.FarField.Grouping ||
@@ -260,6 +260,8 @@ const vtkClusteredLightingAssignment& vtkClusteredLightingAssigner::Update(
   this->UpdateRegion(inputs);
   PreparationKey preparation;
   preparation.Cutoff = inputs.Preparation.Cutoff;
+  // The split lights' own cutoff, unless an error budget chooses it.
+  preparation.FarFieldCutoff = inputs.ErrorBudget > 0.0 ? 0.0 : inputs.Preparation.FarFieldCutoff;
   preparation.FarField = inputs.FarField;
   preparation.RegionLo = this->RegionLo;
   preparation.RegionHi = this->RegionHi;
@@ -440,8 +442,10 @@ void vtkClusteredLightingAssigner::PrepareLights(const vtkClusteredLightingAssig
     if (farBudget > 0.0)
     {
       // The split lights' cutoff is their own, chosen with the far field's share
-      // (ChooseFarFieldOptions) from ContributionCutoff; the last choice's while it stands
-      // (the same preparation key; the numbers of lights are checked after preparing).
+      // (ChooseFarFieldOptions) from ContributionCutoff (not FarFieldCutoff: the search
+      // only loosens, and a tight budget may need the tighter cutoff); the last choice's
+      // while it stands (the same preparation key; the numbers of lights are checked
+      // after preparing).
       options.FarFieldCutoff = inputs.Preparation.Cutoff;
       if (this->HaveBudgetChoice && !(this->BudgetChoiceKey != this->LastPreparation))
       {

@@ -276,7 +276,7 @@ private:
   /// Preparation options as a comparable value.
   struct PreparationKey
   {
-    double Cutoff = 0.0, ErrorBudget = 0.0;
+    double Cutoff = 0.0, FarFieldCutoff = 0.0, ErrorBudget = 0.0;
     bool Windowed = false, MortonOrder = true;
     vtkClusteredLighting::FarFieldOptions FarField;
     glm::dvec3 RegionLo = glm::dvec3(0.0), RegionHi = glm::dvec3(0.0);

@@ -888,6 +888,9 @@ vtkClusteredLightingAssignerInputs vtkClusteredLightingPass::MakeAssignerInputs(
   vtkClusteredLightingAssignerInputs in;
   in.Lights = &lights;
   in.Preparation.Cutoff = this->ContributionCutoff;
+  // The split lights' own cutoff (0: ContributionCutoff's); without a far field nothing is
+  // split, and every light takes ContributionCutoff.
+  in.Preparation.FarFieldCutoff = this->FarField ? this->FarFieldCutoff : 0.0;
   in.Preparation.MortonOrder = this->MortonOrder;
   in.ErrorBudget = this->ErrorBudget;
   in.Windowed = this->Falloff == FALLOFF_WINDOWED;
@@ -1522,6 +1525,7 @@ void vtkClusteredLightingPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "RendererLightsLeftToVTK: " << this->RendererLightsLeftToVTK << "\n";
   os << indent << "ShadingMode: " << this->GetShadingModeAsString() << "\n";
   os << indent << "ContributionCutoff: " << this->ContributionCutoff << "\n";
+  os << indent << "FarFieldCutoff: " << this->FarFieldCutoff << "\n";
   os << indent << "ErrorBudgetInSteps: " << this->GetErrorBudgetInSteps() << "\n";
   os << indent << "EffectiveCutoff: " << this->EffectiveCutoff << "\n";
   os << indent << "EffectiveFarFieldCutoff: " << this->EffectiveFarFieldCutoff << "\n";

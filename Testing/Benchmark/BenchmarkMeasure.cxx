@@ -196,6 +196,7 @@ void Context::ResetPassDefaults()
 {
   vtkClusteredLightingPass* p = this->Pass;
   p->SetCutoff(1.0 / 1024.0);
+  p->SetFarFieldCutoff(1.0 / 256.0);
   p->SetErrorBudget(0.0);
   p->SetFarField(true);
   p->SetFarFieldResolution(32768);

@@ -635,7 +635,14 @@ std::vector<Step> MakePlan(const PlanOptions& options)
       quick ? std::vector<double>{ 64, 1024 } : std::vector<double>{ 16, 64, 256, 1024, 4096 };
     for (double c : cutoffs)
     {
-      knob("cutoff", Fraction(c), [c](vtkClusteredLightingPass* p) { p->SetCutoff(1.0 / c); });
+      // Every light's cutoff, the split lights' too (FarFieldCutoff 0): 1/1024 is the
+      // default before FarFieldCutoff (2026-12-06), 1/256 today's default frame.
+      knob("cutoff", Fraction(c),
+        [c](vtkClusteredLightingPass* p)
+        {
+          p->SetCutoff(1.0 / c);
+          p->SetFarFieldCutoff(0.0);
+        });
     }
     // The far field (docs/far-field.md): off is the cut tails of earlier versions.
     knob("far field", "off", [](vtkClusteredLightingPass* p) { p->SetFarField(false); });

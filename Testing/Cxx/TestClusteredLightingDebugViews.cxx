@@ -54,6 +54,9 @@ int TestClusteredLightingDebugViews(int argc, char* argv[])
   vtkNew<vtkClusteredLightingPass> pass;
   pass->AddLightSet(lights);
   pass->SetHeatMapMaximum(40);
+  // Every light at ContributionCutoff, split ones too (FarFieldCutoff 0): lights that
+  // reach many clusters, so the counts and the heat map have something to show.
+  pass->SetFarFieldCutoff(0.0);
   ren->SetPass(pass);
   ren->GetActiveCamera()->SetPosition(0, -7, 5);
   ren->GetActiveCamera()->SetFocalPoint(0, 0, 0);

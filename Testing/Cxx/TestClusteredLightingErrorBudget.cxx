@@ -15,7 +15,10 @@
 //    not; a budget below every resolution's bound warns once, names the option, is
 //    reported by GetFarFieldErrorBudgetMet and PrintSelf, and its frame is still within
 //    the stated bound of brute force;
-//  - a budget of 0 gives FarFieldResolution back;
+//  - a budget of 0 gives FarFieldResolution back, the culled lights ContributionCutoff and
+//    the split lights FarFieldCutoff (default 1/256), whose frame is within the stated
+//    bound of brute force at every pixel; FarFieldCutoff 0 gives the split lights
+//    ContributionCutoff, and FarField off gives it to every light;
 //  - culled lights (an explicit radius beyond their cutoff radius: a tail the far field
 //    does not hold) among split lights get their cutoff for half of the budget
 //    (GetEffectiveCutoff), and the split lights theirs and the far field's resolution as
@@ -157,14 +160,32 @@ int TestClusteredLightingErrorBudget(int, char*[])
   Check(ClusteredLightingTest::CheckClusteredFrame(pass, rw, ren, 1.4, "0.01 steps") == 0,
     "0.01 steps: still within the stated bound of brute force");
 
-  // 6. No budget again.
+  // 6. No budget again: FarFieldResolution, the culled lights' ContributionCutoff and the
+  // split lights' FarFieldCutoff (default 1/256), within the stated bound of brute force;
+  // FarFieldCutoff 0 gives the split lights ContributionCutoff, and FarField off splits
+  // nothing (every light takes ContributionCutoff).
   pass->SetErrorBudgetInSteps(0.0);
   rw->Render();
+  Report(pass, "no budget");
   Check(pass->GetFarFieldResolutionInUse() == pass->GetFarFieldResolution() &&
       pass->GetFarFieldErrorBudgetMet() &&
       pass->GetEffectiveCutoff() == pass->GetContributionCutoff() &&
-      pass->GetEffectiveFarFieldCutoff() == pass->GetContributionCutoff(),
-    "budget 0: FarFieldResolution and ContributionCutoff again");
+      pass->GetFarFieldCutoff() == 1.0 / 256.0 &&
+      pass->GetEffectiveFarFieldCutoff() == pass->GetFarFieldCutoff(),
+    "budget 0: FarFieldResolution, ContributionCutoff and FarFieldCutoff (1/256) again");
+  Check(ClusteredLightingTest::CheckClusteredFrame(pass, rw, ren, 1.4, "FarFieldCutoff 1/256") == 0,
+    "the split lights' default cutoff: within the stated bound of brute force");
+  pass->SetFarFieldCutoff(0.0);
+  rw->Render();
+  Check(pass->GetEffectiveFarFieldCutoff() == pass->GetContributionCutoff(),
+    "FarFieldCutoff 0: the split lights take ContributionCutoff");
+  pass->SetFarFieldCutoff(1.0 / 256.0);
+  pass->SetFarField(false);
+  rw->Render();
+  Check(pass->GetEffectiveFarFieldCutoff() == pass->GetContributionCutoff() &&
+      pass->GetEffectiveCutoff() == pass->GetContributionCutoff(),
+    "FarField off: every light takes ContributionCutoff");
+  pass->SetFarField(true);
 
   // The split lights alone at 4 steps, for 7.
   pass->SetErrorBudgetInSteps(4.0);

@@ -11,6 +11,26 @@
 
 using namespace vtkClusteredLighting;
 
+namespace
+{
+/// An RGBA32F texture of rw, edges clamped, with the given filter (the far field's
+/// moments: Linear, trilinear; the lobe table: Nearest, read with texelFetch).
+vtkTextureObject* NewRGBA32FTexture(vtkOpenGLRenderWindow* rw, int filter)
+{
+  vtkTextureObject* tex = vtkTextureObject::New();
+  tex->SetContext(rw);
+  tex->SetInternalFormat(GL_RGBA32F);
+  tex->SetFormat(GL_RGBA);
+  tex->SetDataType(GL_FLOAT);
+  tex->SetMinificationFilter(filter);
+  tex->SetMagnificationFilter(filter);
+  tex->SetWrapS(vtkTextureObject::ClampToEdge);
+  tex->SetWrapT(vtkTextureObject::ClampToEdge);
+  tex->SetWrapR(vtkTextureObject::ClampToEdge);
+  return tex;
+}
+}
+
 //------------------------------------------------------------------------------
 vtkClusteredLightingFarFieldTextures::~vtkClusteredLightingFarFieldTextures()
 {
@@ -84,16 +104,7 @@ bool vtkClusteredLightingFarFieldTextures::Build(
     }
     if (!tex)
     {
-      tex = vtkTextureObject::New();
-      tex->SetContext(rw);
-      tex->SetInternalFormat(GL_RGBA32F);
-      tex->SetFormat(GL_RGBA);
-      tex->SetDataType(GL_FLOAT);
-      tex->SetMinificationFilter(vtkTextureObject::Linear);
-      tex->SetMagnificationFilter(vtkTextureObject::Linear);
-      tex->SetWrapS(vtkTextureObject::ClampToEdge);
-      tex->SetWrapT(vtkTextureObject::ClampToEdge);
-      tex->SetWrapR(vtkTextureObject::ClampToEdge);
+      tex = NewRGBA32FTexture(rw, vtkTextureObject::Linear);
     }
     // Create3DFromRaw re-specifies the image (same size: new contents).
     ok = tex->Create3DFromRaw(static_cast<unsigned int>(grid.Dims[0]),
@@ -105,15 +116,7 @@ bool vtkClusteredLightingFarFieldTextures::Build(
   {
     if (!this->LobeTable)
     {
-      this->LobeTable = vtkTextureObject::New();
-      this->LobeTable->SetContext(rw);
-      this->LobeTable->SetInternalFormat(GL_RGBA32F);
-      this->LobeTable->SetFormat(GL_RGBA);
-      this->LobeTable->SetDataType(GL_FLOAT);
-      this->LobeTable->SetMinificationFilter(vtkTextureObject::Nearest);
-      this->LobeTable->SetMagnificationFilter(vtkTextureObject::Nearest);
-      this->LobeTable->SetWrapS(vtkTextureObject::ClampToEdge);
-      this->LobeTable->SetWrapT(vtkTextureObject::ClampToEdge);
+      this->LobeTable = NewRGBA32FTexture(rw, vtkTextureObject::Nearest);
     }
     ok = this->LobeTable->Create2DFromRaw(static_cast<unsigned int>(LobeTableCosines),
       static_cast<unsigned int>(LobeTableRows), 4, VTK_FLOAT,
@@ -175,12 +178,8 @@ std::array<int, FarFieldTextures> vtkClusteredLightingFarFieldTextures::GetUnits
 //------------------------------------------------------------------------------
 std::uint64_t vtkClusteredLightingFarFieldTextures::GetBytes() const
 {
-  int moments = 0;
-  for (vtkTextureObject* tex : this->Textures)
-  {
-    moments += (tex && tex->GetHandle()) ? 1 : 0;
-  }
   const bool table = this->LobeTable && this->LobeTable->GetHandle();
+  const int moments = this->GetNumberOfGLObjects() - (table ? 1 : 0);
   return 16ull * static_cast<std::uint64_t>(moments) * static_cast<std::uint64_t>(this->Dims[0]) *
     this->Dims[1] * this->Dims[2] +
     (table ? static_cast<std::uint64_t>(LobeTableBytes) : 0u);

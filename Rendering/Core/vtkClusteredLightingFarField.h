@@ -746,14 +746,13 @@ inline void ComputeMomentInterval(
   upper = std::max(upper, lower);
 }
 
-inline double ApplyMomentKernel(const double* m, const glm::dvec3& k, const glm::dvec3& D,
-  bool lobe = false, double power = 1.0, double* lowerOut = nullptr, double* upperOut = nullptr)
+/// ApplyMomentKernel from one direction's contractions of a channel's moments, S, V.D and
+/// D^T T D: the estimate clamped into ComputeMomentInterval's interval, which `lowerOut`
+/// and `upperOut` receive. Mirrors clApplyFarKernel (whose callers contract each direction
+/// once and share it: the normal's for the diffuse and the lobe's blend).
+inline double ApplyKernelToContractions(const glm::dvec3& k, double S, double VD, double DTD,
+  bool lobe, double power, double* lowerOut = nullptr, double* upperOut = nullptr)
 {
-  const double S = m[0];
-  const double VD = m[1] * D.x + m[2] * D.y + m[3] * D.z;
-  const double Tzz = S - m[4] - m[5];
-  const double DTD = m[4] * D.x * D.x + m[5] * D.y * D.y + Tzz * D.z * D.z +
-    2.0 * (m[6] * D.x * D.y + m[7] * D.x * D.z + m[8] * D.y * D.z);
   const double estimate = k.x * S + k.y * VD + k.z * 0.5 * (3.0 * DTD - S);
   double lower = 0.0, upper = 0.0;
   ComputeMomentInterval(S, VD, DTD, lobe, power, lower, upper);
@@ -766,6 +765,17 @@ inline double ApplyMomentKernel(const double* m, const glm::dvec3& k, const glm:
     *upperOut = upper;
   }
   return std::min(std::max(estimate, lower), upper);
+}
+
+inline double ApplyMomentKernel(const double* m, const glm::dvec3& k, const glm::dvec3& D,
+  bool lobe = false, double power = 1.0, double* lowerOut = nullptr, double* upperOut = nullptr)
+{
+  const double S = m[0];
+  const double VD = m[1] * D.x + m[2] * D.y + m[3] * D.z;
+  const double Tzz = S - m[4] - m[5];
+  const double DTD = m[4] * D.x * D.x + m[5] * D.y * D.y + Tzz * D.z * D.z +
+    2.0 * (m[6] * D.x * D.y + m[7] * D.x * D.z + m[8] * D.y * D.z);
+  return ApplyKernelToContractions(k, S, VD, DTD, lobe, power, lowerOut, upperOut);
 }
 
 /// Diffuse far irradiance (per unit colour, per channel) for normal N.

@@ -122,17 +122,24 @@ uniform sampler3D clFarField6;
 uniform mat4 clFarFieldFromVC; // VC -> texture coordinates of the grid
 uniform mat3 clWorldFromVC;    // VC -> world directions (the moments' axes)
 
-// Mirrors vtkClusteredLighting::ApplyMomentKernel for RGB: the kernel with Legendre
-// coefficients k applied in world direction D (ComputeLobeKernel gives k), clamped into
-// the interval the moments prove the true value lies in (lobe: a Phong lobe of the given
-// power, else the clamped cosine; the lobe's upper end by power as GetLobeUpperEnd).
-vec3 clApplyFarKernel(vec3 k, vec3 D, vec3 S, vec3 Vx, vec3 Vy, vec3 Vz, vec3 Txx, vec3 Tyy,
-  vec3 Txy, vec3 Txz, vec3 Tyz, bool lobe, float power, out vec3 lower, out vec3 upper)
+// A^T T B per channel, T the moments' second-order tensor (Tzz = S - Txx - Tyy): mirrors
+// ComputeMomentForm.
+vec3 clMomentForm(vec3 A, vec3 B, vec3 S, vec3 Txx, vec3 Tyy, vec3 Txy, vec3 Txz, vec3 Tyz)
 {
-  vec3 VD = Vx * D.x + Vy * D.y + Vz * D.z;
-  vec3 Tzz = S - Txx - Tyy;
-  vec3 DTD = Txx * (D.x * D.x) + Tyy * (D.y * D.y) + Tzz * (D.z * D.z) +
-    2.0 * (Txy * (D.x * D.y) + Txz * (D.x * D.z) + Tyz * (D.y * D.z));
+  return Txx * (A.x * B.x) + Tyy * (A.y * B.y) + (S - Txx - Tyy) * (A.z * B.z) +
+    Txy * (A.x * B.y + A.y * B.x) + Txz * (A.x * B.z + A.z * B.x) + Tyz * (A.y * B.z + A.z * B.y);
+}
+
+// Mirrors vtkClusteredLighting::ApplyKernelToContractions for RGB: the kernel with
+// Legendre coefficients k (ComputeLobeKernel gives k) applied to one direction D's
+// contractions of the moments, VD = V.D and DTD = D^T T D (clMomentForm), clamped into the
+// interval the moments prove the true value lies in (lobe: a Phong lobe of the given
+// power, else the clamped cosine; the lobe's upper end by power as GetLobeUpperEnd). The
+// callers contract each direction once and share it: the normal's serves the diffuse and
+// the lobe's blend, the mirrored view's the zonal lobe and the projection.
+vec3 clApplyFarKernel(vec3 k, vec3 S, vec3 VD, vec3 DTD, bool lobe, float power,
+  out vec3 lower, out vec3 upper)
+{
   vec3 estimate = k.x * S + k.y * VD + k.z * 0.5 * (3.0 * DTD - S);
   upper = min(0.5 * (VD + sqrt(max(S * DTD, vec3(0.0)))), 0.25 * (S + 2.0 * VD + DTD));
   lower = max(max(VD, vec3(0.0)), 0.5 * (VD + DTD));
@@ -218,23 +225,18 @@ void clLobeProjection(float c, float power, out vec4 k0, out vec2 k1)
   k1 = clLobeTexel(i, f, 33).xy;
 }
 
-// A^T T B per channel, T the moments' second-order tensor (Tzz = S - Txx - Tyy): mirrors
-// ComputeMomentForm.
-vec3 clMomentForm(vec3 A, vec3 B, vec3 S, vec3 Txx, vec3 Tyy, vec3 Txy, vec3 Txz, vec3 Tyz)
-{
-  return Txx * (A.x * B.x) + Tyy * (A.y * B.y) + (S - Txx - Tyy) * (A.z * B.z) +
-    Txy * (A.x * B.y + A.y * B.x) + Txz * (A.x * B.z + A.z * B.x) + Tyz * (A.y * B.z + A.z * B.y);
-}
-
 // Mirrors ApplyFarLobe for world normal N and mirrored view R: the zonal lobe's estimate
 // (clApplyFarKernel, clamped into the lobe's interval), moved toward the lit-side lobe's
 // projection by the share of far light behind the surface (ComputeLobeBlend: the least
-// light behind the moments allow, against D, the far diffuse estimate), clamped again.
-vec3 clApplyFarLobe(vec3 N, vec3 R, float power, vec3 D, vec3 S, vec3 Vx, vec3 Vy, vec3 Vz,
-  vec3 Txx, vec3 Tyy, vec3 Txy, vec3 Txz, vec3 Tyz, out vec3 lower, out vec3 upper)
+// light behind the moments allow, from the normal's contractions VN = V.N and NTN =
+// N^T T N, against D, the far diffuse estimate), clamped again.
+vec3 clApplyFarLobe(vec3 N, vec3 R, float power, vec3 D, vec3 VN, vec3 NTN, vec3 S, vec3 Vx,
+  vec3 Vy, vec3 Vz, vec3 Txx, vec3 Tyy, vec3 Txy, vec3 Txz, vec3 Tyz, out vec3 lower,
+  out vec3 upper)
 {
-  vec3 zonal = clApplyFarKernel(clLobeKernel(power), R, S, Vx, Vy, Vz, Txx, Tyy, Txy, Txz, Tyz,
-    true, power, lower, upper);
+  vec3 RV = Vx * R.x + Vy * R.y + Vz * R.z;
+  vec3 RTR = clMomentForm(R, R, S, Txx, Tyy, Txy, Txz, Tyz);
+  vec3 zonal = clApplyFarKernel(clLobeKernel(power), S, RV, RTR, true, power, lower, upper);
   float c = dot(N, R);
   vec3 w = N - c * R;
   float len = length(w);
@@ -242,13 +244,9 @@ vec3 clApplyFarLobe(vec3 N, vec3 R, float power, vec3 D, vec3 S, vec3 Vx, vec3 V
   vec4 k0;
   vec2 k1;
   clLobeProjection(c, power, k0, k1);
-  vec3 RV = Vx * R.x + Vy * R.y + Vz * R.z;
   vec3 projected = k0.x * S + k0.y * (Vx * X.x + Vy * X.y + Vz * X.z) + k0.z * RV +
-    k0.w * clMomentForm(X, X, S, Txx, Tyy, Txy, Txz, Tyz) +
-    k1.x * clMomentForm(R, R, S, Txx, Tyy, Txy, Txz, Tyz) +
+    k0.w * clMomentForm(X, X, S, Txx, Tyy, Txy, Txz, Tyz) + k1.x * RTR +
     k1.y * clMomentForm(X, R, S, Txx, Tyy, Txy, Txz, Tyz);
-  vec3 VN = Vx * N.x + Vy * N.y + Vz * N.z;
-  vec3 NTN = clMomentForm(N, N, S, Txx, Tyy, Txy, Txz, Tyz);
   vec3 back = max(max(-VN, vec3(0.0)), 0.5 * (NTN - VN));
   vec3 total = D + back;
   vec3 a = mix(vec3(0.0), min(back / max(0.1 * total, vec3(1e-30)), vec3(1.0)),

@@ -58,9 +58,13 @@
 //CL_IF(PBR)
   vec3 clN = N;
 //CL_ENDIF
+  // The normal's contractions of the moments, for the diffuse and the far lobe's blend.
+  vec3 clNw = clWorldFromVC * clN;
+  vec3 clVN = clVx * clNw.x + clVy * clNw.y + clVz * clNw.z;
+  vec3 clNTN = clMomentForm(clNw, clNw, clS, clTxx, clTyy, clTxy, clTxz, clTyz);
   vec3 clDiffuseLow, clDiffuseHigh;
-  vec3 clFarDiffuse = clApplyFarKernel(vec3(0.25, 0.5, 0.3125), clWorldFromVC * clN, clS,
-    clVx, clVy, clVz, clTxx, clTyy, clTxy, clTxz, clTyz, false, 1.0, clDiffuseLow, clDiffuseHigh);
+  vec3 clFarDiffuse = clApplyFarKernel(
+    vec3(0.25, 0.5, 0.3125), clS, clVN, clNTN, false, 1.0, clDiffuseLow, clDiffuseHigh);
   vec3 clFarSpecular = vec3(0.0);
   vec3 clSpecularLow = vec3(0.0), clSpecularHigh = vec3(0.0);
 //CL_IF(PHONG)
@@ -68,8 +72,8 @@
 //CL_IF(SPECULAR)
   // VTK's lobe about the mirrored view, only for lights in front of the surface.
   vec3 clR = 2.0 * dot(clN, clV) * clN - clV;
-  clFarSpecular = clApplyFarLobe(clWorldFromVC * clN, clWorldFromVC * clR, specularPower,
-    clFarDiffuse, clS, clVx, clVy, clVz, clTxx, clTyy, clTxy, clTxz, clTyz, clSpecularLow,
+  clFarSpecular = clApplyFarLobe(clNw, clWorldFromVC * clR, specularPower, clFarDiffuse, clVN,
+    clNTN, clS, clVx, clVy, clVz, clTxx, clTyy, clTxy, clTxz, clTyz, clSpecularLow,
     clSpecularHigh);
 //CL_ENDIF
 //CL_ENDIF
@@ -247,8 +251,11 @@
     float clPower = max(0.5 / max(clA2 * clA2, 1e-12), 1.0);
     vec3 clR = 2.0 * NdV * clN - V;
     vec3 clLobeLow, clLobeHigh;
-    vec3 clLobe = clApplyFarKernel(clLobeKernel(clPower), clWorldFromVC * clR, clS, clVx, clVy,
-      clVz, clTxx, clTyy, clTxy, clTxz, clTyz, true, clPower, clLobeLow, clLobeHigh);
+    vec3 clRw = clWorldFromVC * clR;
+    vec3 clLobe = clApplyFarKernel(clLobeKernel(clPower), clS,
+      clVx * clRw.x + clVy * clRw.y + clVz * clRw.z,
+      clMomentForm(clRw, clRw, clS, clTxx, clTyy, clTxy, clTxz, clTyz), true, clPower, clLobeLow,
+      clLobeHigh);
     vec3 clPeakF;
     vec3 clPeak = SpecularIsotropic(1.0, NdV, NdV, NdV, roughness, F0, F90, clPeakF) * NdV;
     // VTK clamps N.L at 1e-5 from below, so lights behind the surface add a little.

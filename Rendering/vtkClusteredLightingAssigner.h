@@ -168,9 +168,10 @@ struct vtkClusteredLightingAssignment
   // The far field (Rendering/Core/vtkClusteredLightingFarField.h).
   bool FarField = false; ///< lights have far parts: the shading code adds the far field
   int NumberOfFarFieldLights = 0;
-  double FarFieldBuildTime = 0.0; ///< ms, the last build
-  double FarFieldSpacing = 0.0;   ///< grid spacing h (world units)
-  double NearRadiusCap = 0.0;     ///< near radius of bright and always-on lights
+  int NumberOfPackedFarFieldLights = 0; ///< near radii raised (RaiseUnresolvedNearRadii)
+  double FarFieldBuildTime = 0.0;       ///< ms, the last build
+  double FarFieldSpacing = 0.0;         ///< grid spacing h (world units)
+  double NearRadiusCap = 0.0;           ///< near radius of bright and always-on lights
   int FarFieldDims[3] = { 0, 0, 0 };
   std::int64_t FarFieldNodesTarget = 0; ///< FarFieldOptions::TargetNodes used (0: no far field)
   /// With an error budget: the choice of the far field's resolution (Nodes 0: none made).

@@ -1033,6 +1033,7 @@ void vtkClusteredLightingPass::ReportAssignment(const vtkClusteredLightingAssign
   this->NumberOfLightUploads += r.LightsUploaded ? 1 : 0;
   this->LastLightUpdateTime = r.LightUpdateTime;
   this->NumberOfFarFieldLights = r.FarField ? r.NumberOfFarFieldLights : 0;
+  this->NumberOfPackedFarFieldLights = r.FarField ? r.NumberOfPackedFarFieldLights : 0;
   this->LastFarFieldBuildTime = r.FarFieldBuildTime;
   this->FarFieldGridSpacing = r.FarField ? r.FarFieldSpacing : 0.0;
   this->NearRadiusCap = r.FarField ? r.NearRadiusCap : 0.0;
@@ -1579,6 +1580,7 @@ void vtkClusteredLightingPass::PrintSelf(ostream& os, vtkIndent indent)
   os << next << "NumberOfSpotLights: " << this->NumberOfSpotLights << "\n";
   os << next << "NumberOfAssignedLights: " << this->NumberOfAssignedLights << "\n";
   os << next << "NumberOfFarFieldLights: " << this->NumberOfFarFieldLights << "\n";
+  os << next << "NumberOfPackedFarFieldLights: " << this->NumberOfPackedFarFieldLights << "\n";
   os << next << "FarFieldSharedColorUsed: " << (this->FarFieldSharedColorUsed ? "yes" : "no")
      << "\n";
   os << next << "ClusterGridInUse: " << this->ClusterGridInUse[0] << " x "

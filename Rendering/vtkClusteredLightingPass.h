@@ -836,6 +836,12 @@ public:
   vtkGetMacro(ShadedTranslucentFragmentsPerVisiblePixel, double);
   /// Number of lights split into near and far parts in the last render.
   vtkGetMacro(NumberOfFarFieldLights, int);
+  /// Of those, the lights packed closer than the far field's grid resolves (a clump, or a
+  /// small cloud of lights under a grid stretched over a large region), whose near radii
+  /// were raised to FarFieldCellsPerRadius grid cells so that the grid resolves their far
+  /// parts (RaiseUnresolvedNearRadii in Rendering/Core/vtkClusteredLightingFarField.h):
+  /// they are shaded exactly up to there, at the cost of their near spheres.
+  vtkGetMacro(NumberOfPackedFarFieldLights, int);
   /// Time in ms of the last far-field build.
   vtkGetMacro(LastFarFieldBuildTime, double);
   /// Spacing of the far field's grid in world units, 0 without a far field.
@@ -983,6 +989,7 @@ protected:
   double LastAssignmentTime = 0.0;
   double LastLightUpdateTime = 0.0;
   int NumberOfFarFieldLights = 0;
+  int NumberOfPackedFarFieldLights = 0;
   double LastFarFieldBuildTime = 0.0;
   double FarFieldGridSpacing = 0.0;
   double NearRadiusCap = 0.0;

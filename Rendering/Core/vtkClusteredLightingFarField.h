@@ -70,6 +70,7 @@
 #include <glm/gtc/constants.hpp> // for glm::pi
 #include <iterator>              // for std::back_inserter
 #include <limits>                // for std::numeric_limits
+#include <unordered_map>         // for RaiseUnresolvedNearRadii's cells
 #include <vector>                // for std::vector
 
 namespace vtkClusteredLighting
@@ -186,6 +187,9 @@ struct FarFieldOptions
   double Grouping = 1.0;   ///< light-tree aggregation: extent / distance below it (0: exact)
   double NearBudget = 8.0; ///< lights per point the near field may evaluate, on average
   bool SharedColor = true; ///< one channel when the far lights share a colour (see below)
+  /// Far light the grid may leave unresolved around a light (RaiseUnresolvedNearRadii), in
+  /// the units of the cutoff (1 is white on a white diffuse surface): 16 8-bit steps.
+  double LumpTolerance = 16.0 / 255.0;
 };
 
 /// Lights per point that are shaded exactly, with no far field, when they all fit whole
@@ -202,6 +206,8 @@ struct FarFieldPlan
   std::size_t NumberOfFarFieldLights = 0;
   double Grouping = 1.0;           ///< FarFieldOptions::Grouping
   double NearLightsPerPoint = 0.0; ///< estimated mean near lights per point of the region
+  /// Near radii raised by RaiseBrightNearRadii and RaiseUnresolvedNearRadii.
+  std::size_t NumberOfRaisedNearRadii = 0;
   /// The colour every far-field light shares (FindFarFieldSharedColor), largest component
   /// 1; (0, 0, 0) when they differ or FarFieldOptions::SharedColor is off.
   glm::dvec3 SharedColor = glm::dvec3(0.0);
@@ -296,6 +302,221 @@ inline FarFieldGrid ComputeFarFieldGrid(const glm::dvec3& lo, const glm::dvec3& 
   g.Spacing = h;
   g.Origin = a - h * glm::dvec3(nodesBelow[0], nodesBelow[1], nodesBelow[2]);
   return g;
+}
+
+/**
+ * Near radii the grid cannot resolve, where lights are packed. A far part
+ * g_j = C_j A_j(d) (1 - W(d / r_j)) with r_j below CellsPerRadius * h has its peak,
+ * about L_j = max channel of C_j A_j(r_j), within a cell, where the trilinear
+ * interpolation of the nodes flattens it: near the light the far field lacks up to
+ * L_j min(1, (r_j / d)^2). One light lacks at most its cutoff (a step at 1/256); lights
+ * spread over the region lack no more at any point, but lights packed within a cell
+ * (a clump, or a small cloud of lights under a grid stretched over a large floor) lack
+ * the sum of theirs, tens of steps darker than exact, and the stated bound, taken at
+ * probes spread over the whole region, may not see it. So, at each such light j, the far
+ * light its neighbours k (within about 1.5 cells) lack there,
+ *
+ *   E_j = sum_k L_k min(1, (r_k / |p_j - p_k|)^2),
+ *
+ * is compared with `tolerance` (16 steps by default), and every light where it is larger gets the
+ * near radius the grid resolves, `smallest` (its near part is then exact up to there, and its far
+ * part is resolved), or more: the count lights around it are counted as one light count
+ * times as bright, which keeps its near part out to where that light falls to `most`
+ * (see RaiseBrightNearRadii; 500 lights at one point are one bright light). A clump is
+ * shaded exactly, at the cost of its lights' near spheres.
+ * Lights whose neighbourhood sum of L_k stays within the tolerance are not compared one
+ * by one, and one with more than 256 neighbours is raised without it (a clump: the exact
+ * sum would take time quadratic in its size). Lights far outside the grid (more than two
+ * cells) are left as they are. Returns the number of lights raised.
+ */
+/// The limits RaiseUnresolvedNearRadii works with.
+struct NearRadiusLimits
+{
+  double Smallest = 0.0;  ///< the near radius the grid resolves (CellsPerRadius x h)
+  double Tolerance = 0.0; ///< FarFieldOptions::LumpTolerance
+  double Most = std::numeric_limits<double>::infinity(); ///< ComputeBrightLevelLimit
+};
+
+inline std::size_t RaiseUnresolvedNearRadii(
+  std::vector<PreparedLight>& lights, const FarFieldGrid& grid, const NearRadiusLimits& limits)
+{
+  const double smallest = limits.Smallest, tolerance = limits.Tolerance, most = limits.Most;
+  const double h = grid.Spacing;
+  if (!(h > 0.0) || !(tolerance > 0.0))
+  {
+    return 0;
+  }
+  auto unresolved = [smallest](const PreparedLight& l)
+  { return l.FarField && IsFarFieldPointLight(l) && l.Radius < smallest; };
+  // Cells of spacing h from the grid's origin, two cells beyond it on every side.
+  const std::array<std::int64_t, 3> n = { { grid.Dims[0] + 4, grid.Dims[1] + 4,
+    grid.Dims[2] + 4 } };
+  auto cellOf = [&](const glm::dvec3& p, std::array<std::int64_t, 3>& c)
+  {
+    const glm::dvec3 q = (p - grid.Origin) / h + 2.0;
+    for (int a = 0; a < 3; ++a)
+    {
+      if (!(q[a] >= 0.0 && q[a] < static_cast<double>(n[a])))
+      {
+        return false;
+      }
+      c[a] = static_cast<std::int64_t>(q[a]);
+    }
+    return true;
+  };
+  auto key = [&n](std::int64_t i, std::int64_t j, std::int64_t k)
+  { return (k * n[1] + j) * n[0] + i; };
+  std::unordered_map<std::int64_t, std::vector<std::size_t>> cells;
+  std::unordered_map<std::int64_t, double> level;
+  std::vector<double> peak(lights.size(), 0.0);
+  for (std::size_t i = 0; i < lights.size(); ++i)
+  {
+    const PreparedLight& l = lights[i];
+    std::array<std::int64_t, 3> c;
+    if (unresolved(l) && cellOf(l.PositionWC, c))
+    {
+      const glm::dvec3& C = l.Color;
+      peak[i] = std::max(C.x, std::max(C.y, C.z)) * EvaluateAttenuation(l.Radius, l.Attenuation);
+      cells[key(c[0], c[1], c[2])].push_back(i);
+      level[key(c[0], c[1], c[2])] += peak[i];
+    }
+  }
+  std::vector<std::pair<std::size_t, double>> raise;
+  for (const auto& cell : cells)
+  {
+    const std::int64_t id = cell.first;
+    const std::int64_t ci = id % n[0], cj = (id / n[0]) % n[1], ck = id / (n[0] * n[1]);
+    double around = 0.0;
+    std::size_t count = 0;
+    std::vector<const std::vector<std::size_t>*> near;
+    for (std::int64_t dk = -1; dk <= 1; ++dk)
+    {
+      for (std::int64_t dj = -1; dj <= 1; ++dj)
+      {
+        for (std::int64_t di = -1; di <= 1; ++di)
+        {
+          const auto found = cells.find(key(ci + di, cj + dj, ck + dk));
+          if (found != cells.end())
+          {
+            around += level[found->first];
+            count += found->second.size();
+            near.push_back(&found->second);
+          }
+        }
+      }
+    }
+    if (around <= tolerance)
+    {
+      continue;
+    }
+    for (std::size_t j : cell.second)
+    {
+      double e = 0.0;
+      if (count <= 256)
+      {
+        for (const std::vector<std::size_t>* list : near)
+        {
+          for (std::size_t k : *list)
+          {
+            if (k != j)
+            {
+              const glm::dvec3 d = lights[k].PositionWC - lights[j].PositionWC;
+              const double d2 = glm::dot(d, d);
+              const double r2 = lights[k].Radius * lights[k].Radius;
+              e += peak[k] * (d2 > r2 ? r2 / d2 : 1.0);
+            }
+          }
+        }
+      }
+      if (count > 256 || e > tolerance)
+      {
+        // A clump of `count` lights is one light that much brighter: each keeps its near
+        // part out to where the clump is no brighter than `most` (ComputeBrightLevelLimit).
+        const glm::dvec3& C = lights[j].Color;
+        const double r = ComputeInfluenceRadius(std::max(C.x, std::max(C.y, C.z)),
+          lights[j].Attenuation, most / static_cast<double>(count));
+        raise.emplace_back(j, std::max(smallest, std::isfinite(r) ? r : smallest));
+      }
+    }
+  }
+  for (const auto& jr : raise)
+  {
+    lights[jr.first].Radius = jr.second;
+  }
+  return raise.size();
+}
+
+/**
+ * Near radii of lights far brighter than the rest. When the near field's budget cuts the
+ * near radii to R (PlanFarField), a light many times brighter than the others keeps a far
+ * part that is still bright at R: its level there, L_j = max channel of C_j A_j(r_j), is
+ * what the grid interpolates, and the interpolation's error is a share of it (about a
+ * fifth at two cells). One light of intensity 1,000 among 500 of 0.05 was shaded 219
+ * steps off near its sphere (inside the stated bound, which said 4,159 steps). So every
+ * split light that falls off and whose level at its near radius is above `most`
+ * (ComputeBrightLevelLimit: 16 times the median level, at least 16 8-bit steps)
+ * gets the radius where it falls to `most`: a few bright lights among many are shaded
+ * exactly up to where they are as faint as the rest. Lights of one brightness keep R (none is above
+ * 16 times the median), so the budget holds for them; each raised light adds at most one light per
+ * point. Returns the number of lights raised.
+ */
+namespace Detail
+{
+/// A split light's level at its near radius (the peak of its far part), for lights that
+/// fall off; -1 for the others.
+inline double GetNearRadiusLevel(const PreparedLight& l)
+{
+  if (!(l.FarField && IsFarFieldPointLight(l) && std::isfinite(l.Radius) &&
+        (l.Attenuation.y > 0.0 || l.Attenuation.z > 0.0)))
+  {
+    return -1.0;
+  }
+  const glm::dvec3& C = l.Color;
+  return std::max(C.x, std::max(C.y, C.z)) * EvaluateAttenuation(l.Radius, l.Attenuation);
+}
+} // namespace Detail
+
+/// The level no split light (or clump of lights) should keep at its near radius: 16 times
+/// the median level of the split lights that fall off (Detail::GetNearRadiusLevel), at
+/// least 16 8-bit steps. Infinite when no light falls off.
+inline double ComputeBrightLevelLimit(const std::vector<PreparedLight>& lights)
+{
+  std::vector<double> levels;
+  for (const PreparedLight& l : lights)
+  {
+    const double level = Detail::GetNearRadiusLevel(l);
+    if (level >= 0.0)
+    {
+      levels.push_back(level);
+    }
+  }
+  if (levels.empty())
+  {
+    return std::numeric_limits<double>::infinity();
+  }
+  auto middle = levels.begin() + static_cast<std::ptrdiff_t>(levels.size() / 2);
+  std::nth_element(levels.begin(), middle, levels.end());
+  return std::max(16.0 * *middle, 16.0 / 255.0);
+}
+
+inline std::size_t RaiseBrightNearRadii(std::vector<PreparedLight>& lights, double most)
+{
+  std::size_t raised = 0;
+  for (PreparedLight& l : lights)
+  {
+    if (Detail::GetNearRadiusLevel(l) > most)
+    {
+      const glm::dvec3& C = l.Color;
+      const double r =
+        ComputeInfluenceRadius(std::max(C.x, std::max(C.y, C.z)), l.Attenuation, most);
+      if (r > l.Radius)
+      {
+        l.Radius = r;
+        ++raised;
+      }
+    }
+  }
+  return raised;
 }
 
 /**
@@ -447,6 +668,8 @@ inline FarFieldPlan PlanFarField(std::vector<PreparedLight>& lights, glm::dvec3 
       none.NearLightsPerPoint = plan.NearLightsPerPoint;
       return none;
     }
+    plan.NumberOfRaisedNearRadii = RaiseUnresolvedNearRadii(lights, plan.Grid,
+      NearRadiusLimits{ smallest, options.LumpTolerance, ComputeBrightLevelLimit(lights) });
     plan.SharedColor = options.SharedColor ? FindFarFieldSharedColor(lights) : glm::dvec3(0.0);
     return plan;
   }
@@ -498,6 +721,10 @@ inline FarFieldPlan PlanFarField(std::vector<PreparedLight>& lights, glm::dvec3 
     }
     plan.NumberOfFarFieldLights += l.FarField ? 1 : 0;
   }
+  const double most = ComputeBrightLevelLimit(lights);
+  plan.NumberOfRaisedNearRadii = RaiseBrightNearRadii(lights, most) +
+    RaiseUnresolvedNearRadii(
+      lights, plan.Grid, NearRadiusLimits{ smallest, options.LumpTolerance, most });
   plan.SharedColor = options.SharedColor ? FindFarFieldSharedColor(lights) : glm::dvec3(0.0);
   return plan;
 }

@@ -26,7 +26,8 @@
  * material coefficients scale it (Diffuse + Specular <= 1 keeps the bound).
  *
  * Invalid input (non-finite or negative values, attenuation that is negative, non-finite
- * or all zero, a spot without a direction, values the GPU's 32-bit floats cannot hold) is
+ * or all zero, a spot without a direction or with a cone angle of -90 or less, values the
+ * GPU's 32-bit floats cannot hold, positions included) is
  * reported per light with a message naming it; such a light is skipped and no other
  * light is affected.
  */
@@ -58,7 +59,8 @@ struct LightSource
   double Radius = 0.0;                                ///< used only when HasRadius
   bool HasRadius = false;
   glm::dvec3 DirectionWC = glm::dvec3(0.0, 0.0, -1.0); ///< spot axis (need not be unit)
-  double ConeAngle = 180.0; ///< half angle in degrees; < 90 makes a spot light (as VTK)
+  double ConeAngle = 180.0; ///< half angle in degrees; < 90 makes a spot light (as VTK;
+                            ///< a negative angle in (-90, 0) lights as |angle| does)
   double Exponent = 1.0;
 
   bool IsSpot() const { return this->ConeAngle < 90.0; }
@@ -184,6 +186,12 @@ inline std::string ValidateLightSource(const LightSource& l, const std::string& 
   {
     os << who << ": position " << Detail::ToString(l.PositionWC) << " is not finite";
   }
+  else if (!Detail::FitsInFloat(l.PositionWC))
+  {
+    // The far field's region, grid and groups would take it in, and the GPU would see Inf.
+    os << who << ": position " << Detail::ToString(l.PositionWC)
+       << " is outside the range of the GPU's 32-bit floats (magnitudes above 3.4e38 become Inf)";
+  }
   else if (!Detail::IsFinite(l.Color))
   {
     os << who << ": color " << Detail::ToString(l.Color) << " is not finite";
@@ -233,7 +241,18 @@ inline std::string ValidateLightSource(const LightSource& l, const std::string& 
       os << who << ": spot cone angle " << l.ConeAngle << " or exponent " << l.Exponent
          << " is invalid";
     }
-    else if (!Detail::IsFinite(l.DirectionWC) || !(glm::dot(l.DirectionWC, l.DirectionWC) > 0.0))
+    else if (l.ConeAngle <= -90.0)
+    {
+      // VTK's shader tests the cone with cos(angle), which is even in the angle: a cone of
+      // -30 degrees lights what 30 does, and the pass takes |angle| above -90. From -90 on
+      // the cone's cosine is <= 0 and VTK raises negative cosines to the exponent, which
+      // GLSL leaves undefined.
+      os << who << ": spot cone angle " << l.ConeAngle
+         << " is -90 or less (VTK's own shading of it is undefined)";
+    }
+    else if (!Detail::IsFinite(l.DirectionWC) ||
+      !(std::max(std::abs(l.DirectionWC.x),
+          std::max(std::abs(l.DirectionWC.y), std::abs(l.DirectionWC.z))) > 0.0))
     {
       os << who << ": spot direction " << Detail::ToString(l.DirectionWC)
          << " is zero or not finite";
@@ -289,7 +308,9 @@ inline PreparedLights PrepareLights(const std::vector<LightSource>& sources,
     p.Attenuation = s.Attenuation;
     if (s.IsSpot())
     {
-      const double halfAngle = std::max(s.ConeAngle, 0.0) * (3.14159265358979323846 / 180.0);
+      // |angle|: VTK's cone test takes its cosine, so -30 lights what 30 does (below -90
+      // the light was rejected above).
+      const double halfAngle = std::abs(s.ConeAngle) * (3.14159265358979323846 / 180.0);
       p.CosCone = std::cos(halfAngle);
       // Scaled first: the squared length of a finite (1e300, 0, 0) overflows to Inf and
       // glm::normalize would return 0; after scaling the largest component is +-1.

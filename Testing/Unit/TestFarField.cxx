@@ -122,10 +122,9 @@ struct Built
 };
 
 Built Build(std::vector<PreparedLight>& lights, const glm::dvec3& lo, const glm::dvec3& hi,
-  double grouping, std::int64_t nodes = 4096)
+  double grouping, std::int64_t nodes = 4096, FarFieldOptions options = FarFieldOptions())
 {
   Built b;
-  FarFieldOptions options;
   options.TargetNodes = nodes;
   options.Grouping = grouping;
   b.Plan = PlanFarField(lights, lo, hi, options);
@@ -430,6 +429,122 @@ TEST(FarFieldPlan, LightsThatFitKeepTheirRadiusAndGiveTheirTails)
     shortened += cut[i].Radius < before[i].Radius ? 1 : 0;
   }
   EXPECT_GT(shortened, 0);
+}
+
+// Found by a hostile-input sweep (2026-12-06): 500 lights in a ball of radius 3 over a
+// ground plane 1,000 wide. The grid's spacing follows the plane (h about 12), the lights'
+// cutoff radii are 2.5, and the far parts of the whole ball fell between two nodes: the
+// ball was shaded tens of steps too dark, and no probe of the stated bound's summary was
+// near it. The packed lights now get the radius the grid resolves.
+TEST(FarFieldPlan, PackedLightsUnderALargeRegionGetRadiiTheGridResolves)
+{
+  std::mt19937 rng(6);
+  std::normal_distribution<double> G(0.0, 1.0);
+  std::uniform_real_distribution<double> U(0.0, 1.0);
+  auto inBall = [&](double radius)
+  {
+    const glm::dvec3 d = glm::normalize(glm::dvec3(G(rng), G(rng), G(rng)));
+    return d * radius * std::cbrt(U(rng));
+  };
+  // Intensity 0.05 with attenuation (1, 0, 8), as a user writes them: the same light as
+  // intensity 1 with (20, 0, 160).
+  const std::vector<PreparedLight> ball =
+    MakeLights(500, glm::dvec3(20, 0, 160), [&](int) { return inBall(3.0); });
+  const glm::dvec3 lo(-500, -3, -500), hi(500, 3, 500);
+  // The far field's own error at points in and around the ball (the near parts are exact).
+  auto worstFarError = [&](const std::vector<PreparedLight>& lights, const Built& b)
+  {
+    std::mt19937 prng(9);
+    double worst = 0.0;
+    for (int i = 0; i < 400; ++i)
+    {
+      FarFieldShadingPoint s;
+      s.P = inBall(4.0);
+      s.N = glm::normalize(glm::dvec3(G(prng), G(prng), G(prng)));
+      s.R = s.N;
+      s.Kd = glm::dvec3(1.0);
+      s.Ks = glm::dvec3(0.0);
+      const glm::dvec3 e =
+        glm::abs(ApproximateFar(s, b.Plan.Grid, b.Moments) - ExactFar(s, lights, b.Radii));
+      worst = std::max(worst, std::max(e.x, std::max(e.y, e.z)));
+    }
+    return worst;
+  };
+  FarFieldOptions keep;
+  keep.LumpTolerance = std::numeric_limits<double>::infinity();
+  std::vector<PreparedLight> before = ball;
+  const Built unresolved = Build(before, lo, hi, 1.0, 32768, keep);
+  ASSERT_TRUE(unresolved.Plan.Active);
+  const double smallest = 2.0 * unresolved.Plan.Grid.Spacing;
+  ASSERT_LT(ball[0].Radius, 0.25 * smallest);
+  EXPECT_EQ(unresolved.Plan.NumberOfRaisedNearRadii, 0u);
+  EXPECT_GT(worstFarError(before, unresolved), 20.0 / 255.0);
+
+  std::vector<PreparedLight> after = ball;
+  const Built resolved = Build(after, lo, hi, 1.0, 32768);
+  EXPECT_EQ(resolved.Plan.NumberOfRaisedNearRadii, 500u);
+  for (const PreparedLight& l : after)
+  {
+    EXPECT_TRUE(l.FarField);
+    EXPECT_EQ(l.Radius, smallest);
+  }
+  EXPECT_LT(worstFarError(after, resolved), 1.0 / 255.0);
+  CheckBound(after, resolved, glm::dvec3(-4), glm::dvec3(4), 200, "raised");
+
+  // Lights spread over their region, each with a radius below the grid's too (the
+  // benchmark's kind of layout): none is packed, none raised.
+  std::uniform_real_distribution<double> V(-1.0, 1.0);
+  std::vector<PreparedLight> spread = MakeLights(
+    4096, glm::dvec3(1, 0, 400000), [&](int) { return glm::dvec3(V(rng), V(rng), V(rng)); });
+  const std::vector<PreparedLight> spreadBefore = spread;
+  const Built spreadBuilt = Build(spread, glm::dvec3(-1), glm::dvec3(1), 1.0, 32768);
+  ASSERT_LT(spreadBefore[0].Radius, spreadBuilt.Plan.Grid.Spacing);
+  EXPECT_EQ(spreadBuilt.Plan.NumberOfRaisedNearRadii, 0u);
+  for (std::size_t i = 0; i < spread.size(); ++i)
+  {
+    EXPECT_EQ(spread[i].Radius, spreadBefore[i].Radius);
+  }
+}
+
+// Found by the same sweep: one light of intensity 1,000 among 500 of 0.05 kept the near
+// field budget's radius R, and its far part, still bright there, was interpolated 219
+// steps off. It now keeps a near sphere out to where it is as faint as 16 of the others.
+TEST(FarFieldPlan, ALightFarBrighterThanTheRestKeepsALargerNearRadius)
+{
+  std::mt19937 rng(4);
+  std::uniform_real_distribution<double> U(-1.0, 1.0);
+  std::vector<PreparedLight> lights =
+    MakeLights(2000, glm::dvec3(1, 0, 1), [&](int) { return glm::dvec3(U(rng), U(rng), U(rng)); });
+  std::vector<PreparedLight> bright = lights;
+  bright[17].Color *= 20000.0;
+  bright[17].Radius = ComputeInfluenceRadius(
+    std::max(bright[17].Color.x, std::max(bright[17].Color.y, bright[17].Color.z)),
+    bright[17].Attenuation, 1.0 / 1024.0);
+  const FarFieldPlan same = PlanFarField(lights, glm::dvec3(-1), glm::dvec3(1), FarFieldOptions{});
+  const FarFieldPlan plan = PlanFarField(bright, glm::dvec3(-1), glm::dvec3(1), FarFieldOptions{});
+  ASSERT_TRUE(same.Active && plan.Active);
+  // Lights of one brightness (colours 0.3 to 1) keep the budget's radii: none is raised.
+  EXPECT_EQ(same.NumberOfRaisedNearRadii, 0u);
+  EXPECT_EQ(plan.NumberOfRaisedNearRadii, 1u);
+  const double cap = plan.NearRadiusCap;
+  EXPECT_GT(bright[17].Radius, 10.0 * cap);
+  const auto peak = [](const PreparedLight& l)
+  { return std::max(l.Color.x, std::max(l.Color.y, l.Color.z)); };
+  const double brightLevel =
+    peak(bright[17]) * EvaluateAttenuation(bright[17].Radius, bright[17].Attenuation);
+  double most = 0.0;
+  for (std::size_t i = 0; i < bright.size(); ++i)
+  {
+    if (i != 17)
+    {
+      EXPECT_LE(bright[i].Radius, cap);
+      most = std::max(
+        most, peak(bright[i]) * EvaluateAttenuation(bright[i].Radius, bright[i].Attenuation));
+    }
+  }
+  // As faint at its radius as 16 of the brightest others, no fainter (it would cost more).
+  EXPECT_LE(brightLevel, 16.0 * most * (1.0 + 1e-9));
+  EXPECT_GT(brightLevel, most);
 }
 
 TEST(FarFieldPlan, ManyLightsShareTheNearBudget)

@@ -906,7 +906,26 @@ vtkClusteredLightingAssignerInputs vtkClusteredLightingPass::MakeAssignerInputs(
   ren->ComputeVisiblePropBounds(bounds);
   vtkBoundingBox region;
   region.AddBounds(bounds);
-  region.AddBounds(this->FarFieldRegion);
+  // A region that is not finite would take the grid to the lights' own box (see
+  // PlanFarField), leaving geometry outside it with the edge's far light: ignored, said once.
+  bool finiteRegion = true;
+  for (double v : this->FarFieldRegion)
+  {
+    finiteRegion = finiteRegion && std::isfinite(v);
+  }
+  if (finiteRegion)
+  {
+    region.AddBounds(this->FarFieldRegion);
+  }
+  else if (!this->ReportedNonFiniteRegion)
+  {
+    vtkWarningMacro(<< "FarFieldRegion (" << this->FarFieldRegion[0] << ", "
+                    << this->FarFieldRegion[1] << ", " << this->FarFieldRegion[2] << ", "
+                    << this->FarFieldRegion[3] << ", " << this->FarFieldRegion[4] << ", "
+                    << this->FarFieldRegion[5]
+                    << ") is not finite; the far field covers the visible props alone.");
+  }
+  this->ReportedNonFiniteRegion = !finiteRegion;
   if (region.IsValid())
   {
     region.GetBounds(bounds);

@@ -328,7 +328,8 @@ public:
    * field, with no seam where the pieces meet, whatever it renders, and a prop that comes
    * and goes inside it (a selection's highlight) moves nothing. ParaView's Clustered
    * Lighting view sets its geometry bounds here. An empty box (xmin > xmax) adds nothing.
-   * Default is an empty box.
+   * A box with a bound that is not finite is ignored, with a warning. Default is an empty
+   * box.
    */
   vtkSetVector6Macro(FarFieldRegion, double);
   vtkGetVector6Macro(FarFieldRegion, double);
@@ -990,6 +991,7 @@ protected:
   double LastLightUpdateTime = 0.0;
   int NumberOfFarFieldLights = 0;
   int NumberOfPackedFarFieldLights = 0;
+  mutable bool ReportedNonFiniteRegion = false; ///< warned that FarFieldRegion is not finite
   double LastFarFieldBuildTime = 0.0;
   double FarFieldGridSpacing = 0.0;
   double NearRadiusCap = 0.0;

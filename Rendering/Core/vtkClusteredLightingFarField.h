@@ -70,7 +70,6 @@
 #include <glm/gtc/constants.hpp> // for glm::pi
 #include <iterator>              // for std::back_inserter
 #include <limits>                // for std::numeric_limits
-#include <unordered_map>         // for RaiseUnresolvedNearRadii's cells
 #include <vector>                // for std::vector
 
 namespace vtkClusteredLighting
@@ -187,8 +186,9 @@ struct FarFieldOptions
   double Grouping = 1.0;   ///< light-tree aggregation: extent / distance below it (0: exact)
   double NearBudget = 8.0; ///< lights per point the near field may evaluate, on average
   bool SharedColor = true; ///< one channel when the far lights share a colour (see below)
-  /// Far light the grid may leave unresolved around a light (RaiseUnresolvedNearRadii), in
-  /// the units of the cutoff (1 is white on a white diffuse surface): 16 8-bit steps.
+  /// Far light packed lights may put between the grid's nodes before their near radii
+  /// are raised (RaiseUnresolvedNearRadii), in the units of the cutoff (1 is white on a
+  /// white diffuse surface): 16 8-bit steps.
   double LumpTolerance = 16.0 / 255.0;
 };
 
@@ -304,31 +304,6 @@ inline FarFieldGrid ComputeFarFieldGrid(const glm::dvec3& lo, const glm::dvec3& 
   return g;
 }
 
-/**
- * Near radii the grid cannot resolve, where lights are packed. A far part
- * g_j = C_j A_j(d) (1 - W(d / r_j)) with r_j below CellsPerRadius * h has its peak,
- * about L_j = max channel of C_j A_j(r_j), within a cell, where the trilinear
- * interpolation of the nodes flattens it: near the light the far field lacks up to
- * L_j min(1, (r_j / d)^2). One light lacks at most its cutoff (a step at 1/256); lights
- * spread over the region lack no more at any point, but lights packed within a cell
- * (a clump, or a small cloud of lights under a grid stretched over a large floor) lack
- * the sum of theirs, tens of steps darker than exact, and the stated bound, taken at
- * probes spread over the whole region, may not see it. So, at each such light j, the far
- * light its neighbours k (within about 1.5 cells) lack there,
- *
- *   E_j = sum_k L_k min(1, (r_k / |p_j - p_k|)^2),
- *
- * is compared with `tolerance` (16 steps by default), and every light where it is larger gets the
- * near radius the grid resolves, `smallest` (its near part is then exact up to there, and its far
- * part is resolved), or more: the count lights around it are counted as one light count
- * times as bright, which keeps its near part out to where that light falls to `most`
- * (see RaiseBrightNearRadii; 500 lights at one point are one bright light). A clump is
- * shaded exactly, at the cost of its lights' near spheres.
- * Lights whose neighbourhood sum of L_k stays within the tolerance are not compared one
- * by one, and one with more than 256 neighbours is raised without it (a clump: the exact
- * sum would take time quadratic in its size). Lights far outside the grid (more than two
- * cells) are left as they are. Returns the number of lights raised.
- */
 /// The limits RaiseUnresolvedNearRadii works with.
 struct NearRadiusLimits
 {
@@ -337,113 +312,189 @@ struct NearRadiusLimits
   double Most = std::numeric_limits<double>::infinity(); ///< ComputeBrightLevelLimit
 };
 
+/**
+ * Near radii the grid cannot resolve, where lights are packed. A far part
+ * g_j = C_j A_j(d) (1 - W(d / r_j)) with r_j below CellsPerRadius * h (`Smallest`) has its
+ * peak, about L_j = max channel of C_j A_j(r_j), within a cell of the light. Lights spread
+ * over the region are sampled by the nodes as a whole (the sum of their far parts is
+ * smooth where the lights are as dense as around them), but lights packed into a cell or
+ * two (a clump, or a small cloud of lights under a grid stretched over a large floor: 500
+ * lights in a ball of radius 3 under a grid of spacing 12) put their far light between
+ * the nodes, which miss it: tens of steps darker than exact, while the stated bound's
+ * summary, taken at probes spread over the whole region, may not see it.
+ *
+ * So, for each such light, the levels of the lights in the 2 x 2 x 2 cells nearest it
+ * (within a cell on every axis) are compared with what the nodes would see if those
+ * lights were spread like the ones in the 4 x 4 x 4 cells around them (an eighth of
+ * theirs): where the block holds more than `Tolerance` (16 steps by default) above that,
+ * and more than four times it, every light of the block is raised to `Smallest`, or
+ * further: the block's lights count as one light that many times as bright, which keeps
+ * its near part out to where that light falls to `Most` (ComputeBrightLevelLimit; 500
+ * lights at one point are one bright light). Uniform layouts (the ratio stays near 1
+ * however dense they are) and clouds wider than a few cells are left as they are: their
+ * errors stay inside the stated bound (docs/far-field.md). The levels and counts go into
+ * summed-area tables over the grid's cells and three more on every side (lights outside
+ * those are left as they are); grids of more than 2^23 such cells (above about 8 million
+ * nodes) are not looked at. Returns the number of lights raised.
+ */
 inline std::size_t RaiseUnresolvedNearRadii(
   std::vector<PreparedLight>& lights, const FarFieldGrid& grid, const NearRadiusLimits& limits)
 {
-  const double smallest = limits.Smallest, tolerance = limits.Tolerance, most = limits.Most;
   const double h = grid.Spacing;
-  if (!(h > 0.0) || !(tolerance > 0.0))
+  // Cells of spacing h from the grid's origin, three beyond it on every side. Their levels
+  // (sum of L_k) and light counts are kept as sums over boxes from the corner (a
+  // summed-area table, one plane of zeros first), so that any block's sum is 8 reads.
+  const std::array<std::int64_t, 3> n = { { grid.Dims[0] + 6, grid.Dims[1] + 6,
+    grid.Dims[2] + 6 } };
+  const std::array<std::int64_t, 3> t = { { n[0] + 1, n[1] + 1, n[2] + 1 } };
+  if (!(h > 0.0) || !(limits.Tolerance > 0.0) || t[0] * t[1] * t[2] > (std::int64_t(1) << 23))
   {
     return 0;
   }
-  auto unresolved = [smallest](const PreparedLight& l)
-  { return l.FarField && IsFarFieldPointLight(l) && l.Radius < smallest; };
-  // Cells of spacing h from the grid's origin, two cells beyond it on every side.
-  const std::array<std::int64_t, 3> n = { { grid.Dims[0] + 4, grid.Dims[1] + 4,
-    grid.Dims[2] + 4 } };
-  auto cellOf = [&](const glm::dvec3& p, std::array<std::int64_t, 3>& c)
+  auto unresolved = [&limits](const PreparedLight& l)
+  { return l.FarField && IsFarFieldPointLight(l) && l.Radius < limits.Smallest; };
+  auto position = [&](const PreparedLight& l) { return (l.PositionWC - grid.Origin) / h + 3.0; };
+  auto inside = [&n](const glm::dvec3& q)
   {
-    const glm::dvec3 q = (p - grid.Origin) / h + 2.0;
-    for (int a = 0; a < 3; ++a)
-    {
-      if (!(q[a] >= 0.0 && q[a] < static_cast<double>(n[a])))
-      {
-        return false;
-      }
-      c[a] = static_cast<std::int64_t>(q[a]);
-    }
-    return true;
+    return q.x >= 1.0 && q.y >= 1.0 && q.z >= 1.0 && q.x < static_cast<double>(n[0] - 2) &&
+      q.y < static_cast<double>(n[1] - 2) && q.z < static_cast<double>(n[2] - 2);
   };
-  auto key = [&n](std::int64_t i, std::int64_t j, std::int64_t k)
-  { return (k * n[1] + j) * n[0] + i; };
-  std::unordered_map<std::int64_t, std::vector<std::size_t>> cells;
-  std::unordered_map<std::int64_t, double> level;
-  std::vector<double> peak(lights.size(), 0.0);
-  for (std::size_t i = 0; i < lights.size(); ++i)
+  auto at = [&t](std::int64_t i, std::int64_t j, std::int64_t k)
+  { return static_cast<std::size_t>((k * t[1] + j) * t[0] + i); };
+  const std::size_t size = static_cast<std::size_t>(t[0] * t[1] * t[2]);
+  // The tables of a grid of up to 2^20 cells (16 MiB) are kept from call to call on each
+  // thread: a light update then writes memory it already has instead of mapping new
+  // pages (a few ms at 4,096 lights on a virtual machine, more than the work itself).
+  struct Tables
   {
-    const PreparedLight& l = lights[i];
-    std::array<std::int64_t, 3> c;
-    if (unresolved(l) && cellOf(l.PositionWC, c))
+    std::vector<double> Level;
+    std::vector<std::uint32_t> Count, ClumpOf;
+  };
+  thread_local Tables kept;
+  Tables fresh;
+  Tables& tables = size <= (std::size_t(1) << 20) ? kept : fresh;
+  tables.Level.assign(size, 0.0);
+  tables.Count.assign(size, 0);
+  tables.ClumpOf.assign(size, 0);
+  std::vector<double>& level = tables.Level;
+  std::vector<std::uint32_t>& count = tables.Count;
+  std::vector<std::uint32_t>& clumpOf = tables.ClumpOf;
+  bool any = false;
+  for (const PreparedLight& l : lights)
+  {
+    const glm::dvec3 q = position(l);
+    if (unresolved(l) && inside(q))
     {
       const glm::dvec3& C = l.Color;
-      peak[i] = std::max(C.x, std::max(C.y, C.z)) * EvaluateAttenuation(l.Radius, l.Attenuation);
-      cells[key(c[0], c[1], c[2])].push_back(i);
-      level[key(c[0], c[1], c[2])] += peak[i];
+      const std::size_t c = at(static_cast<std::int64_t>(q.x) + 1,
+        static_cast<std::int64_t>(q.y) + 1, static_cast<std::int64_t>(q.z) + 1);
+      level[c] += std::max(C.x, std::max(C.y, C.z)) * EvaluateAttenuation(l.Radius, l.Attenuation);
+      ++count[c];
+      any = true;
     }
   }
-  std::vector<std::pair<std::size_t, double>> raise;
-  for (const auto& cell : cells)
+  if (!any)
   {
-    const std::int64_t id = cell.first;
-    const std::int64_t ci = id % n[0], cj = (id / n[0]) % n[1], ck = id / (n[0] * n[1]);
-    double around = 0.0;
-    std::size_t count = 0;
-    std::vector<const std::vector<std::size_t>*> near;
-    for (std::int64_t dk = -1; dk <= 1; ++dk)
+    return 0;
+  }
+  for (std::int64_t k = 0; k < t[2]; ++k)
+  {
+    for (std::int64_t j = 0; j < t[1]; ++j)
     {
-      for (std::int64_t dj = -1; dj <= 1; ++dj)
+      for (std::int64_t i = 1; i < t[0]; ++i)
       {
-        for (std::int64_t di = -1; di <= 1; ++di)
-        {
-          const auto found = cells.find(key(ci + di, cj + dj, ck + dk));
-          if (found != cells.end())
-          {
-            around += level[found->first];
-            count += found->second.size();
-            near.push_back(&found->second);
-          }
-        }
+        level[at(i, j, k)] += level[at(i - 1, j, k)];
+        count[at(i, j, k)] += count[at(i - 1, j, k)];
       }
     }
-    if (around <= tolerance)
+  }
+  for (std::int64_t k = 0; k < t[2]; ++k)
+  {
+    for (std::int64_t j = 1; j < t[1]; ++j)
+    {
+      for (std::int64_t i = 0; i < t[0]; ++i)
+      {
+        level[at(i, j, k)] += level[at(i, j - 1, k)];
+        count[at(i, j, k)] += count[at(i, j - 1, k)];
+      }
+    }
+  }
+  for (std::int64_t k = 1; k < t[2]; ++k)
+  {
+    for (std::int64_t j = 0; j < t[1]; ++j)
+    {
+      for (std::int64_t i = 0; i < t[0]; ++i)
+      {
+        level[at(i, j, k)] += level[at(i, j, k - 1)];
+        count[at(i, j, k)] += count[at(i, j, k - 1)];
+      }
+    }
+  }
+  // The sums over cells [i0, i1) x [j0, j1) x [k0, k1).
+  auto box = [&](const auto& sums, std::int64_t i0, std::int64_t j0, std::int64_t k0,
+               std::int64_t i1, std::int64_t j1, std::int64_t k1)
+  {
+    return sums[at(i1, j1, k1)] - sums[at(i0, j1, k1)] - sums[at(i1, j0, k1)] -
+      sums[at(i1, j1, k0)] + sums[at(i0, j0, k1)] + sums[at(i0, j1, k0)] + sums[at(i1, j0, k0)] -
+      sums[at(i0, j0, k0)];
+  };
+  // A light is in a clump where the 2 x 2 x 2 cells nearest it (within a cell of it on
+  // every axis) hold more than the tolerance above what the nodes would see if their
+  // lights were spread like those of the 4 x 4 x 4 cells around them (an eighth of
+  // those), and four times that. Every light of such a block is raised (a clump wider
+  // than a cell is not split into a raised half and a kept half), each block's lights
+  // counted as one light that many times as bright.
+  for (const PreparedLight& l : lights)
+  {
+    const glm::dvec3 q = position(l);
+    if (!unresolved(l) || !inside(q))
     {
       continue;
     }
-    for (std::size_t j : cell.second)
+    const glm::dvec3 corner = glm::floor(q - 0.5);
+    const std::int64_t i0 = static_cast<std::int64_t>(corner.x),
+                       j0 = static_cast<std::int64_t>(corner.y),
+                       k0 = static_cast<std::int64_t>(corner.z);
+    const double inner = box(level, i0, j0, k0, i0 + 2, j0 + 2, k0 + 2);
+    const double spread = box(level, i0 - 1, j0 - 1, k0 - 1, i0 + 3, j0 + 3, k0 + 3) / 8.0;
+    if (inner - spread > limits.Tolerance && inner > 4.0 * spread)
     {
-      double e = 0.0;
-      if (count <= 256)
+      const std::uint32_t clump = box(count, i0, j0, k0, i0 + 2, j0 + 2, k0 + 2);
+      for (std::int64_t k = k0; k <= k0 + 1; ++k)
       {
-        for (const std::vector<std::size_t>* list : near)
+        for (std::int64_t j = j0; j <= j0 + 1; ++j)
         {
-          for (std::size_t k : *list)
+          for (std::int64_t i = i0; i <= i0 + 1; ++i)
           {
-            if (k != j)
-            {
-              const glm::dvec3 d = lights[k].PositionWC - lights[j].PositionWC;
-              const double d2 = glm::dot(d, d);
-              const double r2 = lights[k].Radius * lights[k].Radius;
-              e += peak[k] * (d2 > r2 ? r2 / d2 : 1.0);
-            }
+            std::uint32_t& c = clumpOf[at(i, j, k)];
+            c = std::max(c, clump);
           }
         }
       }
-      if (count > 256 || e > tolerance)
-      {
-        // A clump of `count` lights is one light that much brighter: each keeps its near
-        // part out to where the clump is no brighter than `most` (ComputeBrightLevelLimit).
-        const glm::dvec3& C = lights[j].Color;
-        const double r = ComputeInfluenceRadius(std::max(C.x, std::max(C.y, C.z)),
-          lights[j].Attenuation, most / static_cast<double>(count));
-        raise.emplace_back(j, std::max(smallest, std::isfinite(r) ? r : smallest));
-      }
     }
   }
-  for (const auto& jr : raise)
+  std::size_t raised = 0;
+  for (PreparedLight& l : lights)
   {
-    lights[jr.first].Radius = jr.second;
+    const glm::dvec3 q = position(l);
+    if (!unresolved(l) || !inside(q))
+    {
+      continue;
+    }
+    const std::uint32_t clump = clumpOf[at(static_cast<std::int64_t>(q.x),
+      static_cast<std::int64_t>(q.y), static_cast<std::int64_t>(q.z))];
+    if (clump > 0)
+    {
+      // Each light of the clump keeps its near part out to where the clump is no brighter
+      // than `Most` (ComputeBrightLevelLimit).
+      const glm::dvec3& C = l.Color;
+      const double r = ComputeInfluenceRadius(
+        std::max(C.x, std::max(C.y, C.z)), l.Attenuation, limits.Most / static_cast<double>(clump));
+      l.Radius = std::max(limits.Smallest, std::isfinite(r) ? r : limits.Smallest);
+      ++raised;
+    }
   }
-  return raise.size();
+  return raised;
 }
 
 /**

@@ -333,9 +333,9 @@ struct NearRadiusLimits
  * lights at one point are one bright light). Uniform layouts (the ratio stays near 1
  * however dense they are) and clouds wider than a few cells are left as they are: their
  * errors stay inside the stated bound (docs/far-field.md). The levels and counts go into
- * summed-area tables over the grid's cells and three more on every side (lights outside
- * those are left as they are); grids of more than 2^23 such cells (above about 8 million
- * nodes) are not looked at. Returns the number of lights raised.
+ * summed-area tables over the grid's cells and three more on every side (lights more
+ * than 1.5 cells outside the grid are left as they are); grids of more than 2^23 such cells (above
+ * about 8 million nodes) are not looked at. Returns the number of lights raised.
  */
 inline std::size_t RaiseUnresolvedNearRadii(
   std::vector<PreparedLight>& lights, const FarFieldGrid& grid, const NearRadiusLimits& limits)
@@ -354,10 +354,12 @@ inline std::size_t RaiseUnresolvedNearRadii(
   auto unresolved = [&limits](const PreparedLight& l)
   { return l.FarField && IsFarFieldPointLight(l) && l.Radius < limits.Smallest; };
   auto position = [&](const PreparedLight& l) { return (l.PositionWC - grid.Origin) / h + 3.0; };
+  // Lights within 1.5 cells of the table's faces: every block around them (the 4 x 4 x 4
+  // cells from floor(q - 0.5) - 1) is inside the table.
   auto inside = [&n](const glm::dvec3& q)
   {
-    return q.x >= 1.0 && q.y >= 1.0 && q.z >= 1.0 && q.x < static_cast<double>(n[0] - 2) &&
-      q.y < static_cast<double>(n[1] - 2) && q.z < static_cast<double>(n[2] - 2);
+    return q.x >= 1.5 && q.y >= 1.5 && q.z >= 1.5 && q.x < static_cast<double>(n[0]) - 1.5 &&
+      q.y < static_cast<double>(n[1]) - 1.5 && q.z < static_cast<double>(n[2]) - 1.5;
   };
   auto at = [&t](std::int64_t i, std::int64_t j, std::int64_t k)
   { return static_cast<std::size_t>((k * t[1] + j) * t[0] + i); };

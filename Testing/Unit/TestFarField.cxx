@@ -491,6 +491,31 @@ TEST(FarFieldPlan, PackedLightsUnderALargeRegionGetRadiiTheGridResolves)
   EXPECT_LT(worstFarError(after, resolved), 1.0 / 255.0);
   CheckBound(after, resolved, glm::dvec3(-4), glm::dvec3(4), 200, "raised");
 
+  // Clumps just outside the grid, beyond its first and its last node on every axis: up to
+  // 1.5 cells out they are looked at, from 2.6 cells out they are left as they are, and
+  // nothing is read outside the tables (the sanitizer run checks).
+  for (double cells : { 0.4, 1.0, 1.45, 1.55, 2.5, 2.6, 4.0 })
+  {
+    for (double side : { -1.0, 1.0 })
+    {
+      const double h = unresolved.Plan.Grid.Spacing;
+      const glm::dvec3 corner = side < 0.0
+        ? unresolved.Plan.Grid.Origin
+        : unresolved.Plan.Grid.NodePosition(unresolved.Plan.Grid.Dims[0] - 1,
+            unresolved.Plan.Grid.Dims[1] - 1, unresolved.Plan.Grid.Dims[2] - 1);
+      std::vector<PreparedLight> outside = MakeLights(300, glm::dvec3(20, 0, 160),
+        [&](int) { return corner + side * cells * h * glm::dvec3(1.0) + 0.01 * inBall(1.0); });
+      const FarFieldPlan plan = PlanFarField(outside, lo, hi, FarFieldOptions{});
+      // 1.5 to 2.5 cells out: below the grid left, above it (its last cells reach a cell
+      // past the last node) looked at; only that nothing is read outside is checked.
+      if (cells < 1.5 || cells > 2.55)
+      {
+        EXPECT_EQ(plan.NumberOfRaisedNearRadii, cells < 1.5 ? 300u : 0u)
+          << cells << " cells " << (side < 0.0 ? "below" : "above");
+      }
+    }
+  }
+
   // Lights spread over their region, each with a radius below the grid's too (the
   // benchmark's kind of layout): none is packed, none raised.
   std::uniform_real_distribution<double> V(-1.0, 1.0);

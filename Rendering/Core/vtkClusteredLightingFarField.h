@@ -507,11 +507,12 @@ inline std::size_t RaiseUnresolvedNearRadii(
  * fifth at two cells). One light of intensity 1,000 among 500 of 0.05 was shaded 219
  * steps off near its sphere (inside the stated bound, which said 4,159 steps). So every
  * split light that falls off and whose level at its near radius is above `most`
- * (ComputeBrightLevelLimit: 16 times the median level, at least 16 8-bit steps)
+ * (ComputeBrightLevelLimit: 4 times the median level, at least 4 8-bit steps)
  * gets the radius where it falls to `most`: a few bright lights among many are shaded
- * exactly up to where they are as faint as the rest. Lights of one brightness keep R (none is above
- * 16 times the median), so the budget holds for them; each raised light adds at most one light per
- * point. Returns the number of lights raised.
+ * exactly up to where they are no more than 4 times as bright as the median light. Lights of
+ * one brightness keep R (colours alone put none above 4 times the median: a light's
+ * level is its largest channel), so the budget holds for them; each raised light adds at most one
+ * light per point. Returns the number of lights raised.
  */
 namespace Detail
 {
@@ -529,9 +530,9 @@ inline double GetNearRadiusLevel(const PreparedLight& l)
 }
 } // namespace Detail
 
-/// The level no split light (or clump of lights) should keep at its near radius: 16 times
+/// The level no split light (or clump of lights) should keep at its near radius: 4 times
 /// the median level of the split lights that fall off (Detail::GetNearRadiusLevel), at
-/// least 16 8-bit steps. Infinite when no light falls off.
+/// least 4 8-bit steps. Infinite when no light falls off.
 inline double ComputeBrightLevelLimit(const std::vector<PreparedLight>& lights)
 {
   std::vector<double> levels;
@@ -549,7 +550,7 @@ inline double ComputeBrightLevelLimit(const std::vector<PreparedLight>& lights)
   }
   auto middle = levels.begin() + static_cast<std::ptrdiff_t>(levels.size() / 2);
   std::nth_element(levels.begin(), middle, levels.end());
-  return std::max(16.0 * *middle, 16.0 / 255.0);
+  return std::max(4.0 * *middle, 4.0 / 255.0);
 }
 
 inline std::size_t RaiseBrightNearRadii(std::vector<PreparedLight>& lights, double most)

@@ -334,8 +334,9 @@ struct NearRadiusLimits
  * however dense they are) and clouds wider than a few cells are left as they are: their
  * errors stay inside the stated bound (docs/far-field.md). The levels and counts go into
  * summed-area tables over the grid's cells and three more on every side (lights more
- * than 1.5 cells outside the grid are left as they are); grids of more than 2^23 such cells (above
- * about 8 million nodes) are not looked at. Returns the number of lights raised.
+ * than 1.5 cells outside the grid are left as they are); grids of more than 2^23 such
+ * cells (above about 8 million nodes) are not looked at. Returns the number of lights
+ * raised.
  */
 inline std::size_t RaiseUnresolvedNearRadii(
   std::vector<PreparedLight>& lights, const FarFieldGrid& grid, const NearRadiusLimits& limits)
@@ -354,8 +355,8 @@ inline std::size_t RaiseUnresolvedNearRadii(
   auto unresolved = [&limits](const PreparedLight& l)
   { return l.FarField && IsFarFieldPointLight(l) && l.Radius < limits.Smallest; };
   auto position = [&](const PreparedLight& l) { return (l.PositionWC - grid.Origin) / h + 3.0; };
-  // Lights within 1.5 cells of the table's faces: every block around them (the 4 x 4 x 4
-  // cells from floor(q - 0.5) - 1) is inside the table.
+  // Lights at least 1.5 cells inside the table's faces: every block around them (the
+  // 4 x 4 x 4 cells from floor(q - 0.5) - 1) is inside the table.
   auto inside = [&n](const glm::dvec3& q)
   {
     return q.x >= 1.5 && q.y >= 1.5 && q.z >= 1.5 && q.x < static_cast<double>(n[0]) - 1.5 &&
@@ -499,21 +500,6 @@ inline std::size_t RaiseUnresolvedNearRadii(
   return raised;
 }
 
-/**
- * Near radii of lights far brighter than the rest. When the near field's budget cuts the
- * near radii to R (PlanFarField), a light many times brighter than the others keeps a far
- * part that is still bright at R: its level there, L_j = max channel of C_j A_j(r_j), is
- * what the grid interpolates, and the interpolation's error is a share of it (about a
- * fifth at two cells). One light of intensity 1,000 among 500 of 0.05 was shaded 219
- * steps off near its sphere (inside the stated bound, which said 4,159 steps). So every
- * split light that falls off and whose level at its near radius is above `most`
- * (ComputeBrightLevelLimit: 4 times the median level, at least 4 8-bit steps)
- * gets the radius where it falls to `most`: a few bright lights among many are shaded
- * exactly up to where they are no more than 4 times as bright as the median light. Lights of
- * one brightness keep R (colours alone put none above 4 times the median: a light's
- * level is its largest channel), so the budget holds for them; each raised light adds at most one
- * light per point. Returns the number of lights raised.
- */
 namespace Detail
 {
 /// A split light's level at its near radius (the peak of its far part), for lights that
@@ -553,6 +539,21 @@ inline double ComputeBrightLevelLimit(const std::vector<PreparedLight>& lights)
   return std::max(4.0 * *middle, 4.0 / 255.0);
 }
 
+/**
+ * Near radii of lights far brighter than the rest. When the near field's budget cuts the
+ * near radii to R (PlanFarField), a light many times brighter than the others keeps a far
+ * part that is still bright at R: its level there, L_j = max channel of C_j A_j(r_j), is
+ * what the grid interpolates, and the interpolation's error is a share of it (about a
+ * fifth at two cells). One light of intensity 1,000 among 500 of 0.05 was shaded 219
+ * steps off near its sphere (inside the stated bound, which said 4,159 steps). So every
+ * split light that falls off and whose level at its near radius is above `most`
+ * (ComputeBrightLevelLimit: 4 times the median level, at least 4 8-bit steps)
+ * gets the radius where it falls to `most`: a few bright lights among many are shaded
+ * exactly up to where they are no more than 4 times as bright as the median light.
+ * Lights of one brightness keep R (colours alone put none above 4 times the median: a
+ * light's level is its largest channel), so the budget holds for them; each raised light
+ * adds at most one light per point. Returns the number of lights raised.
+ */
 inline std::size_t RaiseBrightNearRadii(std::vector<PreparedLight>& lights, double most)
 {
   std::size_t raised = 0;

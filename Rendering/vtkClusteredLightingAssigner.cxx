@@ -329,7 +329,7 @@ const vtkClusteredLightingAssignment& vtkClusteredLightingAssigner::Update(
   }
   r.FarField = r.Enabled && this->FarFieldPlan.Active && this->FarField.GetNumberOfGLObjects() > 0;
   r.NumberOfFarFieldLights = static_cast<int>(this->FarFieldPlan.NumberOfFarFieldLights);
-  r.NumberOfPackedFarFieldLights = static_cast<int>(this->FarFieldPlan.NumberOfRaisedNearRadii);
+  r.NumberOfPackedFarFieldLights = static_cast<int>(this->FarFieldPlan.NumberOfPackedNearRadii);
   r.FarFieldSpacing = this->FarFieldPlan.Active ? this->FarFieldPlan.Grid.Spacing : 0.0;
   r.NearRadiusCap = this->FarFieldPlan.Active ? this->FarFieldPlan.NearRadiusCap : 0.0;
   for (int a = 0; a < 3; ++a)
@@ -691,9 +691,9 @@ void vtkClusteredLightingAssigner::CheckCulling(const vtkClusteredLightingAssign
               "or an explicit radius";
       }
       else if (this->FarFieldPlan.Active &&
-        this->FarFieldPlan.NumberOfRaisedNearRadii >= static_cast<std::size_t>(n / 2))
+        this->FarFieldPlan.NumberOfPackedNearRadii >= static_cast<std::size_t>(n / 2))
       {
-        os << this->FarFieldPlan.NumberOfRaisedNearRadii
+        os << this->FarFieldPlan.NumberOfPackedNearRadii
            << " of them are packed closer than the far field's grid resolves (spacing "
            << this->FarFieldPlan.Grid.Spacing << "), so each is evaluated exactly within "
            << this->FarFieldPlan.Grid.Spacing

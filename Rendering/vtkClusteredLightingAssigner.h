@@ -168,7 +168,7 @@ struct vtkClusteredLightingAssignment
   // The far field (Rendering/Core/vtkClusteredLightingFarField.h).
   bool FarField = false; ///< lights have far parts: the shading code adds the far field
   int NumberOfFarFieldLights = 0;
-  int NumberOfPackedFarFieldLights = 0; ///< near radii raised (RaiseUnresolvedNearRadii)
+  int NumberOfPackedFarFieldLights = 0; ///< FarFieldPlan::NumberOfPackedNearRadii
   double FarFieldBuildTime = 0.0;       ///< ms, the last build
   double FarFieldSpacing = 0.0;         ///< grid spacing h (world units)
   double NearRadiusCap = 0.0;           ///< near radius of bright and always-on lights

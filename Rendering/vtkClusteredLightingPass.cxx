@@ -35,9 +35,9 @@
 #include "vtkWeakPointer.h"
 #include "vtk_glew.h" // for glFinish
 
-#include <algorithm> // for std::find
+#include <algorithm> // for std::find, std::all_of, std::equal, std::copy
 #include <chrono>    // for timings
-#include <cmath>     // for std::isnan
+#include <cmath>     // for std::isnan, std::isfinite
 #include <cstdint>   // for std::uint64_t
 #include <map>       // for std::map
 #include <set>       // for std::set
@@ -448,6 +448,32 @@ vtkClusteredLightingPass::vtkClusteredLightingPass()
 vtkClusteredLightingPass::~vtkClusteredLightingPass()
 {
   this->SetDelegatePass(nullptr);
+}
+
+//------------------------------------------------------------------------------
+void vtkClusteredLightingPass::SetFarFieldRegion(
+  double xmin, double xmax, double ymin, double ymax, double zmin, double zmax)
+{
+  const double region[6] = { xmin, xmax, ymin, ymax, zmin, zmax };
+  this->SetFarFieldRegion(region);
+}
+
+//------------------------------------------------------------------------------
+void vtkClusteredLightingPass::SetFarFieldRegion(const double region[6])
+{
+  if (!std::all_of(region, region + 6, [](double v) { return std::isfinite(v); }))
+  {
+    // MakeAssignerInputs would take the grid to the lights' own box (see PlanFarField),
+    // leaving geometry outside it with the edge's far light.
+    vtkWarningMacro(<< "FarFieldRegion (" << region[0] << ", " << region[1] << ", " << region[2]
+                    << ", " << region[3] << ", " << region[4] << ", " << region[5]
+                    << ") is not finite; the far field covers the visible props alone.");
+  }
+  if (!std::equal(region, region + 6, this->FarFieldRegion))
+  {
+    std::copy(region, region + 6, this->FarFieldRegion);
+    this->Modified();
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -906,26 +932,12 @@ vtkClusteredLightingAssignerInputs vtkClusteredLightingPass::MakeAssignerInputs(
   ren->ComputeVisiblePropBounds(bounds);
   vtkBoundingBox region;
   region.AddBounds(bounds);
-  // A region that is not finite would take the grid to the lights' own box (see
-  // PlanFarField), leaving geometry outside it with the edge's far light: ignored, said once.
-  bool finiteRegion = true;
-  for (double v : this->FarFieldRegion)
-  {
-    finiteRegion = finiteRegion && std::isfinite(v);
-  }
-  if (finiteRegion)
+  // A region that is not finite is ignored (SetFarFieldRegion warned).
+  if (std::all_of(
+        this->FarFieldRegion, this->FarFieldRegion + 6, [](double v) { return std::isfinite(v); }))
   {
     region.AddBounds(this->FarFieldRegion);
   }
-  else if (!this->ReportedNonFiniteRegion)
-  {
-    vtkWarningMacro(<< "FarFieldRegion (" << this->FarFieldRegion[0] << ", "
-                    << this->FarFieldRegion[1] << ", " << this->FarFieldRegion[2] << ", "
-                    << this->FarFieldRegion[3] << ", " << this->FarFieldRegion[4] << ", "
-                    << this->FarFieldRegion[5]
-                    << ") is not finite; the far field covers the visible props alone.");
-  }
-  this->ReportedNonFiniteRegion = !finiteRegion;
   if (region.IsValid())
   {
     region.GetBounds(bounds);

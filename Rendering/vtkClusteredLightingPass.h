@@ -328,10 +328,12 @@ public:
    * field, with no seam where the pieces meet, whatever it renders, and a prop that comes
    * and goes inside it (a selection's highlight) moves nothing. ParaView's Clustered
    * Lighting view sets its geometry bounds here. An empty box (xmin > xmax) adds nothing.
-   * A box with a bound that is not finite is ignored, with a warning. Default is an empty
-   * box.
+   * A box with a bound that is not finite is ignored, with a warning when it is set.
+   * Default is an empty box.
    */
-  vtkSetVector6Macro(FarFieldRegion, double);
+  virtual void SetFarFieldRegion(
+    double xmin, double xmax, double ymin, double ymax, double zmin, double zmax);
+  virtual void SetFarFieldRegion(const double region[6]);
   vtkGetVector6Macro(FarFieldRegion, double);
   //@}
 
@@ -991,7 +993,6 @@ protected:
   double LastLightUpdateTime = 0.0;
   int NumberOfFarFieldLights = 0;
   int NumberOfPackedFarFieldLights = 0;
-  mutable bool ReportedNonFiniteRegion = false; ///< warned that FarFieldRegion is not finite
   double LastFarFieldBuildTime = 0.0;
   double FarFieldGridSpacing = 0.0;
   double NearRadiusCap = 0.0;

@@ -206,8 +206,10 @@ struct FarFieldPlan
   std::size_t NumberOfFarFieldLights = 0;
   double Grouping = 1.0;           ///< FarFieldOptions::Grouping
   double NearLightsPerPoint = 0.0; ///< estimated mean near lights per point of the region
-  /// Near radii raised by RaiseBrightNearRadii and RaiseUnresolvedNearRadii.
+  /// Near radii raised by RaiseBrightNearRadii and RaiseUnresolvedNearRadii, and of those
+  /// the packed lights' (RaiseUnresolvedNearRadii).
   std::size_t NumberOfRaisedNearRadii = 0;
+  std::size_t NumberOfPackedNearRadii = 0;
   /// The colour every far-field light shares (FindFarFieldSharedColor), largest component
   /// 1; (0, 0, 0) when they differ or FarFieldOptions::SharedColor is off.
   glm::dvec3 SharedColor = glm::dvec3(0.0);
@@ -304,6 +306,25 @@ inline FarFieldGrid ComputeFarFieldGrid(const glm::dvec3& lo, const glm::dvec3& 
   return g;
 }
 
+namespace Detail
+{
+/// A light's level at its radius: its peak channel times its attenuation there (for a
+/// split light, the peak of its far part).
+inline double GetLevelAtRadius(const PreparedLight& l)
+{
+  return l.GetPeak() * EvaluateAttenuation(l.Radius, l.Attenuation);
+}
+
+/// GetLevelAtRadius for split lights that fall off; -1 for the others.
+inline double GetNearRadiusLevel(const PreparedLight& l)
+{
+  return l.FarField && IsFarFieldPointLight(l) && std::isfinite(l.Radius) &&
+      (l.Attenuation.y > 0.0 || l.Attenuation.z > 0.0)
+    ? GetLevelAtRadius(l)
+    : -1.0;
+}
+} // namespace Detail
+
 /// The limits RaiseUnresolvedNearRadii works with.
 struct NearRadiusLimits
 {
@@ -388,10 +409,9 @@ inline std::size_t RaiseUnresolvedNearRadii(
     const glm::dvec3 q = position(l);
     if (unresolved(l) && inside(q))
     {
-      const glm::dvec3& C = l.Color;
       const std::size_t c = at(static_cast<std::int64_t>(q.x) + 1,
         static_cast<std::int64_t>(q.y) + 1, static_cast<std::int64_t>(q.z) + 1);
-      level[c] += std::max(C.x, std::max(C.y, C.z)) * EvaluateAttenuation(l.Radius, l.Attenuation);
+      level[c] += Detail::GetLevelAtRadius(l);
       ++count[c];
       any = true;
     }
@@ -490,31 +510,14 @@ inline std::size_t RaiseUnresolvedNearRadii(
     {
       // Each light of the clump keeps its near part out to where the clump is no brighter
       // than `Most` (ComputeBrightLevelLimit).
-      const glm::dvec3& C = l.Color;
       const double r = ComputeInfluenceRadius(
-        std::max(C.x, std::max(C.y, C.z)), l.Attenuation, limits.Most / static_cast<double>(clump));
+        l.GetPeak(), l.Attenuation, limits.Most / static_cast<double>(clump));
       l.Radius = std::max(limits.Smallest, std::isfinite(r) ? r : limits.Smallest);
       ++raised;
     }
   }
   return raised;
 }
-
-namespace Detail
-{
-/// A split light's level at its near radius (the peak of its far part), for lights that
-/// fall off; -1 for the others.
-inline double GetNearRadiusLevel(const PreparedLight& l)
-{
-  if (!(l.FarField && IsFarFieldPointLight(l) && std::isfinite(l.Radius) &&
-        (l.Attenuation.y > 0.0 || l.Attenuation.z > 0.0)))
-  {
-    return -1.0;
-  }
-  const glm::dvec3& C = l.Color;
-  return std::max(C.x, std::max(C.y, C.z)) * EvaluateAttenuation(l.Radius, l.Attenuation);
-}
-} // namespace Detail
 
 /// The level no split light (or clump of lights) should keep at its near radius: 4 times
 /// the median level of the split lights that fall off (Detail::GetNearRadiusLevel), at
@@ -561,9 +564,7 @@ inline std::size_t RaiseBrightNearRadii(std::vector<PreparedLight>& lights, doub
   {
     if (Detail::GetNearRadiusLevel(l) > most)
     {
-      const glm::dvec3& C = l.Color;
-      const double r =
-        ComputeInfluenceRadius(std::max(C.x, std::max(C.y, C.z)), l.Attenuation, most);
+      const double r = ComputeInfluenceRadius(l.GetPeak(), l.Attenuation, most);
       if (r > l.Radius)
       {
         l.Radius = r;
@@ -723,8 +724,10 @@ inline FarFieldPlan PlanFarField(std::vector<PreparedLight>& lights, glm::dvec3 
       none.NearLightsPerPoint = plan.NearLightsPerPoint;
       return none;
     }
-    plan.NumberOfRaisedNearRadii = RaiseUnresolvedNearRadii(lights, plan.Grid,
+    // Every split light keeps its cutoff radius: none is brighter than the rest there.
+    plan.NumberOfPackedNearRadii = RaiseUnresolvedNearRadii(lights, plan.Grid,
       NearRadiusLimits{ smallest, options.LumpTolerance, ComputeBrightLevelLimit(lights) });
+    plan.NumberOfRaisedNearRadii = plan.NumberOfPackedNearRadii;
     plan.SharedColor = options.SharedColor ? FindFarFieldSharedColor(lights) : glm::dvec3(0.0);
     return plan;
   }
@@ -777,9 +780,10 @@ inline FarFieldPlan PlanFarField(std::vector<PreparedLight>& lights, glm::dvec3 
     plan.NumberOfFarFieldLights += l.FarField ? 1 : 0;
   }
   const double most = ComputeBrightLevelLimit(lights);
-  plan.NumberOfRaisedNearRadii = RaiseBrightNearRadii(lights, most) +
-    RaiseUnresolvedNearRadii(
-      lights, plan.Grid, NearRadiusLimits{ smallest, options.LumpTolerance, most });
+  const std::size_t bright = RaiseBrightNearRadii(lights, most);
+  plan.NumberOfPackedNearRadii = RaiseUnresolvedNearRadii(
+    lights, plan.Grid, NearRadiusLimits{ smallest, options.LumpTolerance, most });
+  plan.NumberOfRaisedNearRadii = bright + plan.NumberOfPackedNearRadii;
   plan.SharedColor = options.SharedColor ? FindFarFieldSharedColor(lights) : glm::dvec3(0.0);
   return plan;
 }

@@ -83,6 +83,8 @@ struct PreparedLight
   bool FarField = false;
 
   bool IsSpot() const { return this->CosCone > -1.5; }
+  /// Its brightest channel of Color: the level its cutoff and radii are measured by.
+  double GetPeak() const { return std::max(this->Color.x, std::max(this->Color.y, this->Color.z)); }
 };
 
 struct LightPreparationOptions
@@ -169,6 +171,11 @@ inline bool FitsInFloat(const glm::dvec3& v)
   const double m = static_cast<double>(std::numeric_limits<float>::max());
   return std::abs(v.x) <= m && std::abs(v.y) <= m && std::abs(v.z) <= m;
 }
+/// The largest |component| of v (0 only for the zero vector, even where |v|^2 underflows).
+inline double LargestMagnitude(const glm::dvec3& v)
+{
+  return std::max(std::abs(v.x), std::max(std::abs(v.y), std::abs(v.z)));
+}
 inline std::string ToString(const glm::dvec3& v)
 {
   std::ostringstream os;
@@ -250,9 +257,7 @@ inline std::string ValidateLightSource(const LightSource& l, const std::string& 
       os << who << ": spot cone angle " << l.ConeAngle
          << " is -90 or less (VTK's own shading of it is undefined)";
     }
-    else if (!Detail::IsFinite(l.DirectionWC) ||
-      !(std::max(std::abs(l.DirectionWC.x),
-          std::max(std::abs(l.DirectionWC.y), std::abs(l.DirectionWC.z))) > 0.0))
+    else if (!Detail::IsFinite(l.DirectionWC) || !(Detail::LargestMagnitude(l.DirectionWC) > 0.0))
     {
       os << who << ": spot direction " << Detail::ToString(l.DirectionWC)
          << " is zero or not finite";
@@ -294,7 +299,7 @@ inline PreparedLights PrepareLights(const std::vector<LightSource>& sources,
     PreparedLight p;
     p.PositionWC = s.PositionWC;
     p.Color = s.Color * s.Intensity;
-    const double peak = std::max(p.Color.x, std::max(p.Color.y, p.Color.z));
+    const double peak = p.GetPeak();
     const bool splittable = !s.HasRadius;
     double r = ComputeInfluenceRadius(
       peak, s.Attenuation, splittable ? options.GetFarFieldCutoff() : options.Cutoff);
@@ -314,8 +319,7 @@ inline PreparedLights PrepareLights(const std::vector<LightSource>& sources,
       p.CosCone = std::cos(halfAngle);
       // Scaled first: the squared length of a finite (1e300, 0, 0) overflows to Inf and
       // glm::normalize would return 0; after scaling the largest component is +-1.
-      const glm::dvec3 a = glm::abs(s.DirectionWC);
-      p.DirectionWC = glm::normalize(s.DirectionWC / std::max(a.x, std::max(a.y, a.z)));
+      p.DirectionWC = glm::normalize(s.DirectionWC / Detail::LargestMagnitude(s.DirectionWC));
       ++out.NumberOfSpots;
     }
     else

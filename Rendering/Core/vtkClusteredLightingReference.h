@@ -419,6 +419,111 @@ inline AssignmentComparison CompareWithReference(const ReferenceAssignment& ref,
   return cmp;
 }
 
+/**
+ * What lists of lights per cluster can do at best, on one depth image (issue 12's
+ * culling ratio: lights evaluated per pixel against those that reach it). Per pixel that
+ * shows geometry, its fragment is taken at the pixel's centre and its view depth (the
+ * cluster the shader finds there): the lights that reach it (distance below the radius,
+ * inside a culled cone), the lights of its cluster in `ref` (cell culling in double
+ * precision, which the GPU's float box tests approach), and the lights that reach some
+ * fragment of its cluster. A list can hold no fewer lights than that last set and miss no
+ * fragment: no culling of whole clusters, however exact, walks fewer per pixel (Floor).
+ * Only finer clusters lower it. Lights are tested only in their clusters of `ref`, which
+ * holds every light that reaches a fragment of the cluster (the reference is conservative).
+ */
+struct ClusterCullingFloor
+{
+  std::size_t Pixels = 0; ///< pixels that show geometry
+  double Reaching = 0.0;  ///< mean lights reaching a pixel's fragment
+  double Floor = 0.0;     ///< mean lights reaching some fragment of the pixel's cluster
+  double Cells = 0.0;     ///< mean lights of the pixel's cluster in the reference
+};
+
+inline ClusterCullingFloor MeasureClusterCullingFloor(const DepthImage& image,
+  const glm::dmat4& vcdc, const ClusterGridParams& grid, const std::vector<ReferenceLight>& lights,
+  const ReferenceAssignment& ref)
+{
+  ClusterCullingFloor out;
+  const std::size_t batches = static_cast<std::size_t>(ref.Batches);
+  if (!image.Depth || image.Width < 1 || image.Height < 1 || !HasDepthOnlyClipZ(vcdc) ||
+    batches != (lights.size() + 31) / 32 ||
+    ref.Words.size() != static_cast<std::size_t>(grid.GetNumberOfClusters()) * batches)
+  {
+    return out;
+  }
+  std::vector<std::uint32_t> reached(ref.Words.size(), 0u);
+  std::vector<int> pixelCluster(static_cast<std::size_t>(image.Width) * image.Height, -1);
+  double reaching = 0.0, cells = 0.0;
+  for (int y = 0; y < image.Height; ++y)
+  {
+    for (int x = 0; x < image.Width; ++x)
+    {
+      const std::size_t p = static_cast<std::size_t>(y) * image.Width + x;
+      const double w = image.Depth[p];
+      if (!(w < 1.0))
+      {
+        continue;
+      }
+      const double depth = ViewDepthFromWindowDepth(w, vcdc);
+      const glm::dvec3 P = UnprojectAtDepth(
+        2.0 * (x + 0.5) / image.Width - 1.0, 2.0 * (y + 0.5) / image.Height - 1.0, depth, vcdc);
+      const int id = ComputeClusterId(ComputeTileIndex(x + 0.5, image.Width, grid.TilesX),
+        ComputeTileIndex(y + 0.5, image.Height, grid.TilesY), ComputeSliceIndex(depth, grid), grid);
+      pixelCluster[p] = id;
+      ++out.Pixels;
+      const std::uint32_t* words = &ref.Words[static_cast<std::size_t>(id) * batches];
+      std::uint32_t* hit = &reached[static_cast<std::size_t>(id) * batches];
+      for (std::size_t b = 0; b < batches; ++b)
+      {
+        cells += PopCount32(words[b]);
+        for (std::uint32_t bits = words[b]; bits; bits &= bits - 1u)
+        {
+          int bit = 0;
+          while (!((bits >> bit) & 1u))
+          {
+            ++bit;
+          }
+          const ReferenceLight& l = lights[32 * b + static_cast<std::size_t>(bit)];
+          const glm::dvec3 toP = P - l.CenterVC;
+          const double d = glm::length(toP);
+          bool reaches = std::isinf(l.Radius) || d < l.Radius;
+          if (reaches && l.CosCone > -1.5 && d > 0.0)
+          {
+            reaches = glm::dot(toP / d, l.AxisVC) >= l.CosCone;
+          }
+          if (reaches)
+          {
+            reaching += 1.0;
+            hit[b] |= 1u << bit;
+          }
+        }
+      }
+    }
+  }
+  // Each cluster's count once, then summed over its pixels.
+  std::vector<int> clusterFloor(static_cast<std::size_t>(grid.GetNumberOfClusters()), 0);
+  for (std::size_t id = 0; id < clusterFloor.size(); ++id)
+  {
+    for (std::size_t b = 0; b < batches; ++b)
+    {
+      clusterFloor[id] += PopCount32(reached[id * batches + b]);
+    }
+  }
+  double floor = 0.0;
+  for (int id : pixelCluster)
+  {
+    floor += id >= 0 ? clusterFloor[static_cast<std::size_t>(id)] : 0;
+  }
+  if (out.Pixels > 0)
+  {
+    const double n = static_cast<double>(out.Pixels);
+    out.Reaching = reaching / n;
+    out.Floor = floor / n;
+    out.Cells = cells / n;
+  }
+  return out;
+}
+
 } // namespace vtkClusteredLighting
 
 #endif

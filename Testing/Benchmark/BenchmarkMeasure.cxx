@@ -3,6 +3,7 @@
 
 #include "ClusteredLightingImages.h"
 #include "ClusteredLightingScenes.h"
+#include "vtkClusteredLightingInspector.h"
 
 #include "vtkActorCollection.h"
 #include "vtkCamera.h"
@@ -353,6 +354,45 @@ void Context::MeasureCounts(Row& row)
     }
   }
   row.EvaluatedIn32 = n ? s32 / n : NAN;
+  if (this->MeasureFloor)
+  {
+    this->MeasureCullingFloor(row);
+  }
+}
+
+//------------------------------------------------------------------------------
+// The culling floor of the last assignment, from its snapshot (the pass's test hook) and
+// the window's depth: the reference assignment in double precision, cut to the frame's
+// depth-aware clusters, and per pixel the lights that reach its cluster's fragments.
+void Context::MeasureCullingFloor(Row& row)
+{
+  vtkClusteredLightingInspector inspect(this->Pass);
+  const vtkClusteredLightingAssignmentSnapshot frame = inspect.GetFrame(this->Renderer);
+  if (!frame.Valid)
+  {
+    return;
+  }
+  const int* size = this->Window->GetSize();
+  std::vector<float> depth(static_cast<std::size_t>(size[0]) * static_cast<std::size_t>(size[1]));
+  this->Window->GetZbufferData(0, 0, size[0] - 1, size[1] - 1, depth.data());
+  const vtkClusteredLighting::DepthImage image{ depth.data(), size[0], size[1] };
+  const std::vector<vtkClusteredLighting::ReferenceLight> lights =
+    vtkClusteredLightingInspector::ComputeLightsVC(frame);
+  const vtkClusteredLighting::ReferenceAssignment ref =
+    vtkClusteredLighting::ComputeReferenceAssignment(lights, frame.Grid, frame.VCDC,
+      frame.Grid.NearVC, frame.Grid.GetMaxFragmentDepth(),
+      frame.DepthBounds.Valid ? &frame.DepthBounds : nullptr);
+  const vtkClusteredLighting::ClusterCullingFloor floor =
+    vtkClusteredLighting::MeasureClusterCullingFloor(image, frame.VCDC, frame.Grid, lights, ref);
+  if (floor.Pixels > 0)
+  {
+    row.CellsPerPixel = floor.Cells;
+    row.FloorPerPixel = floor.Floor;
+    std::printf("  culling floor: %.3f lights per pixel in exact cells, %.3f reaching some "
+                "fragment of the cluster, %.3f reaching the pixel (the pass counted %.3f "
+                "evaluated, %.3f reaching)\n",
+      floor.Cells, floor.Floor, floor.Reaching, row.Evaluated, row.Reached);
+  }
 }
 
 //------------------------------------------------------------------------------

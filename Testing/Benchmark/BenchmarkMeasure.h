@@ -63,6 +63,11 @@ struct Row
   /// says how much divergent loops could cost there, from an image any renderer gives.
   /// Not measured in multisampled windows.
   double EvaluatedIn32 = NAN;
+  /// With --culling-floor (count rows, single-sampled windows): per pixel of geometry,
+  /// the lights of its cluster in the double-precision reference assignment (exact cell
+  /// culling) and those reaching some fragment of its cluster (what any list per cluster
+  /// must hold: the floor of Evaluated at these clusters; MeasureClusterCullingFloor).
+  double CellsPerPixel = NAN, FloorPerPixel = NAN;
   double PrepassMs = NAN, ShadedPerVisible = NAN; ///< depth prepass; fragments shaded per pixel
   double OpaqueShadedPerVisible = NAN;            ///< the opaque draws' part of ShadedPerVisible
   double FarBuildMs = NAN;    ///< the far field's last build (every frame when lights move)
@@ -113,8 +118,12 @@ public:
   vtkClusteredLightSet* GetLights() { return this->Lights; }
   const Scene* GetScene() const { return this->Current; }
   void SetView();
+  /// Count rows also measure the culling floor (Row::FloorPerPixel). Default is off: the
+  /// reference assignment takes seconds at thousands of lights.
+  void SetMeasureCullingFloor(bool on) { this->MeasureFloor = on; }
 
 private:
+  void MeasureCullingFloor(Row& row);
   void MeasureCounts(Row& row);
   void NudgeLights(int frame);
   void AddStockLights(std::vector<vtkSmartPointer<vtkLight>>& added);
@@ -129,6 +138,7 @@ private:
   std::vector<float> Reference;        ///< exact image of the current lights at the view
   std::vector<unsigned char> Geometry; ///< pixels that show geometry at the view
   double Nudged = 0.0;                 ///< how far NudgeLights moved the lights
+  bool MeasureFloor = false;
   std::vector<vtkSmartPointer<vtkLight>> RendererLights; ///< the "always-on" layout's lights
 };
 

@@ -84,6 +84,8 @@ const std::vector<Column>& Columns()
     CL_NUMBER_COLUMN("evaluated_px", Evaluated),
     CL_NUMBER_COLUMN("reached_px", Reached),
     CL_NUMBER_COLUMN("evaluated_px_in_32", EvaluatedIn32),
+    CL_NUMBER_COLUMN("cells_px", CellsPerPixel),
+    CL_NUMBER_COLUMN("floor_px", FloorPerPixel),
     CL_NUMBER_COLUMN("prepass_ms", PrepassMs),
     CL_NUMBER_COLUMN("shaded_per_visible_px", ShadedPerVisible),
     CL_NUMBER_COLUMN("opaque_shaded_per_visible_px", OpaqueShadedPerVisible),
@@ -261,6 +263,38 @@ void WriteCSV(const std::vector<Row>& rows, const std::string& path)
 // The pass culls the hidden faces of closed surfaces (AutomaticBackfaceCulling), and so
 // does brute force: where the run has stock VTK with them culled by hand (the `culling`
 // row of each scene), that is the base frame, the same geometry the pass draws.
+// The culling floor of the count rows that measured it (--culling-floor).
+static void WriteCullingFloor(const std::vector<Row>& rows, std::ostream& out)
+{
+  if (std::none_of(
+        rows.begin(), rows.end(), [](const Row& r) { return !std::isnan(r.FloorPerPixel); }))
+  {
+    return;
+  }
+  out << "\n## Culling floor (--culling-floor)\n\n"
+      << "Per pixel of geometry, at its centre: the lights the pass walked (evaluated), "
+         "those of its cluster in the reference assignment in double precision (exact "
+         "cells, cut to the frame's depth-aware bounds), those reaching some fragment of its "
+         "cluster (the floor: a list per cluster can hold no fewer and miss no fragment, "
+         "however exact its culling; only finer clusters lower it) and those reaching it "
+         "(the pass's count).\n\n"
+      << "| scene | layout | lights | knob | value | evaluated/px | exact cells/px | floor/px | "
+         "reaching/px | evaluated / reaching | floor / reaching | evaluated / floor |\n"
+      << "|---|---|---:|---|---|---:|---:|---:|---:|---:|---:|---:|\n";
+  for (const Row& r : rows)
+  {
+    if (std::isnan(r.FloorPerPixel))
+    {
+      continue;
+    }
+    out << "| " << r.Scene << " | " << r.Layout << " | " << r.Lights << " | " << r.Sweep << " | "
+        << r.Value << " | " << Num(r.Evaluated, 3) << " | " << Num(r.CellsPerPixel, 3) << " | "
+        << Num(r.FloorPerPixel, 3) << " | " << Num(r.Reached, 3) << " | "
+        << Num(r.Evaluated / r.Reached, 3) << " | " << Num(r.FloorPerPixel / r.Reached, 3) << " | "
+        << Num(r.Evaluated / r.FloorPerPixel, 3) << " |\n";
+  }
+}
+
 static void WriteFloors(const std::vector<Row>& rows, std::ostream& out)
 {
   auto find = [&rows](const std::string& scene, int lights, const std::string& method,
@@ -380,6 +414,7 @@ void WriteMarkdown(const std::vector<Row>& rows, const std::string& path)
         << " | " << Num(r.FarBuildMs, 3) << " | " << Num(r.FarBoundSteps, 3) << " | "
         << Num(r.FarNodes, 6) << " |\n";
   }
+  WriteCullingFloor(rows, out);
   WriteFloors(rows, out);
 }
 
@@ -543,6 +578,19 @@ int CheckCSV(const std::string& path)
         std::isnan(num("list_mib")))
       {
         std::printf("check: clustered row %d lacks error, counts or memory\n", rows);
+        ++failures;
+      }
+      // A pass that walked fewer lights per pixel than reach its clusters' fragments
+      // would have left lights out (false negatives); exact cells hold the floor too. (The
+      // GPU finds a pixel's cluster in float: a pixel on a tile or slice edge may count in
+      // the other cluster, hence the 0.1%.)
+      const double floor = num("floor_px");
+      if (!std::isnan(floor) &&
+        !(num("evaluated_px") >= 0.999 * floor && num("cells_px") >= 0.999 * floor))
+      {
+        std::printf("check: row %d walks fewer lights than its culling floor: %g evaluated, "
+                    "%g in exact cells, floor %g\n",
+          rows, num("evaluated_px"), num("cells_px"), floor);
         ++failures;
       }
       // A budget the pass said it could not meet (it warned) is not held to it.

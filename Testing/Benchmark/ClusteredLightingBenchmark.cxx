@@ -9,12 +9,15 @@
 // and machine.txt.
 //
 //   ClusteredLightingBenchmark [--quick] [--output DIR] [--frames N] [--check]
-//                              [--filter REGEX]
+//                              [--filter REGEX] [--culling-floor]
 //                              [--snapshot SCENE FILE [--view px py pz fx fy fz angle]]
 //
 // --quick finishes in under 2 minutes (small window, fewer steps); --check validates the
 // written CSV (well-formed, finite, error budgets met) and sets the exit code; --filter
-// measures only the steps whose id "scene/layout/lights/method/sweep/value" matches.
+// measures only the steps whose id "scene/layout/lights/method/sweep/value" matches;
+// --culling-floor also measures, on count rows, the lights per pixel that exact cell
+// culling and the best possible list per cluster would walk (results.md's "Culling floor").
+
 #include "BenchmarkMeasure.h"
 #include "BenchmarkPlan.h"
 #include "BenchmarkReport.h"
@@ -40,6 +43,7 @@ struct Options
 {
   bool Quick = false;
   bool Check = false;
+  bool CullingFloor = false;
   int Width = 1024, Height = 768;
   int Frames = 10;
   std::string Output = "benchmark-results";
@@ -60,6 +64,10 @@ bool ParseOptions(int argc, char* argv[], Options& opt)
     else if (a == "--check")
     {
       opt.Check = true;
+    }
+    else if (a == "--culling-floor")
+    {
+      opt.CullingFloor = true;
     }
     else if (a == "--output" && i + 1 < argc)
     {
@@ -104,6 +112,7 @@ bool ParseOptions(int argc, char* argv[], Options& opt)
 int Snapshot(const Options& opt)
 {
   Context ctx(opt.Width, opt.Height);
+  ctx.SetMeasureCullingFloor(opt.CullingFloor);
   Scene s = opt.SnapshotScene == "house" ? HouseScene() : BunnyScene();
   if (opt.View.size() == 7)
   {
@@ -140,6 +149,7 @@ int main(int argc, char* argv[])
   vtksys::SystemTools::MakeDirectory(opt.Output);
 
   Context ctx(opt.Width, opt.Height);
+  ctx.SetMeasureCullingFloor(opt.CullingFloor);
   PlanOptions planOptions;
   planOptions.Quick = opt.Quick;
   planOptions.Frames = opt.Frames;

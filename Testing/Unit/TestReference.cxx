@@ -138,3 +138,49 @@ TEST(Reference, CompareCountsFalseNegativesAndMasterMismatches)
   master[m.Y * L.MasterWidth + m.X] = 1u << 1;
   EXPECT_EQ(CompareWithReference(ref, list, master, L, g).MasterMismatches, 0u);
 }
+
+// What lists per cluster can do at best (MeasureClusterCullingFloor): a wall facing the
+// camera, one slice, small lights each well inside one tile. Every pixel of a light's tile
+// walks it (the floor), only its disk's pixels are reached: the floor is the tiles' share
+// of the pixels, exactly, and finer tiles lower it in proportion.
+TEST(Reference, CullingFloorIsTheLightsOfEachClusterReachingSomeFragment)
+{
+  const int size = 64;
+  const double nearVC = 1.0, farVC = 10.0, wall = 5.0;
+  const glm::dmat4 P = Perspective(40.0, 1.0, nearVC, farVC);
+  const std::vector<float> depth(
+    static_cast<std::size_t>(size) * size, static_cast<float>(WindowDepthFromViewDepth(wall, P)));
+  const DepthImage image{ depth.data(), size, size };
+  // Lights on the wall at pixel centres well inside 16 x 16 pixel tiles (and 8 x 8 ones),
+  // each reaching 2.5 pixels around it.
+  const double pixel = 2.0 * wall * std::tan(20.0 * 3.14159265358979323846 / 180.0) / size;
+  std::vector<ReferenceLight> lights;
+  for (const glm::ivec2 at : { glm::ivec2(4, 4), glm::ivec2(20, 44), glm::ivec2(52, 12) })
+  {
+    const glm::dvec3 c =
+      UnprojectAtDepth(2.0 * (at.x + 0.5) / size - 1.0, 2.0 * (at.y + 0.5) / size - 1.0, wall, P);
+    lights.push_back({ c, 2.5 * pixel });
+  }
+  // A spot light whose cone points away from the wall reaches no pixel, so it raises the
+  // cells' count but not the floor.
+  const glm::dvec3 spot = UnprojectAtDepth(0.3, -0.3, wall - 0.5 * pixel, P);
+  lights.push_back({ spot, 3.0 * pixel, glm::dvec3(0.0, 0.0, 1.0), std::cos(0.3) });
+  for (const int tiles : { 4, 8 })
+  {
+    const ClusterGridParams g = ClusteredLightingTest::MakeGrid(
+      tiles, tiles, 1, size, size, nearVC, farVC, SlicingScheme::Exponential);
+    const ReferenceAssignment ref = ComputeReferenceAssignment(lights, g, P, nearVC, farVC);
+    const ClusterCullingFloor f = MeasureClusterCullingFloor(image, P, g, lights, ref);
+    ASSERT_EQ(f.Pixels, depth.size());
+    const double tilePixels = static_cast<double>(size / tiles) * (size / tiles);
+    EXPECT_DOUBLE_EQ(f.Floor, 3.0 * tilePixels / depth.size()) << tiles << " tiles";
+    // Each point light reaches the pixels within 2.5 pixels of its own: 21 of them.
+    EXPECT_DOUBLE_EQ(f.Reaching, 3.0 * 21.0 / depth.size()) << tiles << " tiles";
+    // The reference's cells hold the spot light too (its ball reaches the wall's slab).
+    EXPECT_GT(f.Cells, f.Floor) << tiles << " tiles";
+  }
+  // Nothing to measure without a matching reference.
+  const ClusterGridParams g =
+    ClusteredLightingTest::MakeGrid(4, 4, 1, size, size, nearVC, farVC, SlicingScheme::Exponential);
+  EXPECT_EQ(MeasureClusterCullingFloor(image, P, g, lights, ReferenceAssignment()).Pixels, 0u);
+}

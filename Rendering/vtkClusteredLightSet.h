@@ -23,6 +23,8 @@
  * Values are validated by the pass when it prepares lights: a light with a NaN/Inf
  * value, a negative intensity, color or radius, or an invalid attenuation is skipped
  * with a warning naming the set and the light index; all other lights are unaffected.
+ * (A cone angle of +Inf is no exception to VTK's rule: like any angle of 90 degrees or
+ * more it makes a point light.)
  * The pass gives these warnings to the set's own WarningEvent observers too (see
  * ReportProblem()).
  *

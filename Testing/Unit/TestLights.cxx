@@ -110,13 +110,16 @@ TEST(LightValidation, BadInputIsNamedAndSkipped)
 // empty cone (VTK lights |angle|), and a tiny but valid spot direction was called zero.
 TEST(LightValidation, PositionsConeAnglesAndDirectionsAtTheEdges)
 {
-  std::vector<LightSource> lights(7);
+  std::vector<LightSource> lights(8);
   for (std::size_t i = 0; i < lights.size(); ++i)
   {
     lights[i].PositionWC = glm::dvec3(double(i), 0, 0);
     lights[i].Attenuation = glm::dvec3(1, 0, 1);
     lights[i].DirectionWC = glm::dvec3(0, -1, 0);
   }
+  // +Inf is 90 degrees or more: a point light, as VTK makes it; -Inf is no cone at all.
+  lights[0].ConeAngle = std::numeric_limits<double>::infinity();
+  lights[7].ConeAngle = -std::numeric_limits<double>::infinity();
   lights[1].PositionWC.x = 3.5e38; // a double, but Inf as a float
   lights[2].PositionWC.z = -1e300;
   lights[3].ConeAngle = -30.0; // lit as 30 degrees, as VTK lights it
@@ -125,14 +128,20 @@ TEST(LightValidation, PositionsConeAnglesAndDirectionsAtTheEdges)
   lights[5].DirectionWC = glm::dvec3(0, -1e-300, 0); // a direction, not zero
   lights[6].PositionWC.y = 3e38;                     // still a float
   const PreparedLights p = PrepareLights(lights, LightPreparationOptions());
-  ASSERT_EQ(p.Problems.size(), 3u);
+  ASSERT_EQ(p.Problems.size(), 4u);
   EXPECT_NE(p.Problems[0].find("light 1: position"), std::string::npos) << p.Problems[0];
   EXPECT_NE(p.Problems[0].find("32-bit"), std::string::npos) << p.Problems[0];
   EXPECT_NE(p.Problems[1].find("light 2: position"), std::string::npos) << p.Problems[1];
   EXPECT_NE(p.Problems[2].find("light 4: spot cone angle -90"), std::string::npos) << p.Problems[2];
+  EXPECT_NE(p.Problems[3].find("light 7: spot cone angle -inf"), std::string::npos)
+    << p.Problems[3];
   ASSERT_EQ(p.Lights.size(), 4u);
   for (const PreparedLight& l : p.Lights)
   {
+    if (l.SourceIndex == 0)
+    {
+      EXPECT_FALSE(l.IsSpot());
+    }
     if (l.SourceIndex == 3)
     {
       EXPECT_NEAR(l.CosCone, std::cos(glm::radians(30.0)), 1e-12);

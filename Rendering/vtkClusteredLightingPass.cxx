@@ -21,6 +21,7 @@
 #include "vtkClusteredLightingVolumetricStep.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
+#include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -39,6 +40,7 @@
 #include <chrono>    // for timings
 #include <cmath>     // for std::isnan, std::isfinite
 #include <cstdint>   // for std::uint64_t
+#include <iterator>  // for std::size, std::begin
 #include <map>       // for std::map
 #include <set>       // for std::set
 #include <sstream>   // for std::ostringstream
@@ -349,7 +351,43 @@ vtkClusteredLightingEnumSetter(BoundsMethod, BoundsMethodNames, "bounds method")
 //------------------------------------------------------------------------------
 void vtkClusteredLightingPass::SetErrorBudgetInSteps(double steps)
 {
-  this->SetErrorBudget(std::isnan(steps) ? 0.0 : steps / 255.0);
+  if (std::isnan(steps))
+  {
+    vtkWarningMacro(<< "SetErrorBudgetInSteps: NaN is no number of steps; the budget stays "
+                    << this->GetErrorBudgetInSteps() << " steps.");
+    return;
+  }
+  this->SetErrorBudget(steps / 255.0);
+}
+
+//------------------------------------------------------------------------------
+void vtkClusteredLightingPass::ResetNaNOptions()
+{
+  double* const options[] = { &this->ContributionCutoff, &this->FarFieldCutoff, &this->ErrorBudget,
+    &this->FarFieldCellsPerRadius, &this->FarFieldTolerance, &this->FarFieldGrouping,
+    &this->NearFieldBudget, &this->HeatMapMaximum };
+  if (std::none_of(
+        std::begin(options), std::end(options), [](double* v) { return std::isnan(*v); }))
+  {
+    return;
+  }
+  // The defaults are a new pass's (the header's initializers), in the same order.
+  vtkNew<vtkClusteredLightingPass> fresh;
+  const double defaults[] = { fresh->ContributionCutoff, fresh->FarFieldCutoff, fresh->ErrorBudget,
+    fresh->FarFieldCellsPerRadius, fresh->FarFieldTolerance, fresh->FarFieldGrouping,
+    fresh->NearFieldBudget, fresh->HeatMapMaximum };
+  const char* const names[] = { "ContributionCutoff", "FarFieldCutoff", "ErrorBudget",
+    "FarFieldCellsPerRadius", "FarFieldTolerance", "FarFieldGrouping", "NearFieldBudget",
+    "HeatMapMaximum" };
+  for (std::size_t i = 0; i < std::size(options); ++i)
+  {
+    if (std::isnan(*options[i]))
+    {
+      vtkWarningMacro(<< names[i] << " is NaN; it is set back to its default, " << defaults[i]
+                      << ".");
+      *options[i] = defaults[i];
+    }
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -612,6 +650,7 @@ void vtkClusteredLightingPass::Render(const vtkRenderState* s)
   }
   this->SetUpCamera(ren);
   this->ReportIgnoredRendererOptions(ren);
+  this->ResetNaNOptions();
 
   // 1. Light gathering. An application's delegate (ParaView's) renders the volumes with the
   // surfaces, while the clustered vtkLights are hidden from VTK's lighting code, and a

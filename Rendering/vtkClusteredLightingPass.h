@@ -1035,6 +1035,9 @@ private:
   void SetUpCamera(vtkRenderer* ren);
   void RenderSelection(const vtkRenderState* s);
   void ReportIgnoredRendererOptions(vtkRenderer* ren);
+  // Sets each floating-point option that is NaN (vtkSetClampMacro stores NaN as given)
+  // back to its default, with a warning, before a frame reads them.
+  void ResetNaNOptions();
   void ReportUnlitVolumes(
     const vtkRenderState* s, const vtkClusteredLightingLightCollection& lights);
   vtkClusteredLightingAssignerInputs MakeAssignerInputs(

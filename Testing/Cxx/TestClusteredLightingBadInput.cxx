@@ -4,14 +4,17 @@
 // negative); spots without a direction or with a NaN cone; a vtkLight at NaN. Each gets a
 // warning naming the light, is skipped, and every other light is unaffected (the image
 // equals the one rendered with only the valid lights, exactly); nothing crashes, no pixel
-// is NaN; warnings are given once per change, not every frame.
+// is NaN; warnings are given once per change, not every frame. A NaN option of the pass is
+// set back to its default with a warning naming it.
 #include "ClusteredLightingHardCase.h"
 #include "vtkClusteredLightingMessages.h"
 
 #include "vtkLight.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
+#include <vector>
 
 using namespace ClusteredLightingTest;
 
@@ -148,6 +151,68 @@ int TestClusteredLightingBadInput(int, char*[])
     messages->Warnings.empty() ? "(no warning)" : messages->Warnings[0].c_str());
   failures += vtkLightNamed ? 0 : 1;
   failures += CountNonFinitePixels(pass, renWin) == 0 ? 0 : 1;
+
+  // NaN options: vtkSetClampMacro stores NaN as given (its comparisons are false). The
+  // next frame sets each back to its default with one warning naming it, and renders as
+  // with the default; SetErrorBudgetInSteps(NaN) is refused when called.
+  renWin->Render();
+  const std::vector<float> before = CapturePixels(renWin);
+  vtkNew<vtkClusteredLightingPass> fresh;
+  struct NaNOption
+  {
+    const char* Name;
+    void (*Set)(vtkClusteredLightingPass*, double);
+    double (*Get)(vtkClusteredLightingPass*);
+  };
+  const NaNOption nanOptions[] = {
+    { "ContributionCutoff",
+      [](vtkClusteredLightingPass* p, double v) { p->SetContributionCutoff(v); },
+      [](vtkClusteredLightingPass* p) { return p->GetContributionCutoff(); } },
+    { "FarFieldCutoff", [](vtkClusteredLightingPass* p, double v) { p->SetFarFieldCutoff(v); },
+      [](vtkClusteredLightingPass* p) { return p->GetFarFieldCutoff(); } },
+    { "ErrorBudget", [](vtkClusteredLightingPass* p, double v) { p->SetErrorBudget(v); },
+      [](vtkClusteredLightingPass* p) { return p->GetErrorBudget(); } },
+    { "FarFieldCellsPerRadius",
+      [](vtkClusteredLightingPass* p, double v) { p->SetFarFieldCellsPerRadius(v); },
+      [](vtkClusteredLightingPass* p) { return p->GetFarFieldCellsPerRadius(); } },
+    { "FarFieldTolerance",
+      [](vtkClusteredLightingPass* p, double v) { p->SetFarFieldTolerance(v); },
+      [](vtkClusteredLightingPass* p) { return p->GetFarFieldTolerance(); } },
+    { "FarFieldGrouping", [](vtkClusteredLightingPass* p, double v) { p->SetFarFieldGrouping(v); },
+      [](vtkClusteredLightingPass* p) { return p->GetFarFieldGrouping(); } },
+    { "NearFieldBudget", [](vtkClusteredLightingPass* p, double v) { p->SetNearFieldBudget(v); },
+      [](vtkClusteredLightingPass* p) { return p->GetNearFieldBudget(); } },
+    { "HeatMapMaximum", [](vtkClusteredLightingPass* p, double v) { p->SetHeatMapMaximum(v); },
+      [](vtkClusteredLightingPass* p) { return p->GetHeatMapMaximum(); } },
+  };
+  for (const NaNOption& o : nanOptions)
+  {
+    messages->Clear();
+    o.Set(pass, nan);
+    renWin->Render();
+    const bool named = messages->Warnings.size() == 1 &&
+      messages->Warnings[0].find(o.Name) != std::string::npos &&
+      messages->Warnings[0].find("NaN") != std::string::npos;
+    const bool reset = o.Get(pass) == o.Get(fresh);
+    const bool same = CapturePixels(renWin) == before;
+    std::printf("[%s] %s NaN: %s; %s %g (default %g); image %s\n",
+      named && reset && same ? "PASS" : "FAIL", o.Name,
+      messages->Warnings.empty() ? "(no warning)" : messages->Warnings[0].c_str(), o.Name,
+      o.Get(pass), o.Get(fresh), same ? "unchanged" : "changed");
+    failures += named && reset && same ? 0 : 1;
+    renWin->Render(); // once: no warning in the next frame
+    failures += messages->Warnings.size() == 1 ? 0 : 1;
+  }
+  messages->Clear();
+  pass->SetErrorBudgetInSteps(4.0);
+  pass->SetErrorBudgetInSteps(nan);
+  const bool refused = messages->Warnings.size() == 1 &&
+    messages->Warnings[0].find("NaN") != std::string::npos &&
+    std::abs(pass->GetErrorBudgetInSteps() - 4.0) < 1e-12;
+  std::printf("[%s] SetErrorBudgetInSteps(NaN) refused, the budget stays %g steps\n",
+    refused ? "PASS" : "FAIL", pass->GetErrorBudgetInSteps());
+  failures += refused ? 0 : 1;
+  pass->SetErrorBudgetInSteps(0.0);
   std::printf("%d failed check(s)\n", failures);
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

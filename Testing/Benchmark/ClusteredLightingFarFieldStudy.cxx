@@ -13,7 +13,7 @@
 //   ClusteredLightingFarFieldStudy [--scene bunny|house|user|dense] [--always-on]
 //     [--lights N] [--samples S] [--cutoffs 1024,4096] [--nodes 32768] [--cells 2]
 //     [--grouping 0.05] [--hierarchy 0.02,0.1] [--bounds] [--copies] [--worst K]
-//     [--orders] [--blocks 255,2048] [--far-cutoffs] [--intensity I]
+//     [--orders] [--order4-grid] [--blocks 255,2048] [--far-cutoffs] [--intensity I]
 //
 // Rows: "cut at 1/c" (before the far field: every light cut at its cutoff radius); "far
 // field" (design 1, the product's core code: PlanFarField, ComputeFarFieldMoments, the
@@ -30,13 +30,16 @@
 // worst samples taken apart), and with --orders as well what more angular resolution would buy: the
 // kernels of orders 2 (the product's), 4, 6 and 8 applied to the exact moments at the point,
 // clamped into the order-2 interval, with the grid's share as measured at order 2, and
-// each with the far specular exact; "hierarchy per point" (design 2: the light tree walked at each
-// point, groups taken by their aggregation bound, each shaded exactly; the cost is the lights and
-// groups evaluated per point, in the near/pt column); with --blocks, for each tolerance 1/t
-// (colour units), the far parts summed to within half of it from bounds of blocks of 32
-// lights in Morton order (FarBlocksStudy.h, a design measured and not adopted): the work
-// per point (block bounds and lights summed) against the far-field lights, and the largest
-// error against the exact far sum. List options take comma-separated values.
+// each with the far specular exact; with --order4-grid (and --worst) an order-4 far
+// diffuse through the grid itself: each node's exact fourth-order moments (brute force
+// over the lights) interpolated trilinearly beside the product's order-2 ones, with the
+// product's far specular and with it exact; "hierarchy per point" (design 2: the light tree walked
+// at each point, groups taken by their aggregation bound, each shaded exactly; the cost is the
+// lights and groups evaluated per point, in the near/pt column); with --blocks, for each tolerance
+// 1/t (colour units), the far parts summed to within half of it from bounds of blocks of 32 lights
+// in Morton order (FarBlocksStudy.h, a design measured and not adopted): the work per point (block
+// bounds and lights summed) against the far-field lights, and the largest error against the exact
+// far sum. List options take comma-separated values.
 #include "BenchmarkMeasure.h"
 #include "BenchmarkPlan.h"
 #include "ClusteredLightingScenes.h"
@@ -335,6 +338,135 @@ std::array<double, LargestStudyOrder + 1> ComputeLegendreKernel(double n)
   return k;
 }
 
+/// The 15 monomials u_x^a u_y^b u_z^c of degree 4 (a + b + c = 4) and their multinomial
+/// coefficients 4! / (a! b! c!), for the fourth-order moments of the far light.
+struct Degree4
+{
+  int A, B, C;
+  double Coefficient;
+};
+const std::array<Degree4, 15>& GetDegree4()
+{
+  static const std::array<Degree4, 15> terms = []
+  {
+    std::array<Degree4, 15> t{};
+    const double f[5] = { 1, 1, 2, 6, 24 };
+    int n = 0;
+    for (int a = 4; a >= 0; --a)
+    {
+      for (int b = 4 - a; b >= 0; --b)
+      {
+        const int c = 4 - a - b;
+        t[static_cast<std::size_t>(n++)] = { a, b, c, f[4] / (f[a] * f[b] * f[c]) };
+      }
+    }
+    return t;
+  }();
+  return terms;
+}
+
+/// Exact fourth-order moments of the far light at every node (45 per node: 15 per channel,
+/// sum g colour u^a), by brute force over the lights: the experiment of an order-4 far
+/// diffuse through the grid (--order4-grid; not the product's).
+std::vector<double> ComputeDegree4Nodes(const FarFieldGrid& grid,
+  const std::vector<PreparedLight>& lights, const std::vector<double>& radii)
+{
+  const std::size_t nodes = static_cast<std::size_t>(grid.GetNumberOfNodes());
+  std::vector<double> out(nodes * 45, 0.0);
+  const auto& terms = GetDegree4();
+  ParallelFor(static_cast<std::size_t>(grid.Dims[2]),
+    [&](std::size_t k)
+    {
+      for (int j = 0; j < grid.Dims[1]; ++j)
+      {
+        for (int i = 0; i < grid.Dims[0]; ++i)
+        {
+          const glm::dvec3 p = grid.NodePosition(i, j, static_cast<int>(k));
+          double* m =
+            &out[static_cast<std::size_t>(grid.NodeIndex(i, j, static_cast<int>(k))) * 45];
+          for (std::size_t l = 0; l < lights.size(); ++l)
+          {
+            double far;
+            glm::dvec3 u;
+            if (!ComputeFarContribution(lights[l], radii[l], p, far, u))
+            {
+              continue;
+            }
+            const double px[5] = { 1, u.x, u.x * u.x, u.x * u.x * u.x, u.x * u.x * u.x * u.x };
+            const double py[5] = { 1, u.y, u.y * u.y, u.y * u.y * u.y, u.y * u.y * u.y * u.y };
+            const double pz[5] = { 1, u.z, u.z * u.z, u.z * u.z * u.z, u.z * u.z * u.z * u.z };
+            for (std::size_t t = 0; t < terms.size(); ++t)
+            {
+              const double mono = far * px[terms[t].A] * py[terms[t].B] * pz[terms[t].C];
+              for (int c = 0; c < 3; ++c)
+              {
+                m[static_cast<std::size_t>(c) * 15 + t] += lights[l].Color[c] * mono;
+              }
+            }
+          }
+        }
+      }
+    });
+  return out;
+}
+
+/// The far diffuse at order 4 from interpolated order-2 moments g and fourth-order ones
+/// (ComputeDegree4Nodes, trilinear as InterpolateFarMoments): the order-2 estimate plus
+/// k4 sum g P4(N.u), k4 = -3/32 for max(0, t), clamped into the order-2 interval.
+glm::dvec3 EvaluateFarDiffuseOrder4(const std::array<double, FarFieldFloatsPerNode>& g,
+  const FarFieldGrid& grid, const std::vector<double>& band4, const glm::dvec3& P,
+  const glm::dvec3& N)
+{
+  // Trilinear weights as InterpolateFarMoments takes them.
+  const glm::dvec3 u = (P - grid.Origin) / grid.Spacing;
+  int base[3];
+  double t[3];
+  for (int a = 0; a < 3; ++a)
+  {
+    const double c = std::min(std::max(u[a], 0.0), static_cast<double>(grid.Dims[a] - 1));
+    base[a] = std::min(static_cast<int>(std::floor(c)), std::max(grid.Dims[a] - 2, 0));
+    t[a] = c - base[a];
+  }
+  std::array<double, 45> m4{};
+  for (int corner = 0; corner < 8; ++corner)
+  {
+    const int di = corner & 1, dj = (corner >> 1) & 1, dk = (corner >> 2) & 1;
+    const double w = (di ? t[0] : 1 - t[0]) * (dj ? t[1] : 1 - t[1]) * (dk ? t[2] : 1 - t[2]);
+    const int ii = std::min(base[0] + di, grid.Dims[0] - 1);
+    const int jj = std::min(base[1] + dj, grid.Dims[1] - 1);
+    const int kk = std::min(base[2] + dk, grid.Dims[2] - 1);
+    const double* m = &band4[static_cast<std::size_t>(grid.NodeIndex(ii, jj, kk)) * 45];
+    for (std::size_t q = 0; q < 45; ++q)
+    {
+      m4[q] += w * m[q];
+    }
+  }
+  const auto& terms = GetDegree4();
+  const glm::dvec3 k = ComputeLobeKernel(1.0);
+  glm::dvec3 out(0.0);
+  for (int c = 0; c < 3; ++c)
+  {
+    const double* mc = &g[static_cast<std::size_t>(c) * FarFieldMomentsPerChannel];
+    const double S = mc[0];
+    const double VN = mc[1] * N.x + mc[2] * N.y + mc[3] * N.z;
+    const double Tzz = S - mc[4] - mc[5];
+    const double NTN = mc[4] * N.x * N.x + mc[5] * N.y * N.y + Tzz * N.z * N.z +
+      2.0 * (mc[6] * N.x * N.y + mc[7] * N.x * N.z + mc[8] * N.y * N.z);
+    double N4 = 0.0;
+    for (std::size_t q = 0; q < terms.size(); ++q)
+    {
+      N4 += terms[q].Coefficient * std::pow(N.x, terms[q].A) * std::pow(N.y, terms[q].B) *
+        std::pow(N.z, terms[q].C) * m4[static_cast<std::size_t>(c) * 15 + q];
+    }
+    const double estimate = k.x * S + k.y * VN + k.z * 0.5 * (3.0 * NTN - S) +
+      (-3.0 / 32.0) * (35.0 * N4 - 30.0 * NTN + 3.0 * S) / 8.0;
+    double low = 0.0, high = 0.0;
+    ApplyMomentKernel(mc, k, N, false, 1.0, &low, &high);
+    out[c] = std::min(std::max(estimate, low), high);
+  }
+  return out;
+}
+
 /**
  * Where the far field's error comes from at the `count` samples of largest error (8-bit
  * steps, worst channel), and on average over all samples: the far parts shaded exactly
@@ -345,11 +477,12 @@ std::array<double, LargestStudyOrder + 1> ComputeLegendreKernel(double n)
 void PrintWorstSamples(const std::vector<Sample>& samples, const std::vector<glm::dvec3>& exact,
   const std::vector<glm::dvec3>& approx, const std::vector<PreparedLight>& lights,
   const std::vector<double>& radii, const FarFieldGrid& grid, const std::vector<double>& values,
-  int count, bool orders)
+  int count, bool orders, const std::vector<double>* band4 = nullptr)
 {
   struct Parts
   {
     glm::dvec3 TrueD{ 0.0 }, TrueS{ 0.0 }, PointD{ 0.0 }, PointS{ 0.0 }, GridD{ 0.0 }, GridS{ 0.0 };
+    glm::dvec3 GridD4{ 0.0 };       ///< --order4-grid: the order-4 diffuse through the grid
     double Largest = 0.0;           ///< the largest single far part (unit colour, before shading)
     double Total = 0.0;             ///< the sum of far parts (unit colour)
     int Brightest = -1;             ///< the light of the largest far part
@@ -438,6 +571,10 @@ void PrintWorstSamples(const std::vector<Sample>& samples, const std::vector<glm
       }
       const auto g = InterpolateFarMoments(grid, values, smp.P);
       q.GridD = EvaluateFarDiffuse(g, smp.N);
+      if (band4)
+      {
+        q.GridD4 = EvaluateFarDiffuseOrder4(g, grid, *band4, smp.P, smp.N);
+      }
       q.GridS = smp.Ks > 0.0 ? EvaluateFarSpecular(g, smp.N, R, smp.Power) : glm::dvec3(0.0);
       double total = 0.0;
       for (int c = 0; c < 3; ++c)
@@ -459,7 +596,7 @@ void PrintWorstSamples(const std::vector<Sample>& samples, const std::vector<glm
   // interpolation and grouping left).
   std::vector<std::pair<int, std::size_t>> order;
   double kernelD = 0.0, kernelS = 0.0, gridD = 0.0, gridS = 0.0, sError = 0.0, vnError = 0.0;
-  Errors perfectSpecular, perfectDiffuseKernel, onlyGrid;
+  Errors perfectSpecular, perfectDiffuseKernel, onlyGrid, grid4, grid4SpecularExact;
   std::array<Errors, std::size(StudyOrders)> byOrder, byOrderSpecularExact;
   std::array<double, std::size(StudyOrders)> orderKernelD{}, orderKernelS{};
   for (std::size_t i = 0; i < samples.size(); ++i)
@@ -483,6 +620,11 @@ void PrintWorstSamples(const std::vector<Sample>& samples, const std::vector<glm
     perfectSpecular.Add(exact[i], nearPart + p.GridD * smp.Kd + p.TrueS * smp.Ks);
     perfectDiffuseKernel.Add(exact[i], nearPart + diffuseKernelExact + p.GridS * smp.Ks);
     onlyGrid.Add(exact[i], nearPart + diffuseKernelExact + (p.GridS - p.PointS + p.TrueS) * smp.Ks);
+    if (band4)
+    {
+      grid4.Add(exact[i], nearPart + p.GridD4 * smp.Kd + p.GridS * smp.Ks);
+      grid4SpecularExact.Add(exact[i], nearPart + p.GridD4 * smp.Kd + p.TrueS * smp.Ks);
+    }
     for (std::size_t o = 0; orders && o < std::size(StudyOrders); ++o)
     {
       // The grid's and the grouping's share as measured at order 2, the kernels' at order o.
@@ -508,6 +650,11 @@ void PrintWorstSamples(const std::vector<Sample>& samples, const std::vector<glm
     std::printf("      mean |kernel error| in steps: diffuse %.3f, specular %.3f\n",
       orderKernelD[o] * 255.0 / (3.0 * samples.size()),
       orderKernelS[o] * 255.0 / (3.0 * samples.size()));
+  }
+  if (band4)
+  {
+    grid4.Print("    order-4 diffuse through the grid", 0.0, 0);
+    grid4SpecularExact.Print("      and the far specular exact", 0.0, 0);
   }
   perfectSpecular.Print("    far specular exact", 0.0, 0);
   perfectDiffuseKernel.Print("    far diffuse kernel exact", 0.0, 0);
@@ -556,6 +703,7 @@ int main(int argc, char* argv[])
   std::vector<double> hierarchyEpsilons;
   std::vector<double> blockTolerances;
   bool orders = false;
+  bool order4Grid = false;
   bool bounds = false;
   bool farCutoffs = false;
   bool copies = false;
@@ -614,6 +762,10 @@ int main(int argc, char* argv[])
     else if (a == "--orders")
     {
       orders = true;
+    }
+    else if (a == "--order4-grid")
+    {
+      order4Grid = true;
     }
     else if (a == "--blocks" && value)
     {
@@ -864,7 +1016,13 @@ int main(int argc, char* argv[])
           }
           if (worst >= 0 && plan.Active)
           {
-            PrintWorstSamples(samples, exact, approx, lights, radii, grid, values, worst, orders);
+            std::vector<double> band4;
+            if (order4Grid)
+            {
+              band4 = ComputeDegree4Nodes(grid, lights, radii);
+            }
+            PrintWorstSamples(samples, exact, approx, lights, radii, grid, values, worst, orders,
+              order4Grid ? &band4 : nullptr);
           }
           char name[160];
           if (farCutoffs)

@@ -367,12 +367,16 @@ const std::array<Degree4, 15>& GetDegree4()
 
 /// Exact fourth-order moments of the far light at every node (45 per node: 15 per channel,
 /// sum g colour u^a), by brute force over the lights: the experiment of an order-4 far
-/// diffuse through the grid (--order4-grid; not the product's).
-std::vector<double> ComputeDegree4Nodes(const FarFieldGrid& grid,
+/// diffuse through the grid (--order4-grid; not the product's). Stored as two node arrays
+/// of FarFieldFloatsPerNode values each (the first 27 moments, then the other 18 and 9
+/// zeros), so that InterpolateFarMoments interpolates them as the shader would.
+std::array<std::vector<double>, 2> ComputeDegree4Nodes(const FarFieldGrid& grid,
   const std::vector<PreparedLight>& lights, const std::vector<double>& radii)
 {
   const std::size_t nodes = static_cast<std::size_t>(grid.GetNumberOfNodes());
-  std::vector<double> out(nodes * 45, 0.0);
+  std::array<std::vector<double>, 2> out;
+  out[0].assign(nodes * FarFieldFloatsPerNode, 0.0);
+  out[1].assign(nodes * FarFieldFloatsPerNode, 0.0);
   const auto& terms = GetDegree4();
   ParallelFor(static_cast<std::size_t>(grid.Dims[2]),
     [&](std::size_t k)
@@ -382,8 +386,9 @@ std::vector<double> ComputeDegree4Nodes(const FarFieldGrid& grid,
         for (int i = 0; i < grid.Dims[0]; ++i)
         {
           const glm::dvec3 p = grid.NodePosition(i, j, static_cast<int>(k));
-          double* m =
-            &out[static_cast<std::size_t>(grid.NodeIndex(i, j, static_cast<int>(k))) * 45];
+          const std::size_t node =
+            static_cast<std::size_t>(grid.NodeIndex(i, j, static_cast<int>(k)));
+          double m[45] = {};
           for (std::size_t l = 0; l < lights.size(); ++l)
           {
             double far;
@@ -404,6 +409,11 @@ std::vector<double> ComputeDegree4Nodes(const FarFieldGrid& grid,
               }
             }
           }
+          for (std::size_t q = 0; q < 45; ++q)
+          {
+            out[q / FarFieldFloatsPerNode]
+               [node * FarFieldFloatsPerNode + q % FarFieldFloatsPerNode] = m[q];
+          }
         }
       }
     });
@@ -411,36 +421,17 @@ std::vector<double> ComputeDegree4Nodes(const FarFieldGrid& grid,
 }
 
 /// The far diffuse at order 4 from interpolated order-2 moments g and fourth-order ones
-/// (ComputeDegree4Nodes, trilinear as InterpolateFarMoments): the order-2 estimate plus
+/// (ComputeDegree4Nodes, interpolated by InterpolateFarMoments): the order-2 estimate plus
 /// k4 sum g P4(N.u), k4 = -3/32 for max(0, t), clamped into the order-2 interval.
 glm::dvec3 EvaluateFarDiffuseOrder4(const std::array<double, FarFieldFloatsPerNode>& g,
-  const FarFieldGrid& grid, const std::vector<double>& band4, const glm::dvec3& P,
+  const FarFieldGrid& grid, const std::array<std::vector<double>, 2>& band4, const glm::dvec3& P,
   const glm::dvec3& N)
 {
-  // Trilinear weights as InterpolateFarMoments takes them.
-  const glm::dvec3 u = (P - grid.Origin) / grid.Spacing;
-  int base[3];
-  double t[3];
-  for (int a = 0; a < 3; ++a)
-  {
-    const double c = std::min(std::max(u[a], 0.0), static_cast<double>(grid.Dims[a] - 1));
-    base[a] = std::min(static_cast<int>(std::floor(c)), std::max(grid.Dims[a] - 2, 0));
-    t[a] = c - base[a];
-  }
-  std::array<double, 45> m4{};
-  for (int corner = 0; corner < 8; ++corner)
-  {
-    const int di = corner & 1, dj = (corner >> 1) & 1, dk = (corner >> 2) & 1;
-    const double w = (di ? t[0] : 1 - t[0]) * (dj ? t[1] : 1 - t[1]) * (dk ? t[2] : 1 - t[2]);
-    const int ii = std::min(base[0] + di, grid.Dims[0] - 1);
-    const int jj = std::min(base[1] + dj, grid.Dims[1] - 1);
-    const int kk = std::min(base[2] + dk, grid.Dims[2] - 1);
-    const double* m = &band4[static_cast<std::size_t>(grid.NodeIndex(ii, jj, kk)) * 45];
-    for (std::size_t q = 0; q < 45; ++q)
-    {
-      m4[q] += w * m[q];
-    }
-  }
+  const std::array<double, FarFieldFloatsPerNode> parts[2] = {
+    InterpolateFarMoments(grid, band4[0], P), InterpolateFarMoments(grid, band4[1], P)
+  };
+  auto m4 = [&](std::size_t q)
+  { return parts[q / FarFieldFloatsPerNode][q % FarFieldFloatsPerNode]; };
   const auto& terms = GetDegree4();
   const glm::dvec3 k = ComputeLobeKernel(1.0);
   glm::dvec3 out(0.0);
@@ -456,7 +447,7 @@ glm::dvec3 EvaluateFarDiffuseOrder4(const std::array<double, FarFieldFloatsPerNo
     for (std::size_t q = 0; q < terms.size(); ++q)
     {
       N4 += terms[q].Coefficient * std::pow(N.x, terms[q].A) * std::pow(N.y, terms[q].B) *
-        std::pow(N.z, terms[q].C) * m4[static_cast<std::size_t>(c) * 15 + q];
+        std::pow(N.z, terms[q].C) * m4(static_cast<std::size_t>(c) * 15 + q);
     }
     const double estimate = k.x * S + k.y * VN + k.z * 0.5 * (3.0 * NTN - S) +
       (-3.0 / 32.0) * (35.0 * N4 - 30.0 * NTN + 3.0 * S) / 8.0;
@@ -477,7 +468,7 @@ glm::dvec3 EvaluateFarDiffuseOrder4(const std::array<double, FarFieldFloatsPerNo
 void PrintWorstSamples(const std::vector<Sample>& samples, const std::vector<glm::dvec3>& exact,
   const std::vector<glm::dvec3>& approx, const std::vector<PreparedLight>& lights,
   const std::vector<double>& radii, const FarFieldGrid& grid, const std::vector<double>& values,
-  int count, bool orders, const std::vector<double>* band4 = nullptr)
+  int count, bool orders, const std::array<std::vector<double>, 2>* band4 = nullptr)
 {
   struct Parts
   {
@@ -1016,7 +1007,7 @@ int main(int argc, char* argv[])
           }
           if (worst >= 0 && plan.Active)
           {
-            std::vector<double> band4;
+            std::array<std::vector<double>, 2> band4;
             if (order4Grid)
             {
               band4 = ComputeDegree4Nodes(grid, lights, radii);

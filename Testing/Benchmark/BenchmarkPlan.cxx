@@ -616,6 +616,21 @@ std::vector<Step> MakePlan(const PlanOptions& options)
       drawn.Apply = [](vtkClusteredLightingPass* p) { p->SetAutomaticBackfaceCulling(false); };
       plan.push_back(drawn);
     }
+    // The default frame without its far field, on every scene: every light cut where the
+    // default cuts the split lights (FarFieldCutoff), so the walk is the default's and the
+    // difference in time is the far field's (its build, texture reads and kernels). The
+    // Floors table takes it from here; its error is what the far field buys.
+    {
+      Step cut = base;
+      cut.Sweep = "far field";
+      cut.Value = "off at default radii";
+      cut.Apply = [](vtkClusteredLightingPass* p)
+      {
+        p->SetContributionCutoff(p->GetFarFieldCutoff());
+        p->SetFarField(false);
+      };
+      plan.push_back(cut);
+    }
     if (!main)
     {
       continue;
@@ -646,16 +661,6 @@ std::vector<Step> MakePlan(const PlanOptions& options)
     }
     // The far field (docs/far-field.md): off is the cut tails of earlier versions.
     knob("far field", "off", [](vtkClusteredLightingPass* p) { p->SetFarField(false); });
-    // The default frame without its far field: every light cut where the default cuts the
-    // split lights (FarFieldCutoff), so the walk is the default's and the difference in
-    // time is the far field's (its build, texture reads and kernels). The Floors table
-    // takes it from here; its error is what the far field buys.
-    knob("far field", "off at default radii",
-      [](vtkClusteredLightingPass* p)
-      {
-        p->SetContributionCutoff(p->GetFarFieldCutoff());
-        p->SetFarField(false);
-      });
     if (!quick)
     {
       for (int nodes : { 8192, 131072 })

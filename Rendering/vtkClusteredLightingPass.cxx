@@ -21,7 +21,6 @@
 #include "vtkClusteredLightingVolumetricStep.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
-#include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -40,7 +39,6 @@
 #include <chrono>    // for timings
 #include <cmath>     // for std::isnan, std::isfinite
 #include <cstdint>   // for std::uint64_t
-#include <iterator>  // for std::size, std::begin
 #include <map>       // for std::map
 #include <set>       // for std::set
 #include <sstream>   // for std::ostringstream
@@ -363,29 +361,27 @@ void vtkClusteredLightingPass::SetErrorBudgetInSteps(double steps)
 //------------------------------------------------------------------------------
 void vtkClusteredLightingPass::ResetNaNOptions()
 {
-  double* const options[] = { &this->ContributionCutoff, &this->FarFieldCutoff, &this->ErrorBudget,
-    &this->FarFieldCellsPerRadius, &this->FarFieldTolerance, &this->FarFieldGrouping,
-    &this->NearFieldBudget, &this->HeatMapMaximum };
-  if (std::none_of(
-        std::begin(options), std::end(options), [](double* v) { return std::isnan(*v); }))
+  static const struct
   {
-    return;
-  }
-  // The defaults are a new pass's (the header's initializers), in the same order.
-  vtkNew<vtkClusteredLightingPass> fresh;
-  const double defaults[] = { fresh->ContributionCutoff, fresh->FarFieldCutoff, fresh->ErrorBudget,
-    fresh->FarFieldCellsPerRadius, fresh->FarFieldTolerance, fresh->FarFieldGrouping,
-    fresh->NearFieldBudget, fresh->HeatMapMaximum };
-  const char* const names[] = { "ContributionCutoff", "FarFieldCutoff", "ErrorBudget",
-    "FarFieldCellsPerRadius", "FarFieldTolerance", "FarFieldGrouping", "NearFieldBudget",
-    "HeatMapMaximum" };
-  for (std::size_t i = 0; i < std::size(options); ++i)
+    const char* Name;
+    double vtkClusteredLightingPass::*Member;
+  } options[] = { { "ContributionCutoff", &vtkClusteredLightingPass::ContributionCutoff },
+    { "FarFieldCutoff", &vtkClusteredLightingPass::FarFieldCutoff },
+    { "ErrorBudget", &vtkClusteredLightingPass::ErrorBudget },
+    { "FarFieldCellsPerRadius", &vtkClusteredLightingPass::FarFieldCellsPerRadius },
+    { "FarFieldTolerance", &vtkClusteredLightingPass::FarFieldTolerance },
+    { "FarFieldGrouping", &vtkClusteredLightingPass::FarFieldGrouping },
+    { "NearFieldBudget", &vtkClusteredLightingPass::NearFieldBudget },
+    { "HeatMapMaximum", &vtkClusteredLightingPass::HeatMapMaximum } };
+  vtkSmartPointer<vtkClusteredLightingPass> fresh; // the defaults: a new pass's, if needed
+  for (const auto& o : options)
   {
-    if (std::isnan(*options[i]))
+    if (std::isnan(this->*o.Member))
     {
-      vtkWarningMacro(<< names[i] << " is NaN; it is set back to its default, " << defaults[i]
-                      << ".");
-      *options[i] = defaults[i];
+      fresh = fresh ? fresh : vtkSmartPointer<vtkClusteredLightingPass>::New();
+      vtkWarningMacro(<< o.Name << " is NaN; it is set back to its default, "
+                      << fresh.Get()->*o.Member << ".");
+      this->*o.Member = fresh.Get()->*o.Member;
     }
   }
 }

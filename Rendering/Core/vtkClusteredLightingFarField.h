@@ -1053,15 +1053,22 @@ inline double ApplyKernelToContractions(const glm::dvec3& k, double S, double VD
   return std::min(std::max(estimate, lower), upper);
 }
 
+/// One channel's moments m (FarFieldMomentsPerChannel) contracted with direction D: V.D
+/// and D^T T D (Tzz = S - Txx - Tyy).
+inline void ContractMoments(const double* m, const glm::dvec3& D, double& VD, double& DTD)
+{
+  const double Tzz = m[0] - m[4] - m[5];
+  VD = m[1] * D.x + m[2] * D.y + m[3] * D.z;
+  DTD = m[4] * D.x * D.x + m[5] * D.y * D.y + Tzz * D.z * D.z +
+    2.0 * (m[6] * D.x * D.y + m[7] * D.x * D.z + m[8] * D.y * D.z);
+}
+
 inline double ApplyMomentKernel(const double* m, const glm::dvec3& k, const glm::dvec3& D,
   bool lobe = false, double power = 1.0, double* lowerOut = nullptr, double* upperOut = nullptr)
 {
-  const double S = m[0];
-  const double VD = m[1] * D.x + m[2] * D.y + m[3] * D.z;
-  const double Tzz = S - m[4] - m[5];
-  const double DTD = m[4] * D.x * D.x + m[5] * D.y * D.y + Tzz * D.z * D.z +
-    2.0 * (m[6] * D.x * D.y + m[7] * D.x * D.z + m[8] * D.y * D.z);
-  return ApplyKernelToContractions(k, S, VD, DTD, lobe, power, lowerOut, upperOut);
+  double VD = 0.0, DTD = 0.0;
+  ContractMoments(m, D, VD, DTD);
+  return ApplyKernelToContractions(k, m[0], VD, DTD, lobe, power, lowerOut, upperOut);
 }
 
 /// Diffuse far irradiance (per unit colour, per channel) for normal N.

@@ -260,9 +260,6 @@ void WriteCSV(const std::vector<Row>& rows, const std::string& path)
 // lights that really reach it, each at the cost of one light evaluation of the same
 // shading code (the slope of the brute-force rows, which evaluate every light at every
 // pixel). The default frame is then split into that floor and what it pays above it.
-// The pass culls the hidden faces of closed surfaces (AutomaticBackfaceCulling), and so
-// does brute force: where the run has stock VTK with them culled by hand (the `culling`
-// row of each scene), that is the base frame, the same geometry the pass draws.
 // The culling floor of the count rows that measured it (--culling-floor).
 static void WriteCullingFloor(const std::vector<Row>& rows, std::ostream& out)
 {
@@ -295,6 +292,9 @@ static void WriteCullingFloor(const std::vector<Row>& rows, std::ostream& out)
   }
 }
 
+// The pass culls the hidden faces of closed surfaces (AutomaticBackfaceCulling), and so
+// does brute force: where the run has stock VTK with them culled by hand (the `culling`
+// row of each scene), that is the base frame, the same geometry the pass draws.
 static void WriteFloors(const std::vector<Row>& rows, std::ostream& out)
 {
   auto find = [&rows](const std::string& scene, int lights, const std::string& method,

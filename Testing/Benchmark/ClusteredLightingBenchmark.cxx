@@ -17,7 +17,6 @@
 // measures only the steps whose id "scene/layout/lights/method/sweep/value" matches;
 // --culling-floor also measures, on count rows, the lights per pixel that exact cell
 // culling and the best possible list per cluster would walk (results.md's "Culling floor").
-
 #include "BenchmarkMeasure.h"
 #include "BenchmarkPlan.h"
 #include "BenchmarkReport.h"
@@ -112,7 +111,6 @@ bool ParseOptions(int argc, char* argv[], Options& opt)
 int Snapshot(const Options& opt)
 {
   Context ctx(opt.Width, opt.Height);
-  ctx.SetMeasureCullingFloor(opt.CullingFloor);
   Scene s = opt.SnapshotScene == "house" ? HouseScene() : BunnyScene();
   if (opt.View.size() == 7)
   {

@@ -439,10 +439,8 @@ glm::dvec3 EvaluateFarDiffuseOrder4(const std::array<double, FarFieldFloatsPerNo
   {
     const double* mc = &g[static_cast<std::size_t>(c) * FarFieldMomentsPerChannel];
     const double S = mc[0];
-    const double VN = mc[1] * N.x + mc[2] * N.y + mc[3] * N.z;
-    const double Tzz = S - mc[4] - mc[5];
-    const double NTN = mc[4] * N.x * N.x + mc[5] * N.y * N.y + Tzz * N.z * N.z +
-      2.0 * (mc[6] * N.x * N.y + mc[7] * N.x * N.z + mc[8] * N.y * N.z);
+    double VN = 0.0, NTN = 0.0;
+    ContractMoments(mc, N, VN, NTN);
     double N4 = 0.0;
     for (std::size_t q = 0; q < terms.size(); ++q)
     {
@@ -452,7 +450,7 @@ glm::dvec3 EvaluateFarDiffuseOrder4(const std::array<double, FarFieldFloatsPerNo
     const double estimate = k.x * S + k.y * VN + k.z * 0.5 * (3.0 * NTN - S) +
       (-3.0 / 32.0) * (35.0 * N4 - 30.0 * NTN + 3.0 * S) / 8.0;
     double low = 0.0, high = 0.0;
-    ApplyMomentKernel(mc, k, N, false, 1.0, &low, &high);
+    ComputeMomentInterval(S, VN, NTN, false, 1.0, low, high);
     out[c] = std::min(std::max(estimate, low), high);
   }
   return out;

@@ -109,7 +109,8 @@ bool vtkClusteredLightingAssigner::PreparationKey::operator!=(const PreparationK
     this->FarField.TargetNodes != o.FarField.TargetNodes ||
     this->FarField.Grouping != o.FarField.Grouping ||
     this->FarField.NearBudget != o.FarField.NearBudget ||
-    this->FarField.SharedColor != o.FarField.SharedColor || this->RegionLo != o.RegionLo ||
+    this->FarField.SharedColor != o.FarField.SharedColor ||
+    this->FarField.Order4Diffuse != o.FarField.Order4Diffuse || this->RegionLo != o.RegionLo ||
     this->RegionHi != o.RegionHi;
 }
 
@@ -339,6 +340,7 @@ const vtkClusteredLightingAssignment& vtkClusteredLightingAssigner::Update(
   r.FarFieldBytes = this->FarField.GetBytes();
   const glm::dvec3 shared = r.FarField ? this->FarField.GetSharedColor() : glm::dvec3(0.0);
   r.FarFieldOneChannel = shared != glm::dvec3(0.0);
+  r.FarFieldOrder4 = r.FarField && this->FarFieldPlan.Order4Diffuse;
   for (int c = 0; c < 3; ++c)
   {
     r.FarFieldColor[c] = static_cast<float>(shared[c]);
@@ -931,7 +933,7 @@ vtkClusteredLightingAssigner::SummarizeFarFieldErrorBound() const
   }
   const vtkClusteredLighting::FarFieldBuildInputs in{ &this->FarFieldPlan.Grid,
     &this->Prepared.Lights, &this->FarField.GetNearRadii(), &this->FarField.GetTree(),
-    this->FarFieldPlan.Grouping };
+    this->FarFieldPlan.Grouping, this->FarFieldPlan.Order4Diffuse };
   return SummarizeOnThreads(in);
 }
 

@@ -178,9 +178,10 @@ struct vtkClusteredLightingAssignment
   vtkClusteredLighting::FarFieldResolutionChoice FarFieldBudgetChoice;
   bool FarFieldResolutionChosen = false; ///< this update made that choice (again)
   std::uint64_t FarFieldBytes = 0;
-  /// The far-field lights share a colour: one channel in 3 textures, times FarFieldColor
-  /// (FindFarFieldSharedColor); else three channels in 7.
+  /// The far-field lights share a colour: one channel in 5 textures (3 at order 2), times
+  /// FarFieldColor (FindFarFieldSharedColor); else three channels in 14 (7).
   bool FarFieldOneChannel = false;
+  bool FarFieldOrder4 = false; ///< the far diffuse to order 4 (FarFieldPlan::Order4Diffuse)
   float FarFieldColor[3] = { 0.0f, 0.0f, 0.0f };
   float FarFieldFromVC[16] = { 0 }; ///< VC -> far-field texture coordinates (column-major)
   float WorldFromVC[9] = { 0 };     ///< VC -> world directions (column-major)

@@ -51,15 +51,19 @@ bool vtkClusteredLightingFarFieldTextures::Build(
   // (rebuilt every frame for moving lights).
   const std::size_t nodes = static_cast<std::size_t>(grid.GetNumberOfNodes());
   this->Moments.resize(nodes * FarFieldFloatsPerNode);
-  // Lights that share a colour need one channel: its sums only, 3 textures
-  // (FindFarFieldSharedColor).
+  // Lights that share a colour need one channel: its sums only, 5 textures, 3 for an
+  // order-2 diffuse, which reads only the moments of order 2 (FindFarFieldSharedColor).
   const bool oneChannel = plan.SharedColor != glm::dvec3(0.0);
   const int channel = oneChannel ? GetSharedColorChannel(plan.SharedColor) : -1;
-  const int textures = oneChannel ? FarFieldSharedColorTextures : FarFieldTextures;
+  const int textures = oneChannel
+    ? (plan.Order4Diffuse ? FarFieldSharedColorTextures : FarFieldOrder2SharedColorTextures)
+    : (plan.Order4Diffuse ? FarFieldTextures : FarFieldOrder2Textures);
+  // The packing fills every texture of its layout; the order-2 diffuse uploads the first.
+  const int packed = oneChannel ? FarFieldSharedColorTextures : FarFieldTextures;
   for (int q = 0; q < FarFieldTextures; ++q)
   {
     std::vector<float>& t = this->Texels[static_cast<std::size_t>(q)];
-    if (q < textures)
+    if (q < packed)
     {
       t.resize(4 * nodes);
     }

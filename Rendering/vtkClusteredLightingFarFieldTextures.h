@@ -14,12 +14,14 @@
  * them), the blocks split between threads with vtkSMPTools, then packed (in parallel,
  * into buffers kept from build to build) and uploaded.
  *
- * GL objects: 7 3D textures, RGBA32F, of the grid's dimensions (27 moments per node, 112
+ * GL objects: 14 3D textures, RGBA32F, of the grid's dimensions (54 moments per node, 224
  * bytes with the padding), linear filtering (the shading code's trilinear interpolation),
- * clamped to edge. When the far-field lights share a colour (FarFieldPlan::SharedColor,
- * FindFarFieldSharedColor) the far field is one channel times that colour: 3 textures (9
- * moments per node, 48 bytes), textures 3 to 6 released (their units -1), and the node
- * sums run for that channel only (a third of the multiply-adds). Beside them, made at the
+ * clamped to edge; an order-2 far diffuse (FarFieldPlan::Order4Diffuse off) reads and
+ * keeps the first 7 (the order-2 moments, 112 bytes). When the far-field lights share a
+ * colour (FarFieldPlan::SharedColor, FindFarFieldSharedColor) the far field is one channel
+ * times that colour: 5 textures (18 moments per node, 80 bytes; 3 and 48 at order 2), the
+ * others released (their units -1), and the node sums run for that channel only (a third
+ * of the multiply-adds). Beside them, made at the
  * first build and kept: the Phong far specular's table (GetLobeProjectionTable, one RGBA32F
  * 2D texture of 65 x 66 texels, 68,640 bytes, read with texelFetch).
  *
@@ -53,7 +55,7 @@ public:
     const std::vector<vtkClusteredLighting::PreparedLight>& lights);
 
   double GetBuildTime() const { return this->BuildTime; }
-  /// The shared colour of the last build ((0, 0, 0): three channels, 7 textures).
+  /// The shared colour of the last build ((0, 0, 0): three channels, 14 textures or 7).
   const glm::dvec3& GetSharedColor() const { return this->SharedColor; }
   /// The light tree and near radii of the last build (for its error bound).
   const vtkClusteredLighting::FarFieldLightTree& GetTree() const { return this->Tree; }

@@ -961,6 +961,7 @@ vtkClusteredLightingAssignerInputs vtkClusteredLightingPass::MakeAssignerInputs(
   in.FarField.Grouping = this->FarFieldGrouping;
   in.FarField.NearBudget = this->NearFieldBudget;
   in.FarField.SharedColor = this->FarFieldSharedColor;
+  in.FarField.Order4Diffuse = this->FarFieldOrder4Diffuse;
   // The far field's region: the visible props' bounds, with FarFieldRegion when it is a
   // box.
   double bounds[6];
@@ -1142,6 +1143,7 @@ void vtkClusteredLightingPass::UpdateShaderVariant(const vtkClusteredLightingAss
   variant.Explicit = r.NumberOfExplicitRadius > 0;
   variant.FarField = r.FarField;
   variant.FarFieldOneChannel = r.FarField && r.FarFieldOneChannel;
+  variant.FarFieldOrder4 = r.FarField && r.FarFieldOrder4;
   // The exact far sums' code is compiled only where a fragment may take them (FarFieldTolerance,
   // FarFieldExactSumLimit; the same choice as the clFarFieldTolerance uniform).
   const bool sums = r.FarField && this->FarFieldTolerance < 1.0;
@@ -1488,7 +1490,8 @@ bool vtkClusteredLightingPass::SetShaderParameters(
   {
     static const char* const farFieldSamplers[vtkClusteredLighting::FarFieldTextures] = {
       "clFarField0", "clFarField1", "clFarField2", "clFarField3", "clFarField4", "clFarField5",
-      "clFarField6"
+      "clFarField6", "clFarField7", "clFarField8", "clFarField9", "clFarField10", "clFarField11",
+      "clFarField12", "clFarField13"
     };
     for (int q = 0; q < vtkClusteredLighting::FarFieldTextures; ++q)
     {
@@ -1611,6 +1614,7 @@ void vtkClusteredLightingPass::PrintSelf(ostream& os, vtkIndent indent)
      << "\n";
   os << next << "FarFieldGrouping: " << this->FarFieldGrouping << "\n";
   os << next << "FarFieldSharedColor: " << (this->FarFieldSharedColor ? "On" : "Off") << "\n";
+  os << next << "FarFieldOrder4Diffuse: " << (this->FarFieldOrder4Diffuse ? "On" : "Off") << "\n";
   const double* r = this->FarFieldRegion;
   os << next << "FarFieldRegion: ";
   if (vtkBoundingBox::IsValid(r))

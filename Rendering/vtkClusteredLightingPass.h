@@ -458,8 +458,9 @@ public:
   /**
    * Advanced: when every light the far field holds has the same colour up to its
    * intensity (white vtkLights, VTK's default, for one), store and read the far field as
-   * one channel times that colour: 3 texture reads per shaded fragment instead of 7 and 48
-   * bytes per grid node instead of 112. Exact: each channel's moments are then the same
+   * one channel times that colour: 5 texture reads per shaded fragment instead of 14 and 80
+   * bytes per grid node instead of 224 (3 and 48 instead of 7 and 112 with
+   * FarFieldOrder4Diffuse off). Exact: each channel's moments are then the same
    * multiple of one channel's (FindFarFieldSharedColor in
    * Rendering/Core/vtkClusteredLightingFarField.h), so the image is the same up to float
    * rounding. Off always keeps three channels (for comparisons). See
@@ -468,6 +469,24 @@ public:
   vtkSetMacro(FarFieldSharedColor, bool);
   vtkGetMacro(FarFieldSharedColor, bool);
   vtkBooleanMacro(FarFieldSharedColor, bool);
+  //@}
+
+  //@{
+  /**
+   * Advanced: the far diffuse to order 4 (the clamped cosine's Legendre series to its
+   * fourth term, from the far light's fourth moments: ApplyFarDiffuse in
+   * Rendering/Core/vtkClusteredLightingFarField.h), else to order 2. Order 4 stores twice
+   * the moments (14 texture reads per shaded fragment instead of 7, 5 instead of 3 with
+   * FarFieldSharedColor; 224 bytes per grid node instead of 112) and brings the diffuse's
+   * angular error down where the far light comes from many directions: VTK's default
+   * always-on lights, and tens of thousands of lights (docs/far-field.md, "The order-4 far
+   * diffuse"). Both stay within the stated bound, which counts the order taken. Off
+   * needs 7 texture units for the far field instead of 14 (GPUs that offer a fragment
+   * shader only the 16 OpenGL guarantees). Default is on.
+   */
+  vtkSetMacro(FarFieldOrder4Diffuse, bool);
+  vtkGetMacro(FarFieldOrder4Diffuse, bool);
+  vtkBooleanMacro(FarFieldOrder4Diffuse, bool);
   //@}
 
   //@{
@@ -973,6 +992,7 @@ protected:
   bool FarFieldExactSumsOnBackFaces = false;
   double FarFieldGrouping = 1.0;
   bool FarFieldSharedColor = true;
+  bool FarFieldOrder4Diffuse = true;
   double NearFieldBudget = 8.0;
 
   int NumberOfClusteredLights = 0;

@@ -40,7 +40,7 @@ bool vtkClusteredLightingShaderVariant::SameGlobalPart(
 {
   return this->Enabled == o.Enabled && this->Clustered == o.Clustered && this->Spot == o.Spot &&
     this->Window == o.Window && this->Explicit == o.Explicit && this->FarField == o.FarField &&
-    this->FarFieldOneChannel == o.FarFieldOneChannel &&
+    this->FarFieldOneChannel == o.FarFieldOneChannel && this->FarFieldOrder4 == o.FarFieldOrder4 &&
     this->PhongExactFarSums == o.PhongExactFarSums && this->PbrExactFarSums == o.PbrExactFarSums &&
     this->FarSumBlocks == o.FarSumBlocks && this->LinearSlices == o.LinearSlices &&
     this->MasterTexels == o.MasterTexels && this->DebugView == o.DebugView;
@@ -64,6 +64,10 @@ std::set<std::string> vtkClusteredLightingShaderVariant::GetFlags() const
       if (this->FarFieldOneChannel)
       {
         f.insert("FAR_SHARED_COLOR");
+      }
+      if (this->FarFieldOrder4)
+      {
+        f.insert("FAR_ORDER4");
       }
       if (this->PBR ? this->PbrExactFarSums : this->PhongExactFarSums)
       {

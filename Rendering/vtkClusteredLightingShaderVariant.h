@@ -15,7 +15,9 @@
  * windows end there), VIEW1 (the second view texel is read: spot axis, explicit radius),
  * FAR_FIELD (clustered only: split lights' near parts are windowed and the far field is
  * added), FAR_SHARED_COLOR (with FAR_FIELD: the far-field lights share a colour, so the
- * far field is one channel in 3 textures times clFarFieldColor), FAR_EXACT_SUMS (with
+ * far field is one channel in 5 textures times clFarFieldColor, 3 at order 2), FAR_ORDER4
+ * (with FAR_FIELD: the far diffuse to order 4, which reads the fourth moments too),
+ * FAR_EXACT_SUMS (with
  * FAR_FIELD: fragments the moments leave uncertain sum the far parts exactly; without it
  * the code is not there at all, which on llvmpipe is cheaper than a test that fails),
  * FAR_SUM_BLOCKS (those sums take 16 lights per loop iteration), PHONG or PBR, SPECULAR, SPOT,
@@ -43,7 +45,8 @@ public:
   bool Window = false;   ///< windowed falloff (FALLOFF_WINDOWED)
   bool Explicit = false; ///< some light has an explicit radius (its model's range)
   bool FarField = false; ///< lights have far parts: window their near parts, add the far field
-  bool FarFieldOneChannel = false; ///< the far-field lights share a colour: 3 textures, not 7
+  bool FarFieldOneChannel = false; ///< the far-field lights share a colour: 5 textures, not 14
+  bool FarFieldOrder4 = false;     ///< the far diffuse to order 4 (FarFieldOrder4Diffuse)
   /// the far parts may be summed exactly (FarFieldTolerance) for Phong actors (up to
   /// FarFieldExactSumLimit lights) and for PBR actors: FAR_EXACT_SUMS
   bool PhongExactFarSums = false;

@@ -11,7 +11,8 @@
  *  1. Angular truncation: |sum_j g_j (q(t_j) - k(t_j))|, where g_j is light j's far part
  *     at the point, t_j the cosine to the normal (diffuse) or to the mirrored view
  *     (specular), k the true kernel (max(0, t), the Phong lobe with no light from behind
- *     the surface) and q its order-2 approximation (for the specular, two of them: the
+ *     the surface) and q its approximation (the diffuse to order 4, or 2 where the far
+ *     field is of order 2, EvaluateFarDiffuseKernel; for the specular, two of order 2: the
  *     whole lobe's, and the projection of the lit-side lobe, a function of the direction
  *     rather than of t alone, with the table's coefficients,
  *     vtkClusteredLightingLobeProjection.h; ApplyFarLobe takes a value between the two, so
@@ -84,6 +85,7 @@ struct FarFieldBuildInputs
   const std::vector<double>* NearRadii = nullptr;
   const FarFieldLightTree* Tree = nullptr;
   double Grouping = 0.0;
+  bool Order4Diffuse = true; ///< the diffuse's order the shading takes (FarFieldPlan)
 };
 
 namespace Detail
@@ -125,17 +127,17 @@ inline BoundLobe MakeBoundLobe(const FarFieldShadingPoint& s)
 }
 
 /// The quantities whose errors the bound needs, for one light's far part g (per unit
-/// colour) from unit direction u: S, V.N, N^T T N, q_1(N.u), V.R, R^T T R, and the two
-/// specular estimates ApplyFarLobe blends, q_n(R.u) (zonal) and the lit-side projection.
+/// colour) from unit direction u: S, V.N, N^T T N, the diffuse kernel q_1(N.u) (to order 4
+/// or 2, EvaluateFarDiffuseKernel), V.R, R^T T R, and the two specular estimates
+/// ApplyFarLobe blends, q_n(R.u) (zonal) and the lit-side projection.
 constexpr int BoundQuantities = 8;
-inline void AddBoundQuantities(const FarFieldShadingPoint& s, const glm::dvec3& qd,
-  const BoundLobe& qn, const glm::dvec3& color, double g, const glm::dvec3& u, double* out)
+inline void AddBoundQuantities(const FarFieldShadingPoint& s, bool order4, const BoundLobe& qn,
+  const glm::dvec3& color, double g, const glm::dvec3& u, double* out)
 {
   const double tn = glm::dot(s.N, u), tr = glm::dot(s.R, u);
   const glm::dvec3& qz = qn.Zonal;
-  const double v[BoundQuantities] = { 1.0, tn, tn * tn,
-    qd.x + qd.y * tn + qd.z * 0.5 * (3.0 * tn * tn - 1.0), tr, tr * tr,
-    qz.x + qz.y * tr + qz.z * 0.5 * (3.0 * tr * tr - 1.0),
+  const double v[BoundQuantities] = { 1.0, tn, tn * tn, EvaluateFarDiffuseKernel(tn, order4), tr,
+    tr * tr, qz.x + qz.y * tr + qz.z * 0.5 * (3.0 * tr * tr - 1.0),
     EvaluateLobeProjection(qn.K, qn.X, s.R, u) };
   for (int c = 0; c < 3; ++c)
   {
@@ -146,9 +148,9 @@ inline void AddBoundQuantities(const FarFieldShadingPoint& s, const glm::dvec3& 
   }
 }
 /// The same quantities for moment terms dm (per unit colour, in the order of
-/// ComputeFarFieldTerms: S, V, T as xx, yy, xy, xz, yz; trace T = S), as a group's spread
-/// terms (ComputeGroupSpreadTerms) add them: each quantity is linear in the moments.
-inline void AddBoundMomentQuantities(const FarFieldShadingPoint& s, const glm::dvec3& qd,
+/// ComputeFarFieldTerms: S, V, T as xx, yy, xy, xz, yz, trace T = S, then F), as a group's
+/// spread terms (ComputeGroupSpreadTerms) add them: each quantity is linear in the moments.
+inline void AddBoundMomentQuantities(const FarFieldShadingPoint& s, bool order4,
   const BoundLobe& qn, const glm::dvec3& color, const double (&dm)[FarFieldMomentsPerChannel],
   double* out)
 {
@@ -157,9 +159,8 @@ inline void AddBoundMomentQuantities(const FarFieldShadingPoint& s, const glm::d
   const glm::dmat3 T(dm[4], dm[6], dm[7], dm[6], dm[5], dm[8], dm[7], dm[8], zz);
   const double vn = glm::dot(V, s.N), nn = glm::dot(s.N, T * s.N);
   const double vr = glm::dot(V, s.R), rr = glm::dot(s.R, T * s.R);
-  const double v[BoundQuantities] = { dm[0], vn, nn,
-    qd.x * dm[0] + qd.y * vn + qd.z * 0.5 * (3.0 * nn - dm[0]), vr, rr,
-    qn.Zonal.x * dm[0] + qn.Zonal.y * vr + qn.Zonal.z * 0.5 * (3.0 * rr - dm[0]),
+  const double v[BoundQuantities] = { dm[0], vn, nn, EstimateFarDiffuse(dm, s.N, vn, nn, order4),
+    vr, rr, qn.Zonal.x * dm[0] + qn.Zonal.y * vr + qn.Zonal.z * 0.5 * (3.0 * rr - dm[0]),
     ApplyLobeProjectionToMoments(dm, qn.K, qn.X, s.R) };
   for (int c = 0; c < 3; ++c)
   {
@@ -205,7 +206,7 @@ inline void ComputeFarFieldErrorBounds(const FarFieldShadingPoint* points, int c
   const FarFieldLightTree& tree = *in.Tree;
   const FarFieldShadingPoint& s = points[0]; // the position all of them share
   const std::size_t n = static_cast<std::size_t>(count);
-  const glm::dvec3 qd = ComputeLobeKernel(1.0);
+  const bool order4 = in.Order4Diffuse;
   std::vector<Detail::BoundLobe> qn(n);
   for (std::size_t k = 0; k < n; ++k)
   {
@@ -336,7 +337,7 @@ inline void ComputeFarFieldErrorBounds(const FarFieldShadingPoint* points, int c
     for (std::size_t k = 0; k < n; ++k)
     {
       double scratch[3 * Q] = {};
-      Detail::AddBoundQuantities(points[k], qd, qn[k], color, g, u, scratch);
+      Detail::AddBoundQuantities(points[k], order4, qn[k], color, g, u, scratch);
       for (int q = 0; q < 3 * Q; ++q)
       {
         edge[std::size_t{ 3 } * Q * k + static_cast<std::size_t>(q)] +=
@@ -409,9 +410,9 @@ inline void ComputeFarFieldErrorBounds(const FarFieldShadingPoint* points, int c
         double scratch[3 * Q] = {};
         if (spread)
         {
-          Detail::AddBoundMomentQuantities(points[k], qd, qn[k], color, dm, scratch);
+          Detail::AddBoundMomentQuantities(points[k], order4, qn[k], color, dm, scratch);
         }
-        Detail::AddBoundQuantities(points[k], qd, qn[k], color, far, u, scratch);
+        Detail::AddBoundQuantities(points[k], order4, qn[k], color, far, u, scratch);
         for (int q = 0; q < 3 * Q; ++q)
         {
           o[q] += c.Weight * scratch[q];
@@ -447,11 +448,10 @@ inline void ComputeFarFieldErrorBounds(const FarFieldShadingPoint* points, int c
     for (std::size_t k = 0; k < n; ++k, o += std::size_t{ 3 } * Q)
     {
       const FarFieldShadingPoint& p = points[k];
-      Detail::AddBoundQuantities(p, qd, qn[k], lights[li].Color, far, u, o);
+      Detail::AddBoundQuantities(p, order4, qn[k], lights[li].Color, far, u, o);
       const double tn = glm::dot(p.N, u), tr = glm::dot(p.R, u);
       const double lobe = tn > 0.0 && tr > 0.0 ? std::pow(tr, p.Power) : 0.0;
-      angularDiffuse[k] +=
-        g * (qd.x + qd.y * tn + qd.z * 0.5 * (3 * tn * tn - 1) - std::max(0.0, tn));
+      angularDiffuse[k] += g * (EvaluateFarDiffuseKernel(tn, order4) - std::max(0.0, tn));
       const glm::dvec3& qz = qn[k].Zonal;
       angularZonal[k] += g * (qz.x + qz.y * tr + qz.z * 0.5 * (3 * tr * tr - 1) - lobe);
       angularProjected[k] += g * (EvaluateLobeProjection(qn[k].K, qn[k].X, p.R, u) - lobe);

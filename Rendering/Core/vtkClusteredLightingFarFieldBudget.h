@@ -191,7 +191,8 @@ FarFieldResolutionChoice ChooseFarFieldResolution(const std::vector<PreparedLigh
     const FarFieldPlan plan = PlanFarField(planned, lo, hi, options, anchor);
     const std::vector<double> radii = GetFarFieldNearRadii(planned);
     const FarFieldLightTree tree = BuildFarFieldLightTree(planned, radii);
-    const FarFieldBuildInputs in{ &plan.Grid, &planned, &radii, &tree, plan.Grouping };
+    const FarFieldBuildInputs in{ &plan.Grid, &planned, &radii, &tree, plan.Grouping,
+      plan.Order4Diffuse };
     const double bound = summarize(in).Max;
     if (++choice.Summaries == 1 || bound < choice.Bound)
     {

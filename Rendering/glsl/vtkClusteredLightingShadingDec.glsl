@@ -104,20 +104,35 @@ uniform int clSpotBatch;
 //CL_ENDIF
 //CL_IF(FAR_FIELD)
 // The far field (Rendering/Core/vtkClusteredLightingFarField.h): per node of a world
-// grid, the order-2 moments of the far light's directions, S, V and T (trace T = S), RGB
-// each, in 7 RGBA32F 3D textures (moment-major: S, Vx, Vy, Vz, Txx, Tyy, Txy, Txz, Tyz);
-// when the far-field lights share a colour, one channel in 3 textures ((S, Vx, Vy, Vz),
-// (Txx, Tyy, Txy, Txz), (Tyz, 0, 0, 0)) times that colour (PackFarFieldTexelsOneChannel).
+// grid, the order-2 moments of the far light's directions, S, V and T (trace T = S), then
+// the 9 fourth moments F400 .. F031 (FAR_ORDER4 reads them), RGB each, in 14 RGBA32F 3D
+// textures (moment-major: S, Vx, Vy, Vz, Txx, Tyy, Txy, Txz, Tyz in the first 7, F after;
+// PackFarFieldTexels); when the far-field lights share a colour, one channel in 5
+// textures ((S, Vx, Vy, Vz), (Txx, Tyy, Txy, Txz), (Tyz, F400, F310, F220), (F130, F040,
+// F301, F211), (F121, F031, 0, 0)) times that colour (PackFarFieldTexelsOneChannel).
 uniform sampler3D clFarField0;
 uniform sampler3D clFarField1;
 uniform sampler3D clFarField2;
 //CL_IF(FAR_SHARED_COLOR)
 uniform vec3 clFarFieldColor; // the shared colour, largest component 1
+//CL_IF(FAR_ORDER4)
+uniform sampler3D clFarField3;
+uniform sampler3D clFarField4;
+//CL_ENDIF
 //CL_ELSE
 uniform sampler3D clFarField3;
 uniform sampler3D clFarField4;
 uniform sampler3D clFarField5;
 uniform sampler3D clFarField6;
+//CL_IF(FAR_ORDER4)
+uniform sampler3D clFarField7;
+uniform sampler3D clFarField8;
+uniform sampler3D clFarField9;
+uniform sampler3D clFarField10;
+uniform sampler3D clFarField11;
+uniform sampler3D clFarField12;
+uniform sampler3D clFarField13;
+//CL_ENDIF
 //CL_ENDIF
 uniform mat4 clFarFieldFromVC; // VC -> texture coordinates of the grid
 uniform mat3 clWorldFromVC;    // VC -> world directions (the moments' axes)
@@ -129,6 +144,29 @@ vec3 clMomentForm(vec3 A, vec3 B, vec3 S, vec3 Txx, vec3 Tyy, vec3 Txy, vec3 Txz
   return Txx * (A.x * B.x) + Tyy * (A.y * B.y) + (S - Txx - Tyy) * (A.z * B.z) +
     Txy * (A.x * B.y + A.y * B.x) + Txz * (A.x * B.z + A.z * B.x) + Tyz * (A.y * B.z + A.z * B.y);
 }
+
+//CL_IF(FAR_ORDER4)
+// F(D) = sum g (D.u)^4 per channel from the 9 stored fourth moments F[0..8] (F400, F310,
+// F220, F130, F040, F301, F211, F121, F031) and T, which gives the other six: mirrors
+// ComputeFourthMomentForm.
+vec3 clFourthMomentForm(vec3 D, vec3 S, vec3 Txx, vec3 Tyy, vec3 Txy, vec3 Txz, vec3 Tyz,
+  vec3 F[9])
+{
+  vec3 xxzz = Txx - F[0] - F[2];
+  vec3 xyzz = Txy - F[1] - F[3];
+  vec3 yyzz = Tyy - F[2] - F[4];
+  vec3 xzzz = Txz - F[5] - F[7];
+  vec3 yzzz = Tyz - F[6] - F[8];
+  vec3 zzzz = (S - Txx - Tyy) - xxzz - yyzz;
+  float x = D.x, y = D.y, z = D.z;
+  float x2 = x * x, y2 = y * y, z2 = z * z;
+  return (x2 * x2) * F[0] + (4.0 * x2 * x * y) * F[1] + (6.0 * x2 * y2) * F[2] +
+    (4.0 * x * y2 * y) * F[3] + (y2 * y2) * F[4] + (4.0 * x2 * x * z) * F[5] +
+    (12.0 * x2 * y * z) * F[6] + (12.0 * x * y2 * z) * F[7] + (4.0 * y2 * y * z) * F[8] +
+    (6.0 * x2 * z2) * xxzz + (12.0 * x * y * z2) * xyzz + (6.0 * y2 * z2) * yyzz +
+    (4.0 * x * z2 * z) * xzzz + (4.0 * y * z2 * z) * yzzz + (z2 * z2) * zzzz;
+}
+//CL_ENDIF
 
 // Mirrors vtkClusteredLighting::ApplyKernelToContractions for RGB: the kernel with
 // Legendre coefficients k (ComputeLobeKernel gives k) applied to one direction D's

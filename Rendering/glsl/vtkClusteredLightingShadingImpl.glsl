@@ -24,7 +24,7 @@
   // One channel times the colour every far-field light shares (exact, see the Dec).
   vec4 clT0 = texture(clFarField0, clUVW);
   vec4 clT1 = texture(clFarField1, clUVW);
-  float clT2 = texture(clFarField2, clUVW).x;
+  vec4 clT2 = texture(clFarField2, clUVW);
   vec3 clS = clT0.x * clFarFieldColor;
   vec3 clVx = clT0.y * clFarFieldColor;
   vec3 clVy = clT0.z * clFarFieldColor;
@@ -33,7 +33,15 @@
   vec3 clTyy = clT1.y * clFarFieldColor;
   vec3 clTxy = clT1.z * clFarFieldColor;
   vec3 clTxz = clT1.w * clFarFieldColor;
-  vec3 clTyz = clT2 * clFarFieldColor;
+  vec3 clTyz = clT2.x * clFarFieldColor;
+//CL_IF(FAR_ORDER4)
+  vec4 clT3 = texture(clFarField3, clUVW);
+  vec4 clT4 = texture(clFarField4, clUVW);
+  vec3 clF[9] = vec3[9](clT2.y * clFarFieldColor, clT2.z * clFarFieldColor,
+    clT2.w * clFarFieldColor, clT3.x * clFarFieldColor, clT3.y * clFarFieldColor,
+    clT3.z * clFarFieldColor, clT3.w * clFarFieldColor, clT4.x * clFarFieldColor,
+    clT4.y * clFarFieldColor);
+//CL_ENDIF
 //CL_ELSE
   vec4 clT0 = texture(clFarField0, clUVW);
   vec4 clT1 = texture(clFarField1, clUVW);
@@ -51,6 +59,19 @@
   vec3 clTxy = vec3(clT4.zw, clT5.x);
   vec3 clTxz = clT5.yzw;
   vec3 clTyz = clT6.xyz;
+//CL_IF(FAR_ORDER4)
+  vec4 clT7 = texture(clFarField7, clUVW);
+  vec4 clT8 = texture(clFarField8, clUVW);
+  vec4 clT9 = texture(clFarField9, clUVW);
+  vec4 clT10 = texture(clFarField10, clUVW);
+  vec4 clT11 = texture(clFarField11, clUVW);
+  vec4 clT12 = texture(clFarField12, clUVW);
+  vec4 clT13 = texture(clFarField13, clUVW);
+  // Floats 27 to 53: F400 (its red is the 7th texture's last), F310, ... F031, as RGB.
+  vec3 clF[9] = vec3[9](vec3(clT6.w, clT7.xy), vec3(clT7.zw, clT8.x), clT8.yzw, clT9.xyz,
+    vec3(clT9.w, clT10.xy), vec3(clT10.zw, clT11.x), clT11.yzw, clT12.xyz,
+    vec3(clT12.w, clT13.xy));
+//CL_ENDIF
 //CL_ENDIF
 //CL_IF(PHONG)
   vec3 clN = normalVCVSOutput;
@@ -65,6 +86,15 @@
   vec3 clDiffuseLow, clDiffuseHigh;
   vec3 clFarDiffuse = clApplyFarKernel(
     vec3(0.25, 0.5, 0.3125), clS, clVN, clNTN, false, 1.0, clDiffuseLow, clDiffuseHigh);
+//CL_IF(FAR_ORDER4)
+  // The estimate to order 4 (EstimateFarDiffuse: the fourth Legendre term, -3/32 P4,
+  // added), clamped into the same interval (ApplyFarDiffuse).
+  clFarDiffuse = clamp(0.25 * clS + 0.5 * clVN + 0.15625 * (3.0 * clNTN - clS) +
+      (-3.0 / 32.0) *
+        (35.0 * clFourthMomentForm(clNw, clS, clTxx, clTyy, clTxy, clTxz, clTyz, clF) -
+          30.0 * clNTN + 3.0 * clS) / 8.0,
+    clDiffuseLow, clDiffuseHigh);
+//CL_ENDIF
   vec3 clFarSpecular = vec3(0.0);
   vec3 clSpecularLow = vec3(0.0), clSpecularHigh = vec3(0.0);
 //CL_IF(PHONG)

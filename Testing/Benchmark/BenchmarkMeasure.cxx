@@ -206,6 +206,7 @@ void Context::ResetPassDefaults()
   p->SetFarFieldExactSumLimit(16384);
   p->SetFarFieldGrouping(1.0);
   p->SetFarFieldSharedColor(true);
+  p->SetFarFieldOrder4Diffuse(true);
   p->SetNearFieldBudget(8.0);
   p->SetFalloff(vtkClusteredLightingPass::FALLOFF_HARD_CUT);
   p->SetTilesX(32);

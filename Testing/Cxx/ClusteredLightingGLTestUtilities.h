@@ -96,19 +96,30 @@ inline GLNames TakeGLNameCensus(vtkRenderWindow* rw)
 
 /// GL objects one renderer's assignment holds: 10 (light data and view textures and
 /// buffers, the list and master textures, framebuffers, vertex array), plus the far field's
-/// 7 moment textures and its specular table while the renderer's lights have a far field
-/// (vtkClusteredLightingLobeProjection.h, since 2026-12-06), plus the cluster-depth
-/// and cluster-rectangle textures while its clusters are depth-aware, plus the copy of the
-/// prepass's depths (a framebuffer and a renderbuffer) while they are kept for the next frame.
+/// 14 moment textures (three channels to order 4, since 2026-12-06) and its specular table
+/// while the renderer's lights have a far field (vtkClusteredLightingLobeProjection.h),
+/// plus the cluster-depth and cluster-rectangle textures while its clusters are
+/// depth-aware, plus the copy of the prepass's depths (a framebuffer and a renderbuffer)
+/// while they are kept for the next frame.
 constexpr int AssignmentGLObjects = 10;
-constexpr int FarFieldGLObjects = 8;
+constexpr int FarFieldGLObjects = 15;
 constexpr int DepthAwareGLObjects = 2;
 constexpr int SavedDepthGLObjects = 2;
+
+/// The far field's GL objects for the pass's last render: the specular table and the
+/// moment textures, 14 for three channels, 5 for lights that share a colour, 7 and 3 with
+/// the diffuse to order 2 (FarFieldOrder4Diffuse off).
+inline int FarFieldGLObjectsOf(vtkClusteredLightingPass* pass)
+{
+  const bool order4 = pass->GetFarFieldOrder4Diffuse();
+  return 1 + (pass->GetFarFieldSharedColorUsed() ? (order4 ? 5 : 3) : (order4 ? 14 : 7));
+}
 
 /// GL objects per renderer for the lights the pass last rendered.
 inline int GLObjectsPerRenderer(vtkClusteredLightingPass* pass)
 {
-  return AssignmentGLObjects + (pass->GetNumberOfFarFieldLights() > 0 ? FarFieldGLObjects : 0) +
+  return AssignmentGLObjects +
+    (pass->GetNumberOfFarFieldLights() > 0 ? FarFieldGLObjectsOf(pass) : 0) +
     (pass->GetDepthAwareClustersUsed() ? DepthAwareGLObjects : 0) +
     (pass->GetDepthPrepassKept() ? SavedDepthGLObjects : 0);
 }

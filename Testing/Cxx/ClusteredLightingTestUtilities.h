@@ -372,7 +372,8 @@ struct SnapshotFarField
   explicit SnapshotFarField(const vtkClusteredLightingAssignmentSnapshot& frame)
     : Radii(vtkClusteredLighting::GetFarFieldNearRadii(frame.Lights))
     , Tree(vtkClusteredLighting::BuildFarFieldLightTree(frame.Lights, Radii))
-    , Inputs{ &frame.FarField.Grid, &frame.Lights, &Radii, &Tree, frame.FarField.Grouping }
+    , Inputs{ &frame.FarField.Grid, &frame.Lights, &Radii, &Tree, frame.FarField.Grouping,
+      frame.FarField.Order4Diffuse }
   {
   }
   SnapshotFarField(const SnapshotFarField&) = delete;

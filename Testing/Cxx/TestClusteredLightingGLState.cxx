@@ -310,10 +310,12 @@ int TestClusteredLightingGLState(int, char*[])
     Check(assignment.empty(),
       name + ": the assignment and texture binding change no other state" + assignment);
     const int reserved = inner->Before.AllocatedUnits - outer->Before.AllocatedUnits;
-    // Clustered shading: lights, light view, master, list; and the far field's 7 moment
-    // textures and its specular table while the lights have one. Brute force: lights and
-    // light view.
-    const int farField = pass->GetNumberOfFarFieldLights() > 0 ? 8 : 0;
+    // Clustered shading: lights, light view, master, list; and the far field's moment
+    // textures (14 for three channels to order 4) and its specular table while the lights
+    // have one. Brute force: lights and light view.
+    const int farField = pass->GetNumberOfFarFieldLights() > 0
+      ? ClusteredLightingTest::FarFieldGLObjectsOf(pass.GetPointer())
+      : 0;
     const int expectedUnits =
       !shading ? 0 : (f.Shading == vtkClusteredLightingPass::SHADING_CLUSTERED ? 4 + farField : 2);
     Check(reserved == expectedUnits,

@@ -91,11 +91,12 @@ glm::dvec3 ExactFar(const FarFieldShadingPoint& s, const std::vector<PreparedLig
 }
 
 /// The far field as the shader computes it: moments interpolated at s.P, kernels, clamps.
-glm::dvec3 ApproximateFar(
-  const FarFieldShadingPoint& s, const FarFieldGrid& grid, const std::vector<double>& moments)
+glm::dvec3 ApproximateFar(const FarFieldShadingPoint& s, const FarFieldGrid& grid,
+  const std::vector<double>& moments, bool order4 = true)
 {
   const std::array<double, FarFieldFloatsPerNode> m = InterpolateFarMoments(grid, moments, s.P);
-  return EvaluateFarDiffuse(m, s.N) * s.Kd + EvaluateFarSpecular(m, s.N, s.R, s.Power) * s.Ks;
+  return EvaluateFarDiffuse(m, s.N, order4) * s.Kd +
+    EvaluateFarSpecular(m, s.N, s.R, s.Power, order4) * s.Ks;
 }
 
 /// Expects built node moments within 1e-4 of each node's far light S (single-precision
@@ -157,7 +158,8 @@ BoundCheck CheckBound(const std::vector<PreparedLight>& lights, const Built& b,
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> U(0.0, 1.0);
   std::normal_distribution<double> G(0.0, 1.0);
-  const FarFieldBuildInputs in{ &b.Plan.Grid, &lights, &b.Radii, &b.Tree, b.Plan.Grouping };
+  const FarFieldBuildInputs in{ &b.Plan.Grid, &lights, &b.Radii, &b.Tree, b.Plan.Grouping,
+    b.Plan.Order4Diffuse };
   FarFieldBoundCache cache;
   BoundCheck check;
   int violations = 0;
@@ -172,7 +174,7 @@ BoundCheck CheckBound(const std::vector<PreparedLight>& lights, const Built& b,
     s.Ks = (i % 2) ? glm::dvec3(U(rng)) : glm::dvec3(0.0);
     s.Power = 1.0 + 99.0 * U(rng);
     const glm::dvec3 exact = ExactFar(s, lights, b.Radii);
-    const glm::dvec3 approx = ApproximateFar(s, b.Plan.Grid, b.Moments);
+    const glm::dvec3 approx = ApproximateFar(s, b.Plan.Grid, b.Moments, b.Plan.Order4Diffuse);
     const glm::dvec3 bound = ComputeFarFieldErrorBound(s, in, &cache);
     for (int c = 0; c < 3; ++c)
     {
@@ -697,6 +699,69 @@ TEST(FarFieldKernel, ClampIntervalHoldsTheTrueDiffuseAndLobe)
       EXPECT_LE(est, upper);
     }
   }
+}
+
+// The fourth moments: F(D) from the 9 stored and T equals sum g (D.u)^4, and the order-4
+// diffuse is closer to sum g max(0, N.u) than the order-2 one where the light comes from
+// many directions, inside the same interval.
+TEST(FarFieldKernel, FourthMomentsGiveTheOrder4Diffuse)
+{
+  std::mt19937 rng(21);
+  std::normal_distribution<double> G(0.0, 1.0);
+  std::uniform_real_distribution<double> U(0.0, 1.0);
+  double error2 = 0.0, error4 = 0.0;
+  for (int trial = 0; trial < 200; ++trial)
+  {
+    // 1 to 400 weighted directions, clumped about an axis on odd trials; per channel a
+    // different weight, so that the channels' moments differ.
+    double m[FarFieldFloatsPerNode] = {};
+    std::vector<std::pair<glm::dvec3, glm::dvec3>> dirs; // (colour x g, u)
+    const glm::dvec3 axis = glm::normalize(glm::dvec3(G(rng), G(rng), G(rng)));
+    const int count = 1 + (trial * 37) % 400;
+    for (int j = 0; j < count; ++j)
+    {
+      glm::dvec3 u = glm::dvec3(G(rng), G(rng), G(rng));
+      u = glm::normalize((trial % 2) ? axis + 0.6 * u : u);
+      const glm::dvec3 color(U(rng), U(rng), U(rng));
+      const double g = U(rng);
+      dirs.emplace_back(g * color, u);
+      AccumulateFarMoments(color, g, u, m);
+    }
+    for (int k = 0; k < 8; ++k)
+    {
+      const glm::dvec3 N = glm::normalize(glm::dvec3(G(rng), G(rng), G(rng)));
+      glm::dvec3 fourth(0.0), truth(0.0), scale(0.0);
+      for (const auto& d : dirs)
+      {
+        const double t = glm::dot(N, d.second);
+        fourth += d.first * (t * t * t * t);
+        truth += d.first * std::max(t, 0.0);
+        scale += d.first;
+      }
+      for (int c = 0; c < 3; ++c)
+      {
+        const double* mc = &m[c * FarFieldMomentsPerChannel];
+        EXPECT_NEAR(ComputeFourthMomentForm(mc, N), fourth[c], 1e-12 * scale[c]);
+        double lower4, upper4, lower2, upper2;
+        const double e4 = ApplyFarDiffuse(mc, N, true, &lower4, &upper4);
+        const double e2 = ApplyFarDiffuse(mc, N, false, &lower2, &upper2);
+        EXPECT_EQ(lower4, lower2);
+        EXPECT_EQ(upper4, upper2);
+        EXPECT_GE(e4, lower4);
+        EXPECT_LE(e4, upper4);
+        EXPECT_NEAR(e2, ApplyMomentKernel(mc, ComputeLobeKernel(1.0), N), 1e-12 * scale[c]);
+        if (count >= 50)
+        {
+          error2 += std::abs(e2 - truth[c]) / scale[c];
+          error4 += std::abs(e4 - truth[c]) / scale[c];
+        }
+      }
+    }
+  }
+  std::printf("diffuse of 50 to 400 directions, mean error per unit of light: order 2 %.5f, "
+              "order 4 %.5f\n",
+    error2 / (3 * 8 * 174), error4 / (3 * 8 * 174));
+  EXPECT_LT(error4, 0.5 * error2);
 }
 
 TEST(FarFieldKernel, LobeUpperEndFromQuadraticsIsLowerBehindTheMirroredView)
@@ -1470,7 +1535,8 @@ TEST(FarFieldBound, SeveralPointsAtOnePositionGiveEachItsOwnBound)
     MakeLights(800, glm::dvec3(1, 0, 8), [&](int) { return glm::dvec3(U(rng), U(rng), U(rng)); });
   const Built b = Build(lights, glm::dvec3(-1), glm::dvec3(1), 1.0);
   ASSERT_TRUE(b.Plan.Active);
-  const FarFieldBuildInputs in{ &b.Plan.Grid, &lights, &b.Radii, &b.Tree, b.Plan.Grouping };
+  const FarFieldBuildInputs in{ &b.Plan.Grid, &lights, &b.Radii, &b.Tree, b.Plan.Grouping,
+    b.Plan.Order4Diffuse };
   for (int trial = 0; trial < 20; ++trial)
   {
     const glm::dvec3 P(U(rng), U(rng), U(rng));
@@ -1509,19 +1575,31 @@ TEST(FarFieldBound, HoldsForUniformLightsAtEveryScale)
     std::vector<PreparedLight> lights = MakeLights(1500, glm::dvec3(1, 0, 8 / (scale * scale)),
       [&](int) { return scale * glm::dvec3(U(rng), U(rng), U(rng)); });
     const glm::dvec3 lo(-scale), hi(scale);
+    FarFieldOptions order2;
+    order2.Order4Diffuse = false;
+    std::vector<PreparedLight> lights2 = lights;
+    const Built b2 = Build(lights2, lo, hi, 1.0, 4096, order2);
     const Built b = Build(lights, lo, hi, 1.0);
-    ASSERT_TRUE(b.Plan.Active) << scale;
+    ASSERT_TRUE(b.Plan.Active && b2.Plan.Active) << scale;
+    const BoundCheck check2 = CheckBound(lights2, b2, lo, hi, 1500, "uniform, order 2");
     const BoundCheck check = CheckBound(lights, b, lo, hi, 1500, "uniform");
-    std::printf("uniform, scale %g: largest error / bound %.3f, mean bound / mean error %.2f\n",
-      scale, check.Worst, check.SumBound / check.SumError);
-    // Informative as well as safe: on average within a few times the error (4.99 here;
-    // 13.8 when the clamp's square-root end moved by sqrt(d) instead of what d allows).
-    // Until 2026-12-06 this read 3.4, but only because the zonal specular kernel's bias
-    // made the errors of the specular half of the points large (the diffuse points alone
-    // gave 7.7): the blend with the lit-side lobe (ApplyFarLobe) cut the summed error from
-    // 1,889 to 661, and the clamp term, now counted only where the clamp can act, the
-    // summed bound from 6,494 to 3,298.
-    EXPECT_LT(check.SumBound, 5.0 * check.SumError) << scale;
+    std::printf("uniform, scale %g: largest error / bound %.3f, mean bound / mean error %.2f "
+                "(summed %.0f / %.0f); order-2 diffuse %.3f, %.2f (%.0f / %.0f)\n",
+      scale, check.Worst, check.SumBound / check.SumError, check.SumBound, check.SumError,
+      check2.Worst, check2.SumBound / check2.SumError, check2.SumBound, check2.SumError);
+    // Informative as well as safe: on average within a few times the error (4.99 here at
+    // order 2; 13.8 when the clamp's square-root end moved by sqrt(d) instead of what d
+    // allows). Until 2026-12-06 this read 3.4, but only because the zonal specular
+    // kernel's bias made the errors of the specular half of the points large (the diffuse
+    // points alone gave 7.7): the blend with the lit-side lobe (ApplyFarLobe) cut the
+    // summed error from 1,889 to 661, and the clamp term, now counted only where the clamp
+    // can act, the summed bound from 6,494 to 3,298.
+    EXPECT_LT(check2.SumBound, 5.0 * check2.SumError) << scale;
+    // The order-4 diffuse (the default): a smaller error (535 against 661 summed) under a
+    // bound no larger (3,228 against 3,298); its ratio (6.0) is larger only for the
+    // smaller error.
+    EXPECT_LT(check.SumError, check2.SumError) << scale;
+    EXPECT_LE(check.SumBound, check2.SumBound) << scale;
   }
 }
 
@@ -1560,15 +1638,27 @@ TEST(FarFieldBound, HoldsForSpotLightsAcrossTheirConeEdges)
   std::vector<PreparedLight> lights = MakeLights(
     1500, glm::dvec3(1, 0, 1000), [&](int) { return glm::dvec3(U(rng), U(rng), U(rng)); });
   MakeSpots(lights, 5);
+  FarFieldOptions order2;
+  order2.Order4Diffuse = false;
+  std::vector<PreparedLight> lights2 = lights;
+  const Built b2 = Build(lights2, glm::dvec3(-1), glm::dvec3(1), 1.0, 4096, order2);
   const Built b = Build(lights, glm::dvec3(-1), glm::dvec3(1), 1.0);
-  ASSERT_TRUE(b.Plan.Active);
+  ASSERT_TRUE(b.Plan.Active && b2.Plan.Active);
   ASSERT_EQ(b.Tree.Spots.size(), 300u);
+  const BoundCheck check2 =
+    CheckBound(lights2, b2, glm::dvec3(-1), glm::dvec3(1), 1500, "spots, order 2");
   const BoundCheck check = CheckBound(lights, b, glm::dvec3(-1), glm::dvec3(1), 1500, "spots");
-  std::printf("spot lights: largest error / bound %.3f, mean bound / mean error %.2f\n",
-    check.Worst, check.SumBound / check.SumError);
-  // 6.06 here (50.1 against 8.26); 4.54 before 2026-12-06, when the zonal specular
-  // kernel's larger errors were in the denominator (see HoldsForUniformLightsAtEveryScale).
-  EXPECT_LT(check.SumBound, 6.5 * check.SumError);
+  std::printf("spot lights: largest error / bound %.3f, mean bound / mean error %.2f (summed "
+              "%.2f / %.2f); order-2 diffuse %.3f, %.2f (%.2f / %.2f)\n",
+    check.Worst, check.SumBound / check.SumError, check.SumBound, check.SumError, check2.Worst,
+    check2.SumBound / check2.SumError, check2.SumBound, check2.SumError);
+  // 6.06 here at order 2 (50.1 against 8.26); 4.54 before 2026-12-06, when the zonal
+  // specular kernel's larger errors were in the denominator (see
+  // HoldsForUniformLightsAtEveryScale). The order-4 diffuse: a smaller error under a bound
+  // no larger.
+  EXPECT_LT(check2.SumBound, 6.5 * check2.SumError);
+  EXPECT_LT(check.SumError, check2.SumError);
+  EXPECT_LE(check.SumBound, check2.SumBound);
 
   // The hardest edges: spot lights on grid nodes with 45-degree cones along the axes,
   // so that whole diagonals of nodes lie on their edges, where single precision may put a

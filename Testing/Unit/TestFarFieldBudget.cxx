@@ -84,7 +84,8 @@ std::vector<Rung> MeasureLadder(const std::vector<PreparedLight>& lights, const 
     EXPECT_TRUE(plan.Active);
     const std::vector<double> radii = GetFarFieldNearRadii(planned);
     const FarFieldLightTree tree = BuildFarFieldLightTree(planned, radii);
-    const FarFieldBuildInputs in{ &plan.Grid, &planned, &radii, &tree, plan.Grouping };
+    const FarFieldBuildInputs in{ &plan.Grid, &planned, &radii, &tree, plan.Grouping,
+      plan.Order4Diffuse };
     rungs.push_back(Rung{ nodes, plan.NearLightsPerPoint, SummarizeFarFieldErrorBound(in).Max });
   }
   return rungs;

@@ -75,8 +75,8 @@ bool vtkClusteredLightingFarFieldTextures::Build(
   vtkSMPTools::For(0, static_cast<vtkIdType>(GetNumberOfFarFieldBlocks(grid)), 1,
     [&](vtkIdType b0, vtkIdType b1)
     {
-      ComputeFarFieldMomentsForThisCPU(
-        grid, lights, nearRadii, tree, plan.Grouping, b0, b1, this->Moments, channel);
+      ComputeFarFieldMomentsForThisCPU(grid, lights, nearRadii, tree, plan.Grouping, b0, b1,
+        this->Moments, channel, plan.Order4Diffuse);
     });
   vtkSMPTools::For(0, static_cast<vtkIdType>(nodes), 4096,
     [&](vtkIdType n0, vtkIdType n1)

@@ -421,6 +421,7 @@ struct vtkClusteredLightingPass::vtkInternals
   std::string ReportedDepthProblem;        ///< why depth-aware clusters are off, said once
   std::string DepthReuseProblem;           ///< why the last depths were not kept
   bool ReportedShadows = false;            ///< UseShadows, which the pass does not apply
+  bool ReportedFarDiffuseOrder = false;    ///< too few texture units for the order-4 diffuse
   bool ReportedLoopLimit = false;          ///< the llvmpipe loop limit was reported
   bool ReportedUncountedPixels = false;    ///< a debug view's counts could not be read
   bool ReportedPbrFarField = false;        ///< PBR actors sum their far light exactly
@@ -670,6 +671,7 @@ void vtkClusteredLightingPass::Render(const vtkRenderState* s)
   // which frames to time for its trials (vtkClusteredLightingPrepassChoice.h).
   vtkClusteredLightingAssigner* assigner = this->Internals->GetAssigner(ren);
   vtkClusteredLightingAssignerInputs inputs = this->MakeAssignerInputs(ren, lights);
+  this->ChooseFarDiffuseOrder(rw, inputs);
   this->DepthPrepassUsed = false;
   this->DepthPrepassReused = false;
   this->DepthPrepassKept = false;
@@ -774,6 +776,31 @@ void vtkClusteredLightingPass::ReportIgnoredRendererOptions(vtkRenderer* ren)
                     "shades itself, and the clustered lights would cast none. The frame is "
                     "rendered without shadows.");
   }
+}
+
+//------------------------------------------------------------------------------
+// The order-4 far diffuse reads 14 textures besides the lights' 4 and the specular table: a
+// GPU whose fragment shaders have fewer texture units than it needs beside VTK's own
+// (FarFieldOrder4TextureUnits) gets the order-2 far field, said once.
+void vtkClusteredLightingPass::ChooseFarDiffuseOrder(
+  vtkOpenGLRenderWindow* rw, vtkClusteredLightingAssignerInputs& inputs)
+{
+  if (!inputs.FarField.Enabled || !inputs.FarField.Order4Diffuse)
+  {
+    return;
+  }
+  int units = 0;
+  rw->GetState()->vtkglGetIntegerv(GL_MAX_TEXTURE_IMAGE_UNITS, &units);
+  inputs.FarField.Order4Diffuse = vtkClusteredLighting::ChooseFarDiffuseOrder4(true, units);
+  if (!inputs.FarField.Order4Diffuse && !this->Internals->ReportedFarDiffuseOrder)
+  {
+    vtkWarningMacro(<< "FarFieldOrder4Diffuse: this GPU's fragment shaders have " << units
+                    << " texture units, fewer than the "
+                    << vtkClusteredLighting::FarFieldOrder4TextureUnits
+                    << " the order-4 far diffuse needs beside VTK's own; the far diffuse is of "
+                       "order 2 (its error stays within the stated bound).");
+  }
+  this->Internals->ReportedFarDiffuseOrder = !inputs.FarField.Order4Diffuse;
 }
 
 //------------------------------------------------------------------------------

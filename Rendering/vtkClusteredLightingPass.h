@@ -481,8 +481,9 @@ public:
    * angular error down where the far light comes from many directions: VTK's default
    * always-on lights, and tens of thousands of lights (docs/far-field.md, "The order-4 far
    * diffuse"). Both stay within the stated bound, which counts the order taken. Off
-   * needs 7 texture units for the far field instead of 14 (GPUs that offer a fragment
-   * shader only the 16 OpenGL guarantees). Default is on.
+   * needs 7 texture units for the far field instead of 14; a GPU whose fragment shaders
+   * have fewer than 28 units (OpenGL guarantees 16; llvmpipe and desktop GPUs have 32)
+   * gets order 2 whatever this says, with a warning. Default is on.
    */
   vtkSetMacro(FarFieldOrder4Diffuse, bool);
   vtkGetMacro(FarFieldOrder4Diffuse, bool);
@@ -1055,6 +1056,8 @@ private:
   void SetUpCamera(vtkRenderer* ren);
   void RenderSelection(const vtkRenderState* s);
   void ReportIgnoredRendererOptions(vtkRenderer* ren);
+  // FarFieldOrder4Diffuse where the GPU has the texture units for it (else order 2, said once).
+  void ChooseFarDiffuseOrder(vtkOpenGLRenderWindow* rw, vtkClusteredLightingAssignerInputs& inputs);
   // Sets each floating-point option that is NaN (vtkSetClampMacro stores NaN as given)
   // back to its default, with a warning, before a frame reads them.
   void ResetNaNOptions();

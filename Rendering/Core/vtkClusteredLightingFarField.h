@@ -1180,6 +1180,20 @@ inline double ApplyFarDiffuse(const double* m, const glm::dvec3& N, bool order4 
   return std::min(std::max(EstimateFarDiffuse(m, N, VN, NTN, order4), lower), upper);
 }
 
+/**
+ * Texture units a fragment shader needs for the order-4 far diffuse beside VTK's own: the
+ * lights' 4 (data, view, master, list), 14 moment textures and the specular table (19), and
+ * room for the 8 or so a VTK mapper may bind (colour and actor textures, a PBR material's
+ * maps and its environment's 3). OpenGL 4.5 guarantees 16 (GL_MAX_TEXTURE_IMAGE_UNITS);
+ * llvmpipe and desktop GPUs have 32. With fewer the far diffuse is of order 2 (7 moment
+ * textures): ChooseFarDiffuseOrder4.
+ */
+constexpr int FarFieldOrder4TextureUnits = 28;
+inline bool ChooseFarDiffuseOrder4(bool asked, int fragmentTextureUnits)
+{
+  return asked && fragmentTextureUnits >= FarFieldOrder4TextureUnits;
+}
+
 /// Diffuse far irradiance (per unit colour, per channel) for normal N (ApplyFarDiffuse).
 inline glm::dvec3 EvaluateFarDiffuse(
   const std::array<double, FarFieldFloatsPerNode>& m, const glm::dvec3& N, bool order4 = true)

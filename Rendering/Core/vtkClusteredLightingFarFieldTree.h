@@ -280,8 +280,8 @@ inline bool AcceptFarFieldGroup(
  * centre (ComputeFarFieldMoments); the stated bound counts it exactly as the build does.
  */
 constexpr double FarFieldSpreadStep = 0.5; ///< the fourth moments' difference step
-inline void ComputeGroupSpreadTerms(
-  const FarFieldLightTree::Node& n, const glm::dvec3& x, double (&dm)[FarFieldMomentsPerChannel])
+inline void ComputeGroupSpreadTerms(const FarFieldLightTree::Node& n, const glm::dvec3& x,
+  double (&dm)[FarFieldMomentsPerChannel], bool fourth = true)
 {
   std::fill(dm, dm + FarFieldMomentsPerChannel, 0.0);
   const glm::dvec3 v = n.Centroid - x;
@@ -314,6 +314,10 @@ inline void ComputeGroupSpreadTerms(
   dm[6] = dT(0, 1);
   dm[7] = dT(0, 2);
   dm[8] = dT(1, 2);
+  if (!fourth)
+  {
+    return;
+  }
   // The fourth moments' term, (1/2) tr(Hessian(h) Sigma), by central differences: with
   // Sigma = sum_k l_k l_k^T (its LDL^T factors), it is (1/2) sum_k (l_k . grad)^2 h, each
   // a second difference along l_k with step FarFieldSpreadStep l_k.
@@ -335,7 +339,7 @@ inline void ComputeGroupSpreadTerms(
     std::sqrt(std::max(P1, 0.0)) * glm::dvec3(0.0, 1.0, L21),
     std::sqrt(std::max(P2, 0.0)) * glm::dvec3(0.0, 0.0, 1.0) };
   double t[FarFieldMomentsPerChannel];
-  auto fourth = [&](const glm::dvec3& y, double scale)
+  auto addFourth = [&](const glm::dvec3& y, double scale)
   {
     const double d = glm::length(y);
     const double q = a.x + d * (a.y + d * a.z);
@@ -354,9 +358,9 @@ inline void ComputeGroupSpreadTerms(
   {
     if (glm::dot(l, l) > 0.0)
     {
-      fourth(v + h * l, 0.5 / (h * h));
-      fourth(v - h * l, 0.5 / (h * h));
-      fourth(v, -1.0 / (h * h));
+      addFourth(v + h * l, 0.5 / (h * h));
+      addFourth(v - h * l, 0.5 / (h * h));
+      addFourth(v, -1.0 / (h * h));
     }
   }
 }
@@ -518,8 +522,9 @@ struct FarFieldSources
 /// monomials of ComputeFarMomentTerms), u the unit direction and g the attenuation; Windowed: times
 /// the far part 1 - W(d / r), with ir = 1 / r. A source on the node (d = 0) adds nothing, as in
 /// ComputeFarContribution. Branch-free, so that the loops below vectorize (given -fno-math-errno
-/// -fno-trapping-math, see CMakeLists.txt).
-template <bool Windowed>
+/// -fno-trapping-math, see CMakeLists.txt). Terms FarFieldOrder2Moments: the order-2
+/// terms only (t[9] on are not written), for an order-2 far diffuse.
+template <bool Windowed, int Terms = FarFieldMomentsPerChannel>
 inline void ComputeFarFieldTerms(float dx, float dy, float dz, float a0, float a1, float a2,
   float ir, float (&t)[FarFieldMomentsPerChannel])
 {
@@ -545,6 +550,10 @@ inline void ComputeFarFieldTerms(float dx, float dy, float dz, float a0, float a
   t[6] = gxy;
   t[7] = gx * uz;
   t[8] = gy * uz;
+  if (Terms <= FarFieldOrder2Moments)
+  {
+    return;
+  }
   t[9] = gxx * (ux * ux);
   t[10] = gxx * (ux * uy);
   t[11] = gxx * (uy * uy);
@@ -569,17 +578,17 @@ inline void ComputeFarFieldTerms(float dx, float dy, float dz, float a0, float a
  */
 /// Adds the far light of `src` at the node (px, py, pz) into column i of the moment rows
 /// (channel-major, as the nodes store them): 54 rows, or with Channels 1 the 18 rows of
-/// the one channel whose colour the source carries in R.
-template <bool Windowed, int Columns, int Channels>
+/// the one channel whose colour the source carries in R; the first Terms of each channel.
+template <bool Windowed, int Columns, int Channels, int Terms>
 inline void AddFarFieldSource(
   const FarFieldSource& src, float px, float py, float pz, float (*rows)[Columns], int i)
 {
   constexpr int M = FarFieldMomentsPerChannel;
   float t[M];
-  ComputeFarFieldTerms<Windowed>(
+  ComputeFarFieldTerms<Windowed, Terms>(
     src.X - px, src.Y - py, src.Z - pz, src.A0, src.A1, src.A2, src.InverseNearRadius, t);
   VTK_CLUSTERED_LIGHTING_UNROLL
-  for (int m = 0; m < M; ++m)
+  for (int m = 0; m < Terms; ++m)
   {
     rows[m][i] += src.R * t[m];
     if (Channels == 3)
@@ -590,7 +599,7 @@ inline void AddFarFieldSource(
   }
 }
 
-template <bool Windowed, int Lanes, int Channels>
+template <bool Windowed, int Lanes, int Channels, int Terms>
 inline void AccumulateBlock(const FarFieldSources& s, const float* px, const float* py,
   const float* pz, float (*acc)[FarFieldBlockNodes])
 {
@@ -602,7 +611,8 @@ inline void AccumulateBlock(const FarFieldSources& s, const float* px, const flo
       const FarFieldSource src = s.Get(q);
       for (int i = 0; i < FarFieldBlockNodes; ++i)
       {
-        AddFarFieldSource<Windowed, FarFieldBlockNodes, Channels>(src, px[i], py[i], pz[i], acc, i);
+        AddFarFieldSource<Windowed, FarFieldBlockNodes, Channels, Terms>(
+          src, px[i], py[i], pz[i], acc, i);
       }
     }
   }
@@ -621,7 +631,7 @@ inline void AccumulateBlock(const FarFieldSources& s, const float* px, const flo
         const FarFieldSource src = s.Get(q);
         for (int i = 0; i < Lanes; ++i)
         {
-          AddFarFieldSource<Windowed, Lanes, Channels>(
+          AddFarFieldSource<Windowed, Lanes, Channels, Terms>(
             src, px[i0 + i], py[i0 + i], pz[i0 + i], a, i);
         }
       }
@@ -679,7 +689,7 @@ struct FarFieldSpotSources
  * cone's edge may fall on either side of it; the stated bound counts that
  * (ComputeFarFieldErrorBounds).
  */
-template <bool Windowed, int Channels>
+template <bool Windowed, int Channels, int Terms>
 inline void AccumulateSpotBlock(const FarFieldSpotSources& s, const float* px, const float* py,
   const float* pz, float (*acc)[FarFieldBlockNodes])
 {
@@ -692,7 +702,8 @@ inline void AccumulateSpotBlock(const FarFieldSpotSources& s, const float* px, c
     {
       const float dx = src.X - px[i], dy = src.Y - py[i], dz = src.Z - pz[i];
       float t[M];
-      ComputeFarFieldTerms<Windowed>(dx, dy, dz, src.A0, src.A1, src.A2, src.InverseNearRadius, t);
+      ComputeFarFieldTerms<Windowed, Terms>(
+        dx, dy, dz, src.A0, src.A1, src.A2, src.InverseNearRadius, t);
       const float d = std::sqrt(dx * dx + dy * dy + dz * dz);
       const float c = -(dx * ax + dy * ay + dz * az) / (d + 1e-30f);
       const float cc = std::min(c, 1.0f);
@@ -703,7 +714,7 @@ inline void AccumulateSpotBlock(const FarFieldSpotSources& s, const float* px, c
       }
       f = c >= cone ? f : 0.0f;
       VTK_CLUSTERED_LIGHTING_UNROLL
-      for (int m = 0; m < M; ++m)
+      for (int m = 0; m < Terms; ++m)
       {
         const float v = f * t[m];
         acc[m][i] += src.R * v;
@@ -717,8 +728,9 @@ inline void AccumulateSpotBlock(const FarFieldSpotSources& s, const float* px, c
   }
 }
 
-/// ComputeFarFieldMoments for Channels 3 (every channel) or 1 (channel `channel` only).
-template <int Lanes, int Channels>
+/// ComputeFarFieldMoments for Channels 3 (every channel) or 1 (channel `channel` only),
+/// Terms FarFieldMomentsPerChannel (order 4) or FarFieldOrder2Moments (F left 0).
+template <int Lanes, int Channels, int Terms>
 std::int64_t ComputeFarFieldMomentsOf(const FarFieldGrid& grid,
   const std::vector<PreparedLight>& lights, const std::vector<double>& nearRadii,
   const FarFieldLightTree& tree, double grouping, std::int64_t b0, std::int64_t b1,
@@ -776,7 +788,7 @@ std::int64_t ComputeFarFieldMomentsOf(const FarFieldGrid& grid,
         const FarFieldLightTree::Node& n = tree.Nodes[static_cast<std::size_t>(node)];
         whole.Add(n.Centroid - center, colorOf(n.Color), n.Attenuation, 0.0);
         double dm[FarFieldMomentsPerChannel];
-        ComputeGroupSpreadTerms(n, center, dm);
+        ComputeGroupSpreadTerms(n, center, dm, Terms > FarFieldOrder2Moments);
         for (int c = 0; c < 3; ++c)
         {
           for (int m = 0; m < FarFieldMomentsPerChannel; ++m)
@@ -810,10 +822,10 @@ std::int64_t ComputeFarFieldMomentsOf(const FarFieldGrid& grid,
     {
       std::fill(row, row + FarFieldBlockNodes, 0.0f);
     }
-    AccumulateBlock<false, Lanes, Channels>(whole, px, py, pz, acc);
-    AccumulateBlock<true, Lanes, Channels>(windowed, px, py, pz, acc);
-    AccumulateSpotBlock<false, Channels>(spotsWhole, px, py, pz, acc);
-    AccumulateSpotBlock<true, Channels>(spotsWindowed, px, py, pz, acc);
+    AccumulateBlock<false, Lanes, Channels, Terms>(whole, px, py, pz, acc);
+    AccumulateBlock<true, Lanes, Channels, Terms>(windowed, px, py, pz, acc);
+    AccumulateSpotBlock<false, Channels, Terms>(spotsWhole, px, py, pz, acc);
+    AccumulateSpotBlock<true, Channels, Terms>(spotsWindowed, px, py, pz, acc);
     pairs += static_cast<std::int64_t>(whole.Size() + windowed.Size() + spotsWhole.Size() +
                spotsWindowed.Size() + spots.size()) *
       ni * nj * nk;
@@ -848,7 +860,7 @@ std::int64_t ComputeFarFieldMomentsOf(const FarFieldGrid& grid,
                 const double g = far * color[c];
                 double* row =
                   o + first + static_cast<std::ptrdiff_t>(c) * FarFieldMomentsPerChannel;
-                for (int m = 0; m < FarFieldMomentsPerChannel; ++m)
+                for (int m = 0; m < Terms; ++m)
                 {
                   row[m] += g * t[m];
                 }
@@ -872,20 +884,27 @@ std::int64_t ComputeFarFieldMomentsOf(const FarFieldGrid& grid,
  * suits any processor. With `channel` 0, 1 or 2 only that channel's 18 moments of each node
  * are summed and written (the others are left as they are): a third of the multiply-adds,
  * for lights that share a colour (FindFarFieldSharedColor, PackFarFieldTexelsOneChannel).
+ * With `order4` false the fourth moments are written as 0 and not summed (an order-2 far
+ * diffuse reads none of them): half the multiply-adds.
  */
 template <int Lanes = 0>
 std::int64_t ComputeFarFieldMoments(const FarFieldGrid& grid,
   const std::vector<PreparedLight>& lights, const std::vector<double>& nearRadii,
   const FarFieldLightTree& tree, double grouping, std::int64_t b0, std::int64_t b1,
-  std::vector<double>& moments, int channel = -1)
+  std::vector<double>& moments, int channel = -1, bool order4 = true)
 {
+  constexpr int All = FarFieldMomentsPerChannel, Two = FarFieldOrder2Moments;
   if (channel >= 0 && channel < 3)
   {
-    return Detail::ComputeFarFieldMomentsOf<Lanes, 1>(
-      grid, lights, nearRadii, tree, grouping, b0, b1, moments, channel);
+    return order4 ? Detail::ComputeFarFieldMomentsOf<Lanes, 1, All>(
+                      grid, lights, nearRadii, tree, grouping, b0, b1, moments, channel)
+                  : Detail::ComputeFarFieldMomentsOf<Lanes, 1, Two>(
+                      grid, lights, nearRadii, tree, grouping, b0, b1, moments, channel);
   }
-  return Detail::ComputeFarFieldMomentsOf<Lanes, 3>(
-    grid, lights, nearRadii, tree, grouping, b0, b1, moments, 0);
+  return order4 ? Detail::ComputeFarFieldMomentsOf<Lanes, 3, All>(
+                    grid, lights, nearRadii, tree, grouping, b0, b1, moments, 0)
+                : Detail::ComputeFarFieldMomentsOf<Lanes, 3, Two>(
+                    grid, lights, nearRadii, tree, grouping, b0, b1, moments, 0);
 }
 
 // The node sums are arithmetic bound (per node and source: a square root, two divisions
@@ -905,19 +924,19 @@ namespace Detail
 __attribute__((target("avx2,fma"), flatten)) inline std::int64_t ComputeFarFieldMomentsAVX2(
   const FarFieldGrid& grid, const std::vector<PreparedLight>& lights,
   const std::vector<double>& nearRadii, const FarFieldLightTree& tree, double grouping,
-  std::int64_t b0, std::int64_t b1, std::vector<double>& moments, int channel)
+  std::int64_t b0, std::int64_t b1, std::vector<double>& moments, int channel, bool order4)
 {
   return ComputeFarFieldMoments<0>(
-    grid, lights, nearRadii, tree, grouping, b0, b1, moments, channel);
+    grid, lights, nearRadii, tree, grouping, b0, b1, moments, channel, order4);
 }
 
 __attribute__((target("avx512f,avx512vl,avx512dq,avx2,fma"), flatten)) inline std::int64_t
 ComputeFarFieldMomentsAVX512(const FarFieldGrid& grid, const std::vector<PreparedLight>& lights,
   const std::vector<double>& nearRadii, const FarFieldLightTree& tree, double grouping,
-  std::int64_t b0, std::int64_t b1, std::vector<double>& moments, int channel)
+  std::int64_t b0, std::int64_t b1, std::vector<double>& moments, int channel, bool order4)
 {
   return ComputeFarFieldMoments<16>(
-    grid, lights, nearRadii, tree, grouping, b0, b1, moments, channel);
+    grid, lights, nearRadii, tree, grouping, b0, b1, moments, channel, order4);
 }
 } // namespace Detail
 #endif
@@ -968,22 +987,23 @@ inline const char* GetFarFieldBuildCopyName(FarFieldBuildCopy copy)
 inline std::int64_t ComputeFarFieldMomentsWith(FarFieldBuildCopy copy, const FarFieldGrid& grid,
   const std::vector<PreparedLight>& lights, const std::vector<double>& nearRadii,
   const FarFieldLightTree& tree, double grouping, std::int64_t b0, std::int64_t b1,
-  std::vector<double>& moments, int channel = -1)
+  std::vector<double>& moments, int channel = -1, bool order4 = true)
 {
 #ifdef VTK_CLUSTERED_LIGHTING_VECTOR_BUILDS
   if (copy == FarFieldBuildCopy::AVX512)
   {
     return Detail::ComputeFarFieldMomentsAVX512(
-      grid, lights, nearRadii, tree, grouping, b0, b1, moments, channel);
+      grid, lights, nearRadii, tree, grouping, b0, b1, moments, channel, order4);
   }
   if (copy == FarFieldBuildCopy::AVX2)
   {
     return Detail::ComputeFarFieldMomentsAVX2(
-      grid, lights, nearRadii, tree, grouping, b0, b1, moments, channel);
+      grid, lights, nearRadii, tree, grouping, b0, b1, moments, channel, order4);
   }
 #endif
   (void)copy;
-  return ComputeFarFieldMoments(grid, lights, nearRadii, tree, grouping, b0, b1, moments, channel);
+  return ComputeFarFieldMoments(
+    grid, lights, nearRadii, tree, grouping, b0, b1, moments, channel, order4);
 }
 
 /// ComputeFarFieldMoments in the widest copy this processor runs
@@ -991,10 +1011,10 @@ inline std::int64_t ComputeFarFieldMomentsWith(FarFieldBuildCopy copy, const Far
 inline std::int64_t ComputeFarFieldMomentsForThisCPU(const FarFieldGrid& grid,
   const std::vector<PreparedLight>& lights, const std::vector<double>& nearRadii,
   const FarFieldLightTree& tree, double grouping, std::int64_t b0, std::int64_t b1,
-  std::vector<double>& moments, int channel = -1)
+  std::vector<double>& moments, int channel = -1, bool order4 = true)
 {
   return ComputeFarFieldMomentsWith(GetFarFieldBuildCopyForThisCPU(), grid, lights, nearRadii, tree,
-    grouping, b0, b1, moments, channel);
+    grouping, b0, b1, moments, channel, order4);
 }
 
 } // namespace vtkClusteredLighting

@@ -356,12 +356,21 @@ std::vector<Step> MakePlan(const PlanOptions& options)
         s.Reference = n <= 16384;
         s.Frames = n > 16384 ? 3 : base.Frames;
         plan.push_back(s);
+        // The rebuild with the far diffuse to order 2 (the fourth moments double the node
+        // sums).
+        if (!quick && n <= 65536)
+        {
+          Step order2 = WithOrder2Diffuse(s);
+          order2.Sweep = "lights";
+          order2.Value = "animated (order-2 diffuse)";
+          plan.push_back(order2);
+        }
         // Lights moving under a still camera: the prepass's depths are copied back
         // (ReuseDepthPrepass), and only the lights are assigned again.
         if (!quick && k == 0)
         {
           Step still = s;
-          still.Value = "animated, camera static";
+          still.Value = "animated (camera static)";
           still.Moving = false;
           plan.push_back(still);
         }
@@ -462,7 +471,7 @@ std::vector<Step> MakePlan(const PlanOptions& options)
       s.Lights = n;
       s.Method = "stock";
       s.Sweep = "culling";
-      s.Value = "back faces culled by hand, " + std::to_string(n);
+      s.Value = "back faces culled by hand (" + std::to_string(n) + ")";
       s.Frames = F;
       s.Counts = false;
       s.Reference = false;

@@ -764,6 +764,19 @@ TEST(FarFieldKernel, FourthMomentsGiveTheOrder4Diffuse)
   EXPECT_LT(error4, 0.5 * error2);
 }
 
+// The order-4 diffuse needs 19 texture units for the pass and room for VTK's: below 28
+// (OpenGL guarantees 16) the far field is of order 2; asked off, it is always.
+TEST(FarFieldKernel, Order4DiffuseOnlyWithTheTextureUnitsItNeeds)
+{
+  EXPECT_TRUE(ChooseFarDiffuseOrder4(true, 32));
+  EXPECT_TRUE(ChooseFarDiffuseOrder4(true, 28));
+  EXPECT_FALSE(ChooseFarDiffuseOrder4(true, 27));
+  EXPECT_FALSE(ChooseFarDiffuseOrder4(true, 16));
+  EXPECT_FALSE(ChooseFarDiffuseOrder4(true, 0));
+  EXPECT_FALSE(ChooseFarDiffuseOrder4(false, 32));
+  EXPECT_GE(FarFieldOrder4TextureUnits, 4 + FarFieldTextures + 1 + 8);
+}
+
 TEST(FarFieldKernel, LobeUpperEndFromQuadraticsIsLowerBehindTheMirroredView)
 {
   // All of the far light from t = -1/2 (behind the mirrored view): no lobe at all. D^T T D
@@ -935,6 +948,54 @@ TEST(FarFieldBuild, TreeWithoutGroupingMatchesTheExactSums)
   ASSERT_TRUE(b.Plan.Active);
   const std::vector<double> exact = ComputeFarFieldMomentsExact(b.Plan.Grid, lights, b.Radii);
   ExpectMomentsNear(b.Moments, exact);
+}
+
+// The order-2 build (FarFieldOrder4Diffuse off) sums the same order-2 moments, in every
+// copy, grouped or not, spot lights included, and leaves the fourth moments 0.
+TEST(FarFieldBuild, Order2BuildSumsTheOrder2MomentsOnly)
+{
+  std::mt19937 rng(23);
+  std::uniform_real_distribution<double> U(-1.0, 1.0);
+  std::vector<PreparedLight> lights = MakeLights(
+    900, glm::dvec3(1, 0, 4), [&](int) { return glm::dvec3(U(rng), U(rng), 0.5 * U(rng)); });
+  MakeSpots(lights, 7);
+  for (double grouping : { 0.0, 1.0 })
+  {
+    const Built b = Build(lights, glm::dvec3(-1), glm::dvec3(1), grouping, 2000);
+    ASSERT_TRUE(b.Plan.Active);
+    for (FarFieldBuildCopy copy :
+      { FarFieldBuildCopy::Portable, FarFieldBuildCopy::AVX2, FarFieldBuildCopy::AVX512 })
+    {
+      if (!CanRunFarFieldBuildCopy(copy))
+      {
+        continue;
+      }
+      std::vector<double> four(b.Moments.size(), -1.0), two(b.Moments.size(), -1.0);
+      const std::int64_t blocks = GetNumberOfFarFieldBlocks(b.Plan.Grid);
+      ComputeFarFieldMomentsWith(
+        copy, b.Plan.Grid, lights, b.Radii, b.Tree, grouping, 0, blocks, four, -1, true);
+      ComputeFarFieldMomentsWith(
+        copy, b.Plan.Grid, lights, b.Radii, b.Tree, grouping, 0, blocks, two, -1, false);
+      int fourthNonZero = 0;
+      for (std::size_t i = 0; i < four.size(); ++i)
+      {
+        if (static_cast<int>(i % FarFieldMomentsPerChannel) < FarFieldOrder2Moments)
+        {
+          // The same sums up to float rounding (the compiler may fuse them differently),
+          // relative to the channel's S at the node.
+          const double S = four[i - i % FarFieldMomentsPerChannel];
+          ASSERT_LE(std::abs(two[i] - four[i]), 1e-5 * S)
+            << GetFarFieldBuildCopyName(copy) << " " << i;
+        }
+        else
+        {
+          ASSERT_EQ(two[i], 0.0) << GetFarFieldBuildCopyName(copy) << " " << i;
+          fourthNonZero += four[i] != 0.0 ? 1 : 0;
+        }
+      }
+      EXPECT_GT(fourthNonZero, static_cast<int>(four.size() / 3)) << grouping;
+    }
+  }
 }
 
 // Spot lights are not in the tree: each is summed at every node its cone may reach, with

@@ -1069,14 +1069,12 @@ inline void ComputeMomentInterval(
   upper = std::max(upper, lower);
 }
 
-/// ApplyMomentKernel from one direction's contractions of a channel's moments, S, V.D and
-/// D^T T D: the estimate clamped into ComputeMomentInterval's interval, which `lowerOut`
-/// and `upperOut` receive. Mirrors clApplyFarKernel (whose callers contract each direction
-/// once and share it: the normal's for the diffuse and the lobe's blend).
-inline double ApplyKernelToContractions(const glm::dvec3& k, double S, double VD, double DTD,
-  bool lobe, double power, double* lowerOut = nullptr, double* upperOut = nullptr)
+/// An estimate from one direction's contractions of a channel's moments, S, V.D and
+/// D^T T D, clamped into ComputeMomentInterval's interval, which `lowerOut` and
+/// `upperOut` receive (ApplyKernelToContractions, ApplyFarDiffuse).
+inline double ClampIntoMomentInterval(double estimate, double S, double VD, double DTD, bool lobe,
+  double power, double* lowerOut, double* upperOut)
 {
-  const double estimate = k.x * S + k.y * VD + k.z * 0.5 * (3.0 * DTD - S);
   double lower = 0.0, upper = 0.0;
   ComputeMomentInterval(S, VD, DTD, lobe, power, lower, upper);
   if (lowerOut)
@@ -1088,6 +1086,16 @@ inline double ApplyKernelToContractions(const glm::dvec3& k, double S, double VD
     *upperOut = upper;
   }
   return std::min(std::max(estimate, lower), upper);
+}
+
+/// ApplyMomentKernel from one direction's contractions: the kernel's estimate, clamped
+/// (ClampIntoMomentInterval). Mirrors clApplyFarKernel (whose callers contract each
+/// direction once and share it: the normal's for the diffuse and the lobe's blend).
+inline double ApplyKernelToContractions(const glm::dvec3& k, double S, double VD, double DTD,
+  bool lobe, double power, double* lowerOut = nullptr, double* upperOut = nullptr)
+{
+  return ClampIntoMomentInterval(
+    k.x * S + k.y * VD + k.z * 0.5 * (3.0 * DTD - S), S, VD, DTD, lobe, power, lowerOut, upperOut);
 }
 
 /// One channel's moments m (FarFieldMomentsPerChannel) contracted with direction D: V.D
@@ -1167,17 +1175,8 @@ inline double ApplyFarDiffuse(const double* m, const glm::dvec3& N, bool order4 
 {
   double VN = 0.0, NTN = 0.0;
   ContractMoments(m, N, VN, NTN);
-  double lower = 0.0, upper = 0.0;
-  ComputeMomentInterval(m[0], VN, NTN, false, 1.0, lower, upper);
-  if (lowerOut)
-  {
-    *lowerOut = lower;
-  }
-  if (upperOut)
-  {
-    *upperOut = upper;
-  }
-  return std::min(std::max(EstimateFarDiffuse(m, N, VN, NTN, order4), lower), upper);
+  return ClampIntoMomentInterval(
+    EstimateFarDiffuse(m, N, VN, NTN, order4), m[0], VN, NTN, false, 1.0, lowerOut, upperOut);
 }
 
 /**

@@ -110,7 +110,8 @@ bool vtkClusteredLightingAssigner::PreparationKey::operator!=(const PreparationK
     this->FarField.Grouping != o.FarField.Grouping ||
     this->FarField.NearBudget != o.FarField.NearBudget ||
     this->FarField.SharedColor != o.FarField.SharedColor ||
-    this->FarField.Order4Diffuse != o.FarField.Order4Diffuse || this->RegionLo != o.RegionLo ||
+    this->FarField.Order4Diffuse != o.FarField.Order4Diffuse ||
+    this->FarField.SpecularBins != o.FarField.SpecularBins || this->RegionLo != o.RegionLo ||
     this->RegionHi != o.RegionHi;
 }
 
@@ -322,6 +323,15 @@ const vtkClusteredLightingAssignment& vtkClusteredLightingAssigner::Update(
       {
         r.NewError = "Could not upload the far field (its RGBA32F 3D textures).";
       }
+      else if (this->FarField.GetSpecularBinsTooDeep())
+      {
+        const std::array<int, 3>& d = this->FarFieldPlan.Grid.Dims;
+        r.NewWarnings.emplace_back("FarFieldSpecularBins: the far field's grid (" +
+          std::to_string(d[0]) + " x " + std::to_string(d[1]) + " x " + std::to_string(d[2]) +
+          " nodes) needs a 3D texture larger than this GPU's largest (GL_MAX_3D_TEXTURE_SIZE) "
+          "for the far specular's bins; the far specular comes from the moments alone. A "
+          "smaller FarFieldResolution makes room.");
+      }
     }
     else
     {
@@ -341,6 +351,8 @@ const vtkClusteredLightingAssignment& vtkClusteredLightingAssigner::Update(
   const glm::dvec3 shared = r.FarField ? this->FarField.GetSharedColor() : glm::dvec3(0.0);
   r.FarFieldOneChannel = shared != glm::dvec3(0.0);
   r.FarFieldOrder4 = r.FarField && this->FarFieldPlan.Order4Diffuse;
+  r.FarFieldSpecularBins = r.FarField && this->FarField.HasSpecularBins();
+  r.SpecularBinsAxis = this->FarField.GetSpecularBinsAxis();
   for (int c = 0; c < 3; ++c)
   {
     r.FarFieldColor[c] = static_cast<float>(shared[c]);
@@ -897,6 +909,7 @@ void vtkClusteredLightingAssigner::ActivateShading()
     this->FarField.Activate();
     r.FarFieldUnits = this->FarField.GetUnits();
     r.LobeTableUnit = this->FarField.GetLobeTableUnit();
+    r.SpecularBinsUnit = this->FarField.GetSpecularBinsUnit();
   }
   r.LightDataUnit =
     this->LightData.GetTexture() ? this->LightData.GetTexture()->GetTextureUnit() : -1;
@@ -920,6 +933,7 @@ void vtkClusteredLightingAssigner::DeactivateShading()
   vtkClusteredLightingAssignment& r = this->Result;
   r.FarFieldUnits.fill(-1);
   r.LobeTableUnit = -1;
+  r.SpecularBinsUnit = -1;
   r.LightDataUnit = r.LightViewUnit = r.ListUnit = r.MasterUnit = -1;
 }
 
@@ -933,7 +947,8 @@ vtkClusteredLightingAssigner::SummarizeFarFieldErrorBound() const
   }
   const vtkClusteredLighting::FarFieldBuildInputs in{ &this->FarFieldPlan.Grid,
     &this->Prepared.Lights, &this->FarField.GetNearRadii(), &this->FarField.GetTree(),
-    this->FarFieldPlan.Grouping, this->FarFieldPlan.Order4Diffuse };
+    this->FarFieldPlan.Grouping, this->FarFieldPlan.Order4Diffuse,
+    this->Result.FarFieldSpecularBins };
   return SummarizeOnThreads(in);
 }
 
@@ -969,6 +984,7 @@ vtkClusteredLightingAssignmentSnapshot vtkClusteredLightingAssigner::GetSnapshot
   f.Lights = this->Prepared.Lights;
   f.NumberOfQuads = this->Result.NumberOfQuads;
   f.FarField = this->Result.FarField ? this->FarFieldPlan : vtkClusteredLighting::FarFieldPlan();
+  f.FarField.SpecularBins = this->Result.FarFieldSpecularBins; // asked and built
   f.DepthBounds = this->Result.DepthAware ? this->DepthBounds : ClusterDepthBounds();
   f.SpotConeCulling = this->LastView.SpotConeCulling;
   return f;

@@ -182,11 +182,15 @@ struct vtkClusteredLightingAssignment
   /// FarFieldColor (FindFarFieldSharedColor); else three channels in 14 (7).
   bool FarFieldOneChannel = false;
   bool FarFieldOrder4 = false; ///< the far diffuse to order 4 (FarFieldPlan::Order4Diffuse)
+  /// The far specular from directional bins (FarFieldPlan::SpecularBins, built).
+  bool FarFieldSpecularBins = false;
   float FarFieldColor[3] = { 0.0f, 0.0f, 0.0f };
   float FarFieldFromVC[16] = { 0 }; ///< VC -> far-field texture coordinates (column-major)
   float WorldFromVC[9] = { 0 };     ///< VC -> world directions (column-major)
   std::array<int, vtkClusteredLighting::FarFieldTextures> FarFieldUnits{}; ///< while bound
-  int LobeTableUnit = -1; ///< the far specular's table, while bound
+  int LobeTableUnit = -1;    ///< the far specular's table, while bound
+  int SpecularBinsUnit = -1; ///< the far specular's bins, while bound
+  int SpecularBinsAxis = 2;  ///< the grid axis their slabs are stacked along
   std::uint64_t ListBytes = 0, MasterBytes = 0, LightBufferBytes = 0;
 
   // Messages new in this update (each problem is reported once while it persists).

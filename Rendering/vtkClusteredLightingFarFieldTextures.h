@@ -23,7 +23,14 @@
  * others released (their units -1), and the node sums run for that channel only (a third
  * of the multiply-adds). Beside them, made at the
  * first build and kept: the Phong far specular's table (GetLobeProjectionTable, one RGBA32F
- * 2D texture of 65 x 66 texels, 68,640 bytes, read with texelFetch).
+ * 2D texture of 65 x 66 texels, 68,640 bytes, read with texelFetch). With
+ * FarFieldPlan::SpecularBins, the far specular's bins (vtkClusteredLightingFarSpecularBins.h)
+ * are summed with the moments and uploaded as one more RGBA32F 3D texture, its 52 slabs
+ * (26 with a shared colour) stacked along the grid's shallowest axis (832 or 416 bytes per
+ * node), where the GPU's 3D textures are large enough (GL_MAX_3D_TEXTURE_SIZE, 2,048 on
+ * llvmpipe: a grid up to 39 nodes along its shallowest axis, 78 with a shared colour; the
+ * default 32,768 nodes are at most 32 along it); otherwise none, and
+ * GetSpecularBinsTooDeep says so.
  *
  * @sa vtkClusteredLightingAssigner
  */
@@ -68,7 +75,16 @@ public:
   std::array<int, vtkClusteredLighting::FarFieldTextures> GetUnits() const;
   /// Unit of the lobe table's texture (-1 when not bound).
   int GetLobeTableUnit() const;
+  /// Unit of the far specular's bins (-1 when not bound or not built).
+  int GetSpecularBinsUnit() const;
   ///@}
+
+  /// Whether the last build made the far specular's bins, and whether they were asked for
+  /// and left out because the grid was too deep for the GPU's 3D textures.
+  bool HasSpecularBins() const;
+  bool GetSpecularBinsTooDeep() const { return this->SpecularBinsTooDeep; }
+  /// The grid axis the bins' slabs are stacked along (GetFarSpecularBinAxis).
+  int GetSpecularBinsAxis() const { return this->SpecularBinsAxis; }
 
   std::uint64_t GetBytes() const;
   int GetNumberOfGLObjects() const;
@@ -80,7 +96,12 @@ private:
   void operator=(const vtkClusteredLightingFarFieldTextures&) = delete;
 
   std::array<vtkTextureObject*, vtkClusteredLighting::FarFieldTextures> Textures{};
-  vtkTextureObject* LobeTable = nullptr; ///< the lit-side lobe's coefficients
+  vtkTextureObject* LobeTable = nullptr;    ///< the lit-side lobe's coefficients
+  vtkTextureObject* SpecularBins = nullptr; ///< the far specular's bins, slabs along z
+  std::vector<float> Bins;                  ///< their node sums, reused as Moments
+  std::vector<float> BinTexels;             ///< packed, reused
+  bool SpecularBinsTooDeep = false;
+  int SpecularBinsAxis = 2;
   std::array<int, 3> Dims = { { 0, 0, 0 } };
   std::vector<double> Moments; ///< node sums, reused from build to build (animated lights)
   std::array<std::vector<float>, vtkClusteredLighting::FarFieldTextures> Texels; ///< packed, reused

@@ -57,6 +57,27 @@ vtkProperty* GetActorProperty(vtkProp* prop)
   return actor ? actor->GetProperty() : nullptr;
 }
 
+// Whether some visible actor of the renderer shades a Phong specular the far specular's
+// bins serve (FarFieldSpecularBins: Specular above 0, a power from
+// FarSpecularBinsLeastPower on). Actors inside assemblies are not seen: theirs comes from
+// the moments, within the stated bound.
+bool NeedsFarSpecularBins(vtkRenderer* ren)
+{
+  vtkPropCollection* props = ren->GetViewProps();
+  vtkCollectionSimpleIterator it;
+  props->InitTraversal(it);
+  while (vtkProp* prop = props->GetNextProp(it))
+  {
+    vtkProperty* p = GetActorProperty(prop);
+    if (p && prop->GetVisibility() && p->GetInterpolation() != VTK_PBR && p->GetSpecular() > 0.0 &&
+      p->GetSpecularPower() >= vtkClusteredLighting::FarSpecularBinsLeastPower)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
 // Whether the prop shades with VTK's PBR model (the shading code's PBR variant).
 bool IsPbr(vtkProp* prop)
 {
@@ -422,6 +443,7 @@ struct vtkClusteredLightingPass::vtkInternals
   std::string DepthReuseProblem;           ///< why the last depths were not kept
   bool ReportedShadows = false;            ///< UseShadows, which the pass does not apply
   bool ReportedFarDiffuseOrder = false;    ///< too few texture units for the order-4 diffuse
+  bool ReportedFarSpecularBins = false;    ///< too few texture units for the specular's bins
   bool ReportedLoopLimit = false;          ///< the llvmpipe loop limit was reported
   bool ReportedUncountedPixels = false;    ///< a debug view's counts could not be read
   bool ReportedPbrFarField = false;        ///< PBR actors sum their far light exactly
@@ -785,12 +807,29 @@ void vtkClusteredLightingPass::ReportIgnoredRendererOptions(vtkRenderer* ren)
 void vtkClusteredLightingPass::ChooseFarDiffuseOrder(
   vtkOpenGLRenderWindow* rw, vtkClusteredLightingAssignerInputs& inputs)
 {
-  if (!inputs.FarField.Enabled || !inputs.FarField.Order4Diffuse)
+  if (!inputs.FarField.Enabled || (!inputs.FarField.Order4Diffuse && !inputs.FarField.SpecularBins))
   {
     return;
   }
   int units = 0;
   rw->GetState()->vtkglGetIntegerv(GL_MAX_TEXTURE_IMAGE_UNITS, &units);
+  const bool binsAsked = inputs.FarField.SpecularBins;
+  inputs.FarField.SpecularBins =
+    vtkClusteredLighting::ChooseFarSpecularBins(binsAsked, units, inputs.FarField.Order4Diffuse);
+  if (binsAsked && !inputs.FarField.SpecularBins && !this->Internals->ReportedFarSpecularBins)
+  {
+    vtkWarningMacro(<< "FarFieldSpecularBins: this GPU's fragment shaders have " << units
+                    << " texture units, fewer than the "
+                    << vtkClusteredLighting::GetFarSpecularBinsTextureUnits(
+                         inputs.FarField.Order4Diffuse)
+                    << " the far specular's bins need beside VTK's own; the far specular comes "
+                       "from the moments (its error stays within the stated bound).");
+  }
+  this->Internals->ReportedFarSpecularBins = binsAsked && !inputs.FarField.SpecularBins;
+  if (!inputs.FarField.Order4Diffuse)
+  {
+    return;
+  }
   inputs.FarField.Order4Diffuse = vtkClusteredLighting::ChooseFarDiffuseOrder4(true, units);
   if (!inputs.FarField.Order4Diffuse && !this->Internals->ReportedFarDiffuseOrder)
   {
@@ -989,6 +1028,7 @@ vtkClusteredLightingAssignerInputs vtkClusteredLightingPass::MakeAssignerInputs(
   in.FarField.NearBudget = this->NearFieldBudget;
   in.FarField.SharedColor = this->FarFieldSharedColor;
   in.FarField.Order4Diffuse = this->FarFieldOrder4Diffuse;
+  in.FarField.SpecularBins = this->FarFieldSpecularBins && NeedsFarSpecularBins(ren);
   // The far field's region: the visible props' bounds, with FarFieldRegion when it is a
   // box.
   double bounds[6];
@@ -1140,6 +1180,7 @@ void vtkClusteredLightingPass::ReportAssignment(const vtkClusteredLightingAssign
   this->NumberOfFarFieldResolutionChoices += r.FarFieldResolutionChosen ? 1 : 0;
   this->FarFieldTextureBytes = r.FarFieldBytes;
   this->FarFieldSharedColorUsed = r.FarField && r.FarFieldOneChannel;
+  this->FarFieldSpecularBinsUsed = r.FarField && r.FarFieldSpecularBins;
   this->DepthAwareClustersUsed = r.Enabled && r.DepthAware;
   for (int k = 0; k < 2; ++k)
   {
@@ -1171,6 +1212,7 @@ void vtkClusteredLightingPass::UpdateShaderVariant(const vtkClusteredLightingAss
   variant.FarField = r.FarField;
   variant.FarFieldOneChannel = r.FarField && r.FarFieldOneChannel;
   variant.FarFieldOrder4 = r.FarField && r.FarFieldOrder4;
+  variant.FarFieldSpecularBins = r.FarField && r.FarFieldSpecularBins;
   // The exact far sums' code is compiled only where a fragment may take them (FarFieldTolerance,
   // FarFieldExactSumLimit; the same choice as the clFarFieldTolerance uniform).
   const bool sums = r.FarField && this->FarFieldTolerance < 1.0;
@@ -1531,6 +1573,13 @@ bool vtkClusteredLightingPass::SetShaderParameters(
     {
       program->SetUniformi("clLobeTable", r.LobeTableUnit);
     }
+    if (program->IsUniformUsed("clFarSpecularBins"))
+    {
+      program->SetUniformi("clFarSpecularBins", r.SpecularBinsUnit);
+      program->SetUniformi("clFarSpecularAxis", r.SpecularBinsAxis);
+      program->SetUniformf(
+        "clFarSpecularDepth", static_cast<float>(r.FarFieldDims[r.SpecularBinsAxis]));
+    }
     if (program->IsUniformUsed("clFarFieldColor"))
     {
       program->SetUniform3f("clFarFieldColor", r.FarFieldColor);
@@ -1642,6 +1691,7 @@ void vtkClusteredLightingPass::PrintSelf(ostream& os, vtkIndent indent)
   os << next << "FarFieldGrouping: " << this->FarFieldGrouping << "\n";
   os << next << "FarFieldSharedColor: " << (this->FarFieldSharedColor ? "On" : "Off") << "\n";
   os << next << "FarFieldOrder4Diffuse: " << (this->FarFieldOrder4Diffuse ? "On" : "Off") << "\n";
+  os << next << "FarFieldSpecularBins: " << (this->FarFieldSpecularBins ? "On" : "Off") << "\n";
   const double* r = this->FarFieldRegion;
   os << next << "FarFieldRegion: ";
   if (vtkBoundingBox::IsValid(r))
@@ -1679,6 +1729,8 @@ void vtkClusteredLightingPass::PrintSelf(ostream& os, vtkIndent indent)
   os << next << "NumberOfFarFieldLights: " << this->NumberOfFarFieldLights << "\n";
   os << next << "NumberOfPackedFarFieldLights: " << this->NumberOfPackedFarFieldLights << "\n";
   os << next << "FarFieldSharedColorUsed: " << (this->FarFieldSharedColorUsed ? "yes" : "no")
+     << "\n";
+  os << next << "FarFieldSpecularBinsUsed: " << (this->FarFieldSpecularBinsUsed ? "yes" : "no")
      << "\n";
   os << next << "ClusterGridInUse: " << this->ClusterGridInUse[0] << " x "
      << this->ClusterGridInUse[1] << " x " << this->ClusterGridInUse[2] << "\n";

@@ -492,6 +492,29 @@ public:
 
   //@{
   /**
+   * Advanced: the Phong far specular of specular powers from 8 on from directional bins:
+   * per grid node the far light of 26 cells of directions, its sum and mean direction,
+   * each cell shaded as a spread of light against VTK's lobe
+   * (Rendering/Core/vtkClusteredLightingFarSpecularBins.h). A lobe of power 20 is too
+   * narrow for the far field's moments, which leave its highlights of tens of thousands
+   * of lights up to 3 steps off; the bins bring it within 2 (docs/far-field.md, "A far
+   * specular from directional bins"). Built only while some visible actor of the renderer
+   * has a Phong specular they serve (Specular above 0, SpecularPower 8 or more), so a
+   * diffuse scene pays nothing. Costs one more texture (832 bytes per grid node, 416 with
+   * FarFieldSharedColor), 26 or 52 texture reads per specular fragment, and the bins'
+   * sums in each far-field build. Off, or where the GPU has too few texture units or 3D
+   * textures too shallow for the grid (warned once), the far specular comes from the
+   * moments, within the stated bound either way. Off by default: on llvmpipe the bins'
+   * reads double the frame of 4,096 lights, whose images they do not change by a step
+   * (docs/far-field.md). Default is off.
+   */
+  vtkSetMacro(FarFieldSpecularBins, bool);
+  vtkGetMacro(FarFieldSpecularBins, bool);
+  vtkBooleanMacro(FarFieldSpecularBins, bool);
+  //@}
+
+  //@{
+  /**
    * Advanced: how many lights per point, on average over the box of the visible geometry,
    * the near field may evaluate exactly (a light counts at most once per point). When all
    * lights fit whole, each keeps its cutoff radius and the far field holds only the tails
@@ -887,6 +910,9 @@ public:
   /// Whether the last render's far field was one channel (FarFieldSharedColor: its lights
   /// share a colour); false without a far field.
   vtkGetMacro(FarFieldSharedColorUsed, bool);
+  /// Whether the last render's far specular came from directional bins
+  /// (FarFieldSpecularBins, with an actor that needs them and a GPU that holds them).
+  vtkGetMacro(FarFieldSpecularBinsUsed, bool);
   /// Whether the last render reassigned lights to clusters.
   vtkGetMacro(LastAssignmentUpdated, bool);
 
@@ -994,6 +1020,7 @@ protected:
   double FarFieldGrouping = 1.0;
   bool FarFieldSharedColor = true;
   bool FarFieldOrder4Diffuse = true;
+  bool FarFieldSpecularBins = false;
   double NearFieldBudget = 8.0;
 
   int NumberOfClusteredLights = 0;
@@ -1023,6 +1050,7 @@ protected:
   int NumberOfFarFieldResolutionChoices = 0;
   vtkTypeUInt64 FarFieldTextureBytes = 0;
   bool FarFieldSharedColorUsed = false;
+  bool FarFieldSpecularBinsUsed = false;
   double LastShadingTime = 0.0;
   bool DepthPrepassUsed = false;
   int NumberOfBackfaceCulledProps = 0;
@@ -1056,7 +1084,8 @@ private:
   void SetUpCamera(vtkRenderer* ren);
   void RenderSelection(const vtkRenderState* s);
   void ReportIgnoredRendererOptions(vtkRenderer* ren);
-  // FarFieldOrder4Diffuse where the GPU has the texture units for it (else order 2, said once).
+  // FarFieldOrder4Diffuse where the GPU has the texture units for it (else order 2, said
+  // once), and FarFieldSpecularBins likewise.
   void ChooseFarDiffuseOrder(vtkOpenGLRenderWindow* rw, vtkClusteredLightingAssignerInputs& inputs);
   // Sets each floating-point option that is NaN (vtkSetClampMacro stores NaN as given)
   // back to its default, with a warning, before a frame reads them.

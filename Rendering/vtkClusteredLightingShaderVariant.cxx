@@ -41,6 +41,7 @@ bool vtkClusteredLightingShaderVariant::SameGlobalPart(
   return this->Enabled == o.Enabled && this->Clustered == o.Clustered && this->Spot == o.Spot &&
     this->Window == o.Window && this->Explicit == o.Explicit && this->FarField == o.FarField &&
     this->FarFieldOneChannel == o.FarFieldOneChannel && this->FarFieldOrder4 == o.FarFieldOrder4 &&
+    this->FarFieldSpecularBins == o.FarFieldSpecularBins &&
     this->PhongExactFarSums == o.PhongExactFarSums && this->PbrExactFarSums == o.PbrExactFarSums &&
     this->FarSumBlocks == o.FarSumBlocks && this->LinearSlices == o.LinearSlices &&
     this->MasterTexels == o.MasterTexels && this->DebugView == o.DebugView;
@@ -68,6 +69,10 @@ std::set<std::string> vtkClusteredLightingShaderVariant::GetFlags() const
       if (this->FarFieldOrder4)
       {
         f.insert("FAR_ORDER4");
+      }
+      if (this->FarFieldSpecularBins && this->Specular && !this->PBR)
+      {
+        f.insert("FAR_SPECULAR_BINS");
       }
       if (this->PBR ? this->PbrExactFarSums : this->PhongExactFarSums)
       {

@@ -45,8 +45,9 @@ public:
   bool Window = false;   ///< windowed falloff (FALLOFF_WINDOWED)
   bool Explicit = false; ///< some light has an explicit radius (its model's range)
   bool FarField = false; ///< lights have far parts: window their near parts, add the far field
-  bool FarFieldOneChannel = false; ///< the far-field lights share a colour: 5 textures, not 14
-  bool FarFieldOrder4 = false;     ///< the far diffuse to order 4 (FarFieldOrder4Diffuse)
+  bool FarFieldOneChannel = false;   ///< the far-field lights share a colour: 5 textures, not 14
+  bool FarFieldOrder4 = false;       ///< the far diffuse to order 4 (FarFieldOrder4Diffuse)
+  bool FarFieldSpecularBins = false; ///< the far specular from bins (FarFieldSpecularBins)
   /// the far parts may be summed exactly (FarFieldTolerance) for Phong actors (up to
   /// FarFieldExactSumLimit lights) and for PBR actors: FAR_EXACT_SUMS
   bool PhongExactFarSums = false;

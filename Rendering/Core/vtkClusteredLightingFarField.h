@@ -67,6 +67,7 @@
 #ifndef vtkClusteredLightingFarField_h
 #define vtkClusteredLightingFarField_h
 
+#include "vtkClusteredLightingFarSpecularBins.h"
 #include "vtkClusteredLightingLights.h"
 #include "vtkClusteredLightingLobeProjection.h"
 
@@ -225,8 +226,11 @@ struct FarFieldOptions
   std::int64_t TargetNodes = 32768; ///< nodes over the region (the grid's resolution)
   double Grouping = 1.0;     ///< light-tree aggregation: extent / distance below it (0: exact)
   bool Order4Diffuse = true; ///< the diffuse kernel to order 4 (ApplyFarDiffuse), else 2
-  double NearBudget = 8.0;   ///< lights per point the near field may evaluate, on average
-  bool SharedColor = true;   ///< one channel when the far lights share a colour (see below)
+  /// The Phong far specular of powers from FarSpecularBinsLeastPower on from directional
+  /// bins (vtkClusteredLightingFarSpecularBins.h), else from the moments alone.
+  bool SpecularBins = false;
+  double NearBudget = 8.0; ///< lights per point the near field may evaluate, on average
+  bool SharedColor = true; ///< one channel when the far lights share a colour (see below)
   /// Far light packed lights may put between the grid's nodes before their near radii
   /// are raised (RaiseUnresolvedNearRadii), in the units of the cutoff (1 is white on a
   /// white diffuse surface): 16 8-bit steps.
@@ -247,6 +251,7 @@ struct FarFieldPlan
   std::size_t NumberOfFarFieldLights = 0;
   double Grouping = 1.0;           ///< FarFieldOptions::Grouping
   bool Order4Diffuse = true;       ///< FarFieldOptions::Order4Diffuse
+  bool SpecularBins = false;       ///< FarFieldOptions::SpecularBins
   double NearLightsPerPoint = 0.0; ///< estimated mean near lights per point of the region
   /// Near radii raised by RaiseBrightNearRadii and RaiseUnresolvedNearRadii, and of those
   /// the packed lights' (RaiseUnresolvedNearRadii).
@@ -692,6 +697,7 @@ inline FarFieldPlan PlanFarField(std::vector<PreparedLight>& lights, glm::dvec3 
   const double smallest = std::max(options.CellsPerRadius, 1.0) * plan.Grid.Spacing;
   plan.Grouping = std::max(options.Grouping, 0.0);
   plan.Order4Diffuse = options.Order4Diffuse;
+  plan.SpecularBins = options.SpecularBins;
   plan.Active = true;
 
   // The near field's budget: sum_j min(rc_j, max(smallest, R))^3 <= budget, R by bisection
@@ -940,12 +946,13 @@ inline std::vector<double> ComputeFarFieldMomentsExact(const FarFieldGrid& grid,
   return m;
 }
 
-/// Trilinear interpolation of the node moments (FarFieldFloatsPerNode each) at p (clamped
-/// to the grid), as the shader's texture reads do.
-inline std::array<double, FarFieldFloatsPerNode> InterpolateFarMoments(
-  const FarFieldGrid& grid, const std::vector<double>& values, const glm::dvec3& p)
+/// Trilinear interpolation of node values (`floats` per node, double or float) at p
+/// (clamped to the grid), as the shader's texture reads do, into out[0, floats).
+template <typename T>
+inline void InterpolateNodeValues(const FarFieldGrid& grid, const std::vector<T>& values,
+  std::size_t floats, const glm::dvec3& p, double* out)
 {
-  std::array<double, FarFieldFloatsPerNode> out{};
+  std::fill(out, out + floats, 0.0);
   const glm::dvec3 u = (p - grid.Origin) / grid.Spacing;
   int base[3];
   double t[3];
@@ -966,13 +973,29 @@ inline std::array<double, FarFieldFloatsPerNode> InterpolateFarMoments(
     const int ii = std::min(base[0] + di, grid.Dims[0] - 1);
     const int jj = std::min(base[1] + dj, grid.Dims[1] - 1);
     const int kk = std::min(base[2] + dk, grid.Dims[2] - 1);
-    const double* m =
-      &values[static_cast<std::size_t>(grid.NodeIndex(ii, jj, kk)) * FarFieldFloatsPerNode];
-    for (int q = 0; q < FarFieldFloatsPerNode; ++q)
+    const T* m = &values[static_cast<std::size_t>(grid.NodeIndex(ii, jj, kk)) * floats];
+    for (std::size_t q = 0; q < floats; ++q)
     {
       out[q] += w * m[q];
     }
   }
+}
+
+/// The node moments (FarFieldFloatsPerNode each) interpolated at p (InterpolateNodeValues).
+inline std::array<double, FarFieldFloatsPerNode> InterpolateFarMoments(
+  const FarFieldGrid& grid, const std::vector<double>& values, const glm::dvec3& p)
+{
+  std::array<double, FarFieldFloatsPerNode> out{};
+  InterpolateNodeValues(grid, values, out.size(), p, out.data());
+  return out;
+}
+
+/// The far specular's bins (FarSpecularFloatsPerNode per node) interpolated at p.
+inline std::array<double, FarSpecularFloatsPerNode> InterpolateFarSpecularBins(
+  const FarFieldGrid& grid, const std::vector<float>& bins, const glm::dvec3& p)
+{
+  std::array<double, FarSpecularFloatsPerNode> out{};
+  InterpolateNodeValues(grid, bins, out.size(), p, out.data());
   return out;
 }
 
@@ -1193,6 +1216,18 @@ inline bool ChooseFarDiffuseOrder4(bool asked, int fragmentTextureUnits)
   return asked && fragmentTextureUnits >= FarFieldOrder4TextureUnits;
 }
 
+/// Texture units a fragment shader needs with the far specular's bins (one texture more,
+/// vtkClusteredLightingFarSpecularBins.h), at either order of the far diffuse (order 2
+/// reads 7 moment textures fewer).
+inline int GetFarSpecularBinsTextureUnits(bool order4)
+{
+  return (order4 ? FarFieldOrder4TextureUnits : FarFieldOrder4TextureUnits - 7) + 1;
+}
+inline bool ChooseFarSpecularBins(bool asked, int fragmentTextureUnits, bool order4)
+{
+  return asked && fragmentTextureUnits >= GetFarSpecularBinsTextureUnits(order4);
+}
+
 /// Diffuse far irradiance (per unit colour, per channel) for normal N (ApplyFarDiffuse).
 inline glm::dvec3 EvaluateFarDiffuse(
   const std::array<double, FarFieldFloatsPerNode>& m, const glm::dvec3& N, bool order4 = true)
@@ -1253,14 +1288,27 @@ inline double ApplyFarLobe(const double* m, const glm::dvec3& N, const glm::dvec
   return std::min(std::max(estimate, lower), upper);
 }
 
-/// Phong far specular (per channel) for unit normal N, mirrored view R and power n.
+/**
+ * Phong far specular (per channel) for unit normal N, mirrored view R and power n. With
+ * `bins` (FarSpecularFloatsPerNode at the point, vtkClusteredLightingFarSpecularBins.h) and
+ * a power of at least FarSpecularBinsLeastPower, the bins' estimate clamped into the
+ * lobe's interval instead of ApplyFarLobe's (mirrors the shader's FAR_SPECULAR_BINS).
+ */
 inline glm::dvec3 EvaluateFarSpecular(const std::array<double, FarFieldFloatsPerNode>& m,
-  const glm::dvec3& N, const glm::dvec3& R, double n, bool order4 = true)
+  const glm::dvec3& N, const glm::dvec3& R, double n, bool order4 = true,
+  const double* bins = nullptr)
 {
-  return glm::dvec3(ApplyFarLobe(&m[0], N, R, n, nullptr, nullptr, order4),
-    ApplyFarLobe(&m[FarFieldMomentsPerChannel], N, R, n, nullptr, nullptr, order4),
-    ApplyFarLobe(
-      &m[std::size_t{ 2 } * FarFieldMomentsPerChannel], N, R, n, nullptr, nullptr, order4));
+  glm::dvec3 out, lower, upper;
+  for (int c = 0; c < 3; ++c)
+  {
+    out[c] = ApplyFarLobe(&m[static_cast<std::size_t>(c) * FarFieldMomentsPerChannel], N, R, n,
+      &lower[c], &upper[c], order4);
+  }
+  if (bins && n >= FarSpecularBinsLeastPower)
+  {
+    out = glm::clamp(EvaluateFarSpecularBins(bins, N, R, n), lower, upper);
+  }
+  return out;
 }
 
 /**

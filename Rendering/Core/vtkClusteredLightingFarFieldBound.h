@@ -40,6 +40,13 @@
  *     product, as it is wherever the far light is not faint), not sqrt(d). Until
  *     2026-11-28 the bound took sqrt(d), which made it 2 to 5 times larger on surfaces
  *     (docs/far-field.md, "The stated bound made tighter").
+ *  5. The far specular's bins (FarFieldBuildInputs::SpecularBins, powers from
+ *     FarSpecularBinsLeastPower on; vtkClusteredLightingFarSpecularBins.h). Their estimate
+ *     is not linear in what the nodes hold, so it gets no bound of its own: the bins are
+ *     interpolated at the point as the build and the shader have them (every corner's
+ *     sources binned, a group at its centroid), and the bound of the moments' estimate
+ *     (terms 1 to 3) grows by the distance between the two estimates, both clamped, at the
+ *     point: the triangle inequality, exactly computed.
  *  4. Single precision: a relative 1e-3 of the far light (1.25 (kd + ks) sum g), which
  *     covers the node sums (up to 16,000 sources at 2^-24 each), the textures and the
  *     shader's arithmetic with float filtering weights. GPUs that filter with 8-bit
@@ -86,6 +93,7 @@ struct FarFieldBuildInputs
   const FarFieldLightTree* Tree = nullptr;
   double Grouping = 0.0;
   bool Order4Diffuse = true; ///< the diffuse's order the shading takes (FarFieldPlan)
+  bool SpecularBins = false; ///< whether the shading's far specular takes the bins
 };
 
 namespace Detail
@@ -235,6 +243,7 @@ inline void ComputeFarFieldErrorBounds(const FarFieldShadingPoint* points, int c
     double Weight;
     const std::vector<Source>* List;
     glm::dvec3 BlockCenter; ///< where the build weighed its groups' spread
+    glm::dvec3 Lo, Hi;      ///< the block's box
   };
   FarFieldBoundCache local;
   FarFieldBoundCache& lists = cache ? *cache : local;
@@ -272,7 +281,7 @@ inline void ComputeFarFieldErrorBounds(const FarFieldShadingPoint* points, int c
         });
       it = lists.Lists.emplace(key, std::move(sources)).first;
     }
-    corners.push_back(Corner{ g.NodePosition(i, j, k), w, &it->second, 0.5 * (lo + hi) });
+    corners.push_back(Corner{ g.NodePosition(i, j, k), w, &it->second, 0.5 * (lo + hi), lo, hi });
   }
 
   // Atoms: the topmost groups taken whole at some corner; lights under none are alone.
@@ -345,6 +354,8 @@ inline void ComputeFarFieldErrorBounds(const FarFieldShadingPoint* points, int c
       }
     }
   };
+  // The bins as the shader interpolates them (no spread terms: the build adds none).
+  std::vector<double> bins(in.SpecularBins ? FarSpecularFloatsPerNode : 0, 0.0);
   for (const Corner& c : corners)
   {
     for (const Source& src : *c.List)
@@ -403,6 +414,38 @@ inline void ComputeFarFieldErrorBounds(const FarFieldShadingPoint* points, int c
         }
         color = light.Color;
         key = atomOfLight(src.Light);
+      }
+      if (in.SpecularBins && src.Group >= 0)
+      {
+        // The parts the build's bins take (SplitGroupForFarSpecularBins), whole.
+        SplitGroupForFarSpecularBins(
+          tree, src.Group, c.Lo, c.Hi, in.Grouping, stack,
+          [&](int part)
+          {
+            const FarFieldLightTree::Node& p = tree.Nodes[static_cast<std::size_t>(part)];
+            const glm::dvec3 v = p.Centroid - c.Position;
+            const double d = glm::length(v);
+            if (d > 0.0)
+            {
+              AddToFarSpecularBins(c.Weight * p.Color, EvaluateAttenuation(d, p.Attenuation), v / d,
+                bins.data(), std::max(0.0, 1.0 - GetFarSpecularGroupSpread(p) / (d * d)));
+            }
+          },
+          [&](int light)
+          {
+            const PreparedLight& l = lights[static_cast<std::size_t>(light)];
+            const glm::dvec3 v = l.PositionWC - c.Position;
+            const double d = glm::length(v);
+            if (d > 0.0)
+            {
+              AddToFarSpecularBins(
+                c.Weight * l.Color, EvaluateAttenuation(d, l.Attenuation), v / d, bins.data());
+            }
+          });
+      }
+      else if (in.SpecularBins)
+      {
+        AddToFarSpecularBins(c.Weight * color, far, u, bins.data());
       }
       double* o = &interpolated[stride * slotIndex(key)];
       for (std::size_t k = 0; k < n; ++k, o += std::size_t{ 3 } * Q)
@@ -467,7 +510,7 @@ inline void ComputeFarFieldErrorBounds(const FarFieldShadingPoint* points, int c
     glm::dvec3& bound = bounds[k];
     for (int ch = 0; ch < 3; ++ch)
     {
-      double delta[Q] = {}, total[Q] = {};
+      double delta[Q] = {}, total[Q] = {}, grid[Q] = {};
       for (int q = 0; q < Q; ++q)
       {
         delta[q] = edge[std::size_t{ 3 } * Q * k + static_cast<std::size_t>(ch * Q + q)];
@@ -480,6 +523,7 @@ inline void ComputeFarFieldErrorBounds(const FarFieldShadingPoint* points, int c
             stride * a + std::size_t{ 3 } * Q * k + static_cast<std::size_t>(ch * Q + q);
           delta[q] += std::abs(interpolated[at] - exact[at]);
           total[q] += exact[at];
+          grid[q] += interpolated[at];
         }
       }
       const double dS = delta[0], dVN = delta[1], dNN = delta[2], dQd = delta[3];
@@ -533,9 +577,24 @@ inline void ComputeFarFieldErrorBounds(const FarFieldShadingPoint* points, int c
         clamped(angularZonal[k][ch], dQz, total[6], low, high, 0.0, lobeShift);
       const double projectedBound =
         clamped(angularProjected[k][ch], dQp, total[7], low, high, 0.0, lobeShift);
-      const double specular = blendHigh <= 0.0
+      double specular = blendHigh <= 0.0
         ? zonalBound
         : (blendLow >= 1.0 ? projectedBound : std::max(zonalBound, projectedBound));
+      if (in.SpecularBins && p.Ks[ch] > 0.0 && p.Power >= FarSpecularBinsLeastPower)
+      {
+        // Term 5: ApplyFarLobe's estimate from the grid's moments (the quantities are
+        // linear in them), against the bins', both clamped into the lobe's interval.
+        double dLow = 0.0, dHigh = 0.0, sLow = 0.0, sHigh = 0.0;
+        ComputeMomentInterval(grid[0], grid[1], grid[2], false, 1.0, dLow, dHigh);
+        const double D = std::min(std::max(grid[3], dLow), dHigh);
+        ComputeMomentInterval(grid[0], grid[4], grid[5], true, p.Power, sLow, sHigh);
+        const double zonal = std::min(std::max(grid[6], sLow), sHigh);
+        const double a = ComputeLobeBlend(D, grid[1], grid[2]);
+        const double moments = std::min(std::max(zonal + a * (grid[7] - zonal), sLow), sHigh);
+        const double fromBins = std::min(
+          std::max(EvaluateFarSpecularBins(bins.data(), p.N, p.R, p.Power)[ch], sLow), sHigh);
+        specular += std::abs(fromBins - moments);
+      }
       const double precision =
         1e-3 * 1.25 * (p.Kd[ch] + p.Ks[ch]) * std::max(exactS[ch], farLightAtCorners[ch]);
       bound[ch] = p.Kd[ch] * diffuse + p.Ks[ch] * specular + precision;

@@ -192,7 +192,7 @@ FarFieldResolutionChoice ChooseFarFieldResolution(const std::vector<PreparedLigh
     const std::vector<double> radii = GetFarFieldNearRadii(planned);
     const FarFieldLightTree tree = BuildFarFieldLightTree(planned, radii);
     const FarFieldBuildInputs in{ &plan.Grid, &planned, &radii, &tree, plan.Grouping,
-      plan.Order4Diffuse };
+      plan.Order4Diffuse, plan.SpecularBins };
     const double bound = summarize(in).Max;
     if (++choice.Summaries == 1 || bound < choice.Bound)
     {

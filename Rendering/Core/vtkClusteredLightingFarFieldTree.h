@@ -54,6 +54,7 @@
 #define vtkClusteredLightingFarFieldTree_h
 
 #include "vtkClusteredLightingFarField.h"
+#include "vtkClusteredLightingFarSpecularBins.h"
 #include "vtkClusteredLightingSpotBounds.h"
 
 #include <algorithm> // for std::nth_element
@@ -257,6 +258,18 @@ inline bool AcceptFarFieldGroup(
 }
 
 /**
+ * A group's spread of directions for the far specular's bins
+ * (vtkClusteredLightingFarSpecularBins.h): seen from distance r, its lights' unit
+ * directions average to about (1 - tr(P Sigma P) / (2 r^2)) u (P the projection across
+ * u, Sigma Node::Spread), taken as isotropic, (1 - tr(Sigma) / (3 r^2)) u: a bin's light
+ * from a group is less concentrated than one light at its centroid. Returns tr(Sigma) / 3.
+ */
+inline double GetFarSpecularGroupSpread(const FarFieldLightTree::Node& n)
+{
+  return (n.Spread[0][0] + n.Spread[1][1] + n.Spread[2][2]) / 3.0;
+}
+
+/**
  * What one light of a group's summed colour at its centroid misses of the group's far
  * light at the point x: the second-order term of each moment, per unit colour, in the
  * order of ComputeFarFieldTerms (S, V, T as xx, yy, xy, xz, yz, then F). A moment h of a
@@ -431,6 +444,54 @@ void CollectFarFieldSources(const FarFieldLightTree& tree, const std::vector<Pre
   }
 }
 
+/**
+ * The far specular's bins (vtkClusteredLightingFarSpecularBins.h) put a group's light in
+ * the one bin of its centroid's direction: a group as wide as its distance (the moments'
+ * grouping 1) spans 57 degrees, two bins. So they take a group whole only where its
+ * extent is below this fraction of its distance, and its parts otherwise
+ * (SplitGroupForFarSpecularBins): at 65,536 lights, 3 of 60,000 channel values more than 2
+ * steps off with the groups whole, none with 0.5 (docs/far-field.md).
+ */
+constexpr double FarSpecularBinsGrouping = 0.5;
+
+/**
+ * The sources the far specular's bins take for tree node `node`, a group the moments take
+ * whole for the box [lo, hi] (CollectFarFieldSources): onGroup(node index) for the group,
+ * or its parts, each taken whole where AcceptFarFieldGroup accepts it at the smaller of
+ * `grouping` and FarSpecularBinsGrouping, and onLight(light index) for the lights of
+ * leaves it opens (beyond their near radii there, as the group is: taken whole).
+ */
+template <typename OnGroup, typename OnLight>
+void SplitGroupForFarSpecularBins(const FarFieldLightTree& tree, int node, const glm::dvec3& lo,
+  const glm::dvec3& hi, double grouping, std::vector<int>& stack, OnGroup onGroup, OnLight onLight)
+{
+  const double g = std::min(grouping, FarSpecularBinsGrouping);
+  stack.clear();
+  stack.push_back(node);
+  while (!stack.empty())
+  {
+    const int index = stack.back();
+    stack.pop_back();
+    const FarFieldLightTree::Node& n = tree.Nodes[static_cast<std::size_t>(index)];
+    if (AcceptFarFieldGroup(n, lo, hi, g))
+    {
+      onGroup(index);
+    }
+    else if (n.Left < 0)
+    {
+      for (int q = n.First; q < n.First + n.Count; ++q)
+      {
+        onLight(tree.Order[static_cast<std::size_t>(q)]);
+      }
+    }
+    else
+    {
+      stack.push_back(n.Left);
+      stack.push_back(n.Right);
+    }
+  }
+}
+
 /// Nodes per axis of a block of the builder (ComputeFarFieldMoments).
 constexpr int FarFieldBlockSize = 4;
 constexpr int FarFieldBlockNodes = FarFieldBlockSize * FarFieldBlockSize * FarFieldBlockSize;
@@ -471,6 +532,7 @@ namespace Detail
 struct FarFieldSource
 {
   float X, Y, Z, R, G, B, A0, A1, A2, InverseNearRadius;
+  float Spread; ///< a group's GetFarSpecularGroupSpread (0 for a light)
 };
 
 /// Unrolls the loop that follows whole. The loops over a node's moments must be: GCC
@@ -486,17 +548,19 @@ struct FarFieldSource
 /// Sources of one block, structure of arrays, positions relative to the block's centre.
 struct FarFieldSources
 {
-  std::vector<float> X, Y, Z, R, G, B, A0, A1, A2, InverseNearRadius;
+  std::vector<float> X, Y, Z, R, G, B, A0, A1, A2, InverseNearRadius, Spread;
   void Clear()
   {
-    for (std::vector<float>* v : { &X, &Y, &Z, &R, &G, &B, &A0, &A1, &A2, &InverseNearRadius })
+    for (std::vector<float>* v :
+      { &X, &Y, &Z, &R, &G, &B, &A0, &A1, &A2, &InverseNearRadius, &Spread })
     {
       v->clear();
     }
   }
   void Add(const glm::dvec3& relative, const glm::dvec3& color, const glm::dvec3& att,
-    double inverseNearRadius)
+    double inverseNearRadius, double spread = 0.0)
   {
+    Spread.push_back(static_cast<float>(spread));
     X.push_back(static_cast<float>(relative.x));
     Y.push_back(static_cast<float>(relative.y));
     Z.push_back(static_cast<float>(relative.z));
@@ -512,7 +576,7 @@ struct FarFieldSources
   FarFieldSource Get(std::size_t q) const
   {
     return FarFieldSource{ X[q], Y[q], Z[q], R[q], G[q], B[q], A0[q], A1[q], A2[q],
-      InverseNearRadius[q] };
+      InverseNearRadius[q], Spread[q] };
   }
 };
 
@@ -680,6 +744,27 @@ struct FarFieldSpotSources
   std::size_t Size() const { return Base.Size(); }
 };
 
+/// A spot light's cone in the vectorized sums: unit axis, cos(cone) and whole exponent.
+struct VectorSpot
+{
+  float AX, AY, AZ, CosCone, Exponent;
+};
+
+/// VTK's spot factor at offset (dx, dy, dz) from a node to spot light s (see
+/// AccumulateSpotBlock). Branch-free.
+inline float ComputeVectorSpotFactor(float dx, float dy, float dz, const VectorSpot& s)
+{
+  const float d = std::sqrt(dx * dx + dy * dy + dz * dz);
+  const float c = -(dx * s.AX + dy * s.AY + dz * s.AZ) / (d + 1e-30f);
+  const float cc = std::min(c, 1.0f);
+  float f = 1.0f;
+  for (int k = 0; k < FarFieldVectorSpotExponent; ++k)
+  {
+    f *= static_cast<float>(k) < s.Exponent ? cc : 1.0f;
+  }
+  return c >= s.CosCone ? f : 0.0f;
+}
+
 /**
  * Adds spot lights into the moments of the block's nodes, source by source over the nodes
  * (vectorized across them): a source's terms (ComputeFarFieldTerms) times VTK's spot
@@ -697,22 +782,14 @@ inline void AccumulateSpotBlock(const FarFieldSpotSources& s, const float* px, c
   for (std::size_t q = 0; q < s.Size(); ++q)
   {
     const FarFieldSource src = s.Base.Get(q);
-    const float ax = s.AX[q], ay = s.AY[q], az = s.AZ[q], cone = s.CosCone[q], e = s.Exponent[q];
+    const VectorSpot spot{ s.AX[q], s.AY[q], s.AZ[q], s.CosCone[q], s.Exponent[q] };
     for (int i = 0; i < FarFieldBlockNodes; ++i)
     {
       const float dx = src.X - px[i], dy = src.Y - py[i], dz = src.Z - pz[i];
       float t[M];
       ComputeFarFieldTerms<Windowed, Terms>(
         dx, dy, dz, src.A0, src.A1, src.A2, src.InverseNearRadius, t);
-      const float d = std::sqrt(dx * dx + dy * dy + dz * dz);
-      const float c = -(dx * ax + dy * ay + dz * az) / (d + 1e-30f);
-      const float cc = std::min(c, 1.0f);
-      float f = 1.0f;
-      for (int k = 0; k < FarFieldVectorSpotExponent; ++k)
-      {
-        f *= static_cast<float>(k) < e ? cc : 1.0f;
-      }
-      f = c >= cone ? f : 0.0f;
+      const float f = ComputeVectorSpotFactor(dx, dy, dz, spot);
       VTK_CLUSTERED_LIGHTING_UNROLL
       for (int m = 0; m < Terms; ++m)
       {
@@ -728,13 +805,90 @@ inline void AccumulateSpotBlock(const FarFieldSpotSources& s, const float* px, c
   }
 }
 
+/**
+ * Adds sources (spot lights with `spot`, else plain sources) into the far specular's bins
+ * of the block's nodes (vtkClusteredLightingFarSpecularBins.h): `bins` holds
+ * FarSpecularFloatsPerNode rows of FarFieldBlockNodes floats. Source by source: each node's
+ * far part, direction and bin in a loop that vectorizes, then, where every node of the
+ * block puts the source in one bin (the rule for a source not too near the block), the
+ * bin's 6 rows added to in a loop that vectorizes too, else node by node.
+ */
+template <bool Windowed>
+inline void AccumulateSpecularBinsBlock(const FarFieldSources& s, const FarFieldSpotSources* spot,
+  const float* px, const float* py, const float* pz, float* bins, float* scratch)
+{
+  constexpr std::ptrdiff_t L = FarFieldBlockNodes;
+  // Per node: g, the direction sum's x, y, z, and the bin (as a float: exact to 2^24).
+  // On the heap (`scratch`, 5 L floats), as the builder's other block arrays.
+  float* g = scratch;
+  float* gx = scratch + L;
+  float* gy = scratch + 2 * L;
+  float* gz = scratch + 3 * L;
+  float* bin = scratch + 4 * L;
+  for (std::size_t q = 0; q < s.Size(); ++q)
+  {
+    const FarFieldSource src = s.Get(q);
+    for (int i = 0; i < L; ++i)
+    {
+      const float dx = src.X - px[i], dy = src.Y - py[i], dz = src.Z - pz[i];
+      float t[FarFieldMomentsPerChannel];
+      ComputeFarFieldTerms<Windowed, FarFieldOrder2Moments>(
+        dx, dy, dz, src.A0, src.A1, src.A2, src.InverseNearRadius, t);
+      const float f = spot ? ComputeVectorSpotFactor(dx, dy, dz,
+                               VectorSpot{ spot->AX[q], spot->AY[q], spot->AZ[q], spot->CosCone[q],
+                                 spot->Exponent[q] })
+                           : 1.0f;
+      // A group's directions spread about its centroid's: V shorter, as the bound has it.
+      const float k =
+        f * std::max(0.0f, 1.0f - src.Spread / (dx * dx + dy * dy + dz * dz + 1e-30f));
+      g[i] = f * t[0];
+      gx[i] = k * t[1];
+      gy[i] = k * t[2];
+      gz[i] = k * t[3];
+      bin[i] = static_cast<float>(ComputeFarSpecularBin(dx, dy, dz));
+    }
+    int same = 1;
+    for (int i = 0; i < L; ++i)
+    {
+      same &= bin[i] == bin[0] ? 1 : 0;
+    }
+    const float sum = src.R + src.G + src.B;
+    auto add = [&](float* row, int i)
+    {
+      row[i] += src.R * g[i];
+      row[L + i] += src.G * g[i];
+      row[2 * L + i] += src.B * g[i];
+      row[3 * L + i] += sum * gx[i];
+      row[4 * L + i] += sum * gy[i];
+      row[5 * L + i] += sum * gz[i];
+    };
+    auto rowOf = [&](int i)
+    { return bins + static_cast<std::ptrdiff_t>(bin[i]) * FarSpecularBinFloats * L; };
+    if (same)
+    {
+      float* row = rowOf(0);
+      for (int i = 0; i < L; ++i)
+      {
+        add(row, i);
+      }
+    }
+    else
+    {
+      for (int i = 0; i < L; ++i)
+      {
+        add(rowOf(i), i);
+      }
+    }
+  }
+}
+
 /// ComputeFarFieldMoments for Channels 3 (every channel) or 1 (channel `channel` only),
 /// Terms FarFieldMomentsPerChannel (order 4) or FarFieldOrder2Moments (F left 0).
 template <int Lanes, int Channels, int Terms>
 std::int64_t ComputeFarFieldMomentsOf(const FarFieldGrid& grid,
   const std::vector<PreparedLight>& lights, const std::vector<double>& nearRadii,
   const FarFieldLightTree& tree, double grouping, std::int64_t b0, std::int64_t b1,
-  std::vector<double>& moments, int channel)
+  std::vector<double>& moments, int channel, std::vector<float>* bins)
 {
   constexpr int Rows = Channels * FarFieldMomentsPerChannel;
   // Where the rows go in a node's moments (channel-major), and the sources' colours.
@@ -743,7 +897,8 @@ std::int64_t ComputeFarFieldMomentsOf(const FarFieldGrid& grid,
   { return Channels == 1 ? glm::dvec3(c[channel], 0.0, 0.0) : c; };
   const std::array<int, 3> blocks = GetFarFieldBlocks(grid);
   Detail::FarFieldSources whole, windowed;
-  std::vector<int> stack;
+  Detail::FarFieldSources binWhole; // the bins' whole sources (SplitGroupForFarSpecularBins)
+  std::vector<int> stack, binStack;
   float px[FarFieldBlockNodes], py[FarFieldBlockNodes], pz[FarFieldBlockNodes];
   float acc[Rows][FarFieldBlockNodes];
   // The groups' spread terms of a block. On the heap: ASan's fake stack does not keep the
@@ -751,6 +906,10 @@ std::int64_t ComputeFarFieldMomentsOf(const FarFieldGrid& grid,
   std::vector<double> spread(FarFieldFloatsPerNode);
   Detail::FarFieldSpotSources spotsWhole, spotsWindowed; // vectorized spot lights
   std::vector<int> spots; // the other spot lights, summed apart in double precision
+  // The far specular's bins of a block (on the heap, as `spread`).
+  std::vector<float> binRows(
+    bins ? std::size_t{ FarSpecularFloatsPerNode } * FarFieldBlockNodes : 0);
+  std::vector<float> binScratch(bins ? std::size_t{ 5 } * FarFieldBlockNodes : 0);
   std::int64_t pairs = 0;
   for (std::int64_t b = b0; b < b1; ++b)
   {
@@ -777,6 +936,7 @@ std::int64_t ComputeFarFieldMomentsOf(const FarFieldGrid& grid,
     }
     whole.Clear();
     windowed.Clear();
+    binWhole.Clear();
     spotsWhole.Clear();
     spotsWindowed.Clear();
     spots.clear();
@@ -787,6 +947,22 @@ std::int64_t ComputeFarFieldMomentsOf(const FarFieldGrid& grid,
       {
         const FarFieldLightTree::Node& n = tree.Nodes[static_cast<std::size_t>(node)];
         whole.Add(n.Centroid - center, colorOf(n.Color), n.Attenuation, 0.0);
+        if (bins)
+        {
+          SplitGroupForFarSpecularBins(
+            tree, node, lo, hi, grouping, binStack,
+            [&](int part)
+            {
+              const FarFieldLightTree::Node& p = tree.Nodes[static_cast<std::size_t>(part)];
+              binWhole.Add(p.Centroid - center, colorOf(p.Color), p.Attenuation, 0.0,
+                GetFarSpecularGroupSpread(p));
+            },
+            [&](int light)
+            {
+              const PreparedLight& l = lights[static_cast<std::size_t>(light)];
+              binWhole.Add(l.PositionWC - center, colorOf(l.Color), l.Attenuation, 0.0);
+            });
+        }
         double dm[FarFieldMomentsPerChannel];
         ComputeGroupSpreadTerms(n, center, dm, Terms > FarFieldOrder2Moments);
         for (int c = 0; c < 3; ++c)
@@ -817,6 +993,10 @@ std::int64_t ComputeFarFieldMomentsOf(const FarFieldGrid& grid,
         (isWindowed ? windowed : whole)
           .Add(l.PositionWC - center, colorOf(l.Color), l.Attenuation,
             isWindowed ? 1.0 / nearRadii[static_cast<std::size_t>(light)] : 0.0);
+        if (bins && !isWindowed)
+        {
+          binWhole.Add(l.PositionWC - center, colorOf(l.Color), l.Attenuation, 0.0);
+        }
       });
     for (auto& row : acc)
     {
@@ -826,6 +1006,17 @@ std::int64_t ComputeFarFieldMomentsOf(const FarFieldGrid& grid,
     AccumulateBlock<true, Lanes, Channels, Terms>(windowed, px, py, pz, acc);
     AccumulateSpotBlock<false, Channels, Terms>(spotsWhole, px, py, pz, acc);
     AccumulateSpotBlock<true, Channels, Terms>(spotsWindowed, px, py, pz, acc);
+    if (bins)
+    {
+      std::fill(binRows.begin(), binRows.end(), 0.0f);
+      float* rows = binRows.data();
+      float* scratch = binScratch.data();
+      AccumulateSpecularBinsBlock<false>(binWhole, nullptr, px, py, pz, rows, scratch);
+      AccumulateSpecularBinsBlock<true>(windowed, nullptr, px, py, pz, rows, scratch);
+      AccumulateSpecularBinsBlock<false>(spotsWhole.Base, &spotsWhole, px, py, pz, rows, scratch);
+      AccumulateSpecularBinsBlock<true>(
+        spotsWindowed.Base, &spotsWindowed, px, py, pz, rows, scratch);
+    }
     pairs += static_cast<std::int64_t>(whole.Size() + windowed.Size() + spotsWhole.Size() +
                spotsWindowed.Size() + spots.size()) *
       ni * nj * nk;
@@ -843,6 +1034,25 @@ std::int64_t ComputeFarFieldMomentsOf(const FarFieldGrid& grid,
             const int at = first + q;
             o[at] = acc[q][n] + spread[static_cast<std::size_t>(at)];
           }
+          const std::int64_t index = grid.NodeIndex(i0 + di, j0 + dj, k0 + dk);
+          float* ob =
+            bins ? &(*bins)[static_cast<std::size_t>(index) * FarSpecularFloatsPerNode] : nullptr;
+          for (int b = 0; ob && b < FarSpecularBins; ++b)
+          {
+            // A one-channel build's sources carry `channel`'s colour in R.
+            auto row = [&](int q)
+            {
+              return binRows[static_cast<std::size_t>(b * FarSpecularBinFloats + q) *
+                  FarFieldBlockNodes +
+                static_cast<std::size_t>(n)];
+            };
+            float* o = ob + static_cast<std::ptrdiff_t>(b) * FarSpecularBinFloats;
+            for (int c = 0; c < 3; ++c)
+            {
+              o[c] = Channels == 3 ? row(c) : (c == channel ? row(0) : 0.0f);
+              o[3 + c] = row(3 + c);
+            }
+          }
           // Spot lights: ComputeFarContribution at the node itself, as the bound takes them.
           const glm::dvec3 node = grid.NodePosition(i0 + di, j0 + dj, k0 + dk);
           for (int light : spots)
@@ -853,6 +1063,14 @@ std::int64_t ComputeFarFieldMomentsOf(const FarFieldGrid& grid,
             if (ComputeFarContribution(l, nearRadii[static_cast<std::size_t>(light)], node, far, u))
             {
               const glm::dvec3 color = colorOf(l.Color);
+              if (ob)
+              {
+                const glm::dvec3 binColor = Channels == 1
+                  ? glm::dvec3(channel == 0 ? color.x : 0.0, channel == 1 ? color.x : 0.0,
+                      channel == 2 ? color.x : 0.0)
+                  : color;
+                AddToFarSpecularBins(binColor, far, u, ob);
+              }
               double t[FarFieldMomentsPerChannel];
               ComputeFarMomentTerms(1.0, u, t);
               for (int c = 0; c < Channels; ++c)
@@ -885,26 +1103,31 @@ std::int64_t ComputeFarFieldMomentsOf(const FarFieldGrid& grid,
  * are summed and written (the others are left as they are): a third of the multiply-adds,
  * for lights that share a colour (FindFarFieldSharedColor, PackFarFieldTexelsOneChannel).
  * With `order4` false the fourth moments are written as 0 and not summed (an order-2 far
- * diffuse reads none of them): half the multiply-adds.
+ * diffuse reads none of them): half the multiply-adds. With `bins` (FarSpecularFloatsPerNode
+ * per node, vtkClusteredLightingFarSpecularBins.h) the far specular's bins of the same
+ * blocks are summed too (single precision: the texture's), from the same walk
+ * (SplitGroupForFarSpecularBins: groups at most FarSpecularBinsGrouping as wide as they are
+ * far, at their centroids, no spread term).
  */
 template <int Lanes = 0>
 std::int64_t ComputeFarFieldMoments(const FarFieldGrid& grid,
   const std::vector<PreparedLight>& lights, const std::vector<double>& nearRadii,
   const FarFieldLightTree& tree, double grouping, std::int64_t b0, std::int64_t b1,
-  std::vector<double>& moments, int channel = -1, bool order4 = true)
+  std::vector<double>& moments, int channel = -1, bool order4 = true,
+  std::vector<float>* bins = nullptr)
 {
   constexpr int All = FarFieldMomentsPerChannel, Two = FarFieldOrder2Moments;
   if (channel >= 0 && channel < 3)
   {
     return order4 ? Detail::ComputeFarFieldMomentsOf<Lanes, 1, All>(
-                      grid, lights, nearRadii, tree, grouping, b0, b1, moments, channel)
+                      grid, lights, nearRadii, tree, grouping, b0, b1, moments, channel, bins)
                   : Detail::ComputeFarFieldMomentsOf<Lanes, 1, Two>(
-                      grid, lights, nearRadii, tree, grouping, b0, b1, moments, channel);
+                      grid, lights, nearRadii, tree, grouping, b0, b1, moments, channel, bins);
   }
   return order4 ? Detail::ComputeFarFieldMomentsOf<Lanes, 3, All>(
-                    grid, lights, nearRadii, tree, grouping, b0, b1, moments, 0)
+                    grid, lights, nearRadii, tree, grouping, b0, b1, moments, 0, bins)
                 : Detail::ComputeFarFieldMomentsOf<Lanes, 3, Two>(
-                    grid, lights, nearRadii, tree, grouping, b0, b1, moments, 0);
+                    grid, lights, nearRadii, tree, grouping, b0, b1, moments, 0, bins);
 }
 
 // The node sums are arithmetic bound (per node and source: a square root, two divisions
@@ -924,19 +1147,21 @@ namespace Detail
 __attribute__((target("avx2,fma"), flatten)) inline std::int64_t ComputeFarFieldMomentsAVX2(
   const FarFieldGrid& grid, const std::vector<PreparedLight>& lights,
   const std::vector<double>& nearRadii, const FarFieldLightTree& tree, double grouping,
-  std::int64_t b0, std::int64_t b1, std::vector<double>& moments, int channel, bool order4)
+  std::int64_t b0, std::int64_t b1, std::vector<double>& moments, int channel, bool order4,
+  std::vector<float>* bins)
 {
   return ComputeFarFieldMoments<0>(
-    grid, lights, nearRadii, tree, grouping, b0, b1, moments, channel, order4);
+    grid, lights, nearRadii, tree, grouping, b0, b1, moments, channel, order4, bins);
 }
 
 __attribute__((target("avx512f,avx512vl,avx512dq,avx2,fma"), flatten)) inline std::int64_t
 ComputeFarFieldMomentsAVX512(const FarFieldGrid& grid, const std::vector<PreparedLight>& lights,
   const std::vector<double>& nearRadii, const FarFieldLightTree& tree, double grouping,
-  std::int64_t b0, std::int64_t b1, std::vector<double>& moments, int channel, bool order4)
+  std::int64_t b0, std::int64_t b1, std::vector<double>& moments, int channel, bool order4,
+  std::vector<float>* bins)
 {
   return ComputeFarFieldMoments<16>(
-    grid, lights, nearRadii, tree, grouping, b0, b1, moments, channel, order4);
+    grid, lights, nearRadii, tree, grouping, b0, b1, moments, channel, order4, bins);
 }
 } // namespace Detail
 #endif
@@ -987,23 +1212,24 @@ inline const char* GetFarFieldBuildCopyName(FarFieldBuildCopy copy)
 inline std::int64_t ComputeFarFieldMomentsWith(FarFieldBuildCopy copy, const FarFieldGrid& grid,
   const std::vector<PreparedLight>& lights, const std::vector<double>& nearRadii,
   const FarFieldLightTree& tree, double grouping, std::int64_t b0, std::int64_t b1,
-  std::vector<double>& moments, int channel = -1, bool order4 = true)
+  std::vector<double>& moments, int channel = -1, bool order4 = true,
+  std::vector<float>* bins = nullptr)
 {
 #ifdef VTK_CLUSTERED_LIGHTING_VECTOR_BUILDS
   if (copy == FarFieldBuildCopy::AVX512)
   {
     return Detail::ComputeFarFieldMomentsAVX512(
-      grid, lights, nearRadii, tree, grouping, b0, b1, moments, channel, order4);
+      grid, lights, nearRadii, tree, grouping, b0, b1, moments, channel, order4, bins);
   }
   if (copy == FarFieldBuildCopy::AVX2)
   {
     return Detail::ComputeFarFieldMomentsAVX2(
-      grid, lights, nearRadii, tree, grouping, b0, b1, moments, channel, order4);
+      grid, lights, nearRadii, tree, grouping, b0, b1, moments, channel, order4, bins);
   }
 #endif
   (void)copy;
   return ComputeFarFieldMoments(
-    grid, lights, nearRadii, tree, grouping, b0, b1, moments, channel, order4);
+    grid, lights, nearRadii, tree, grouping, b0, b1, moments, channel, order4, bins);
 }
 
 /// ComputeFarFieldMoments in the widest copy this processor runs
@@ -1011,10 +1237,11 @@ inline std::int64_t ComputeFarFieldMomentsWith(FarFieldBuildCopy copy, const Far
 inline std::int64_t ComputeFarFieldMomentsForThisCPU(const FarFieldGrid& grid,
   const std::vector<PreparedLight>& lights, const std::vector<double>& nearRadii,
   const FarFieldLightTree& tree, double grouping, std::int64_t b0, std::int64_t b1,
-  std::vector<double>& moments, int channel = -1, bool order4 = true)
+  std::vector<double>& moments, int channel = -1, bool order4 = true,
+  std::vector<float>* bins = nullptr)
 {
   return ComputeFarFieldMomentsWith(GetFarFieldBuildCopyForThisCPU(), grid, lights, nearRadii, tree,
-    grouping, b0, b1, moments, channel, order4);
+    grouping, b0, b1, moments, channel, order4, bins);
 }
 
 } // namespace vtkClusteredLighting

@@ -291,6 +291,76 @@ vec3 clApplyFarLobe(vec3 N, vec3 R, float power, vec3 D, vec3 VN, vec3 NTN, vec3
     greaterThan(total, vec3(0.0)));
   return min(max(zonal + a * (projected - zonal), lower), upper);
 }
+//CL_IF(FAR_SPECULAR_BINS)
+// The far specular's bins (Rendering/Core/vtkClusteredLightingFarSpecularBins.h): per node
+// and cell of directions the far light's sum S and direction sum V, in one RGBA32F 3D
+// texture of the grid's size with the bins' slabs stacked along the grid's shallowest
+// axis (PackFarSpecularBinTexels: with a shared colour one slab per bin, (S, Vx, Vy, Vz);
+// else two, (S_r, S_g, S_b, 0) then (Vx, Vy, Vz, 0)).
+uniform sampler3D clFarSpecularBins;
+uniform int clFarSpecularAxis;    // the axis the slabs are stacked along
+uniform float clFarSpecularDepth; // the grid's nodes along it, a slab's depth
+
+// Mirrors ComputeNormalShare: the standard normal distribution's share below x.
+float clNormalShare(float x)
+{
+  float z = abs(x) * 0.70710678;
+  float t = 1.0 / (1.0 + 0.3275911 * z);
+  float poly = t *
+    (0.254829592 + t * (-0.284496736 + t * (1.421413741 + t * (-1.453152027 + t * 1.061405429))));
+  float tail = 0.5 * poly * exp(-z * z);
+  return x >= 0.0 ? 1.0 - tail : tail;
+}
+
+// Mirrors EvaluateFarSpecularBinLobe: one bin's far specular per unit of its light S.
+float clFarSpecularBinLobe(float S, vec3 V, vec3 N, vec3 R, float n)
+{
+  if (!(S > 0.0))
+  {
+    return 0.0;
+  }
+  float len = length(V);
+  float rho = min(len / S, 0.9999);
+  vec3 mu = len > 0.0 ? V / len : R;
+  float kappa = rho * (3.0 - rho * rho) / (1.0 - rho * rho);
+  float lambda = n + 1.0;
+  vec3 w = kappa * mu + lambda * R;
+  float m = length(w);
+  float kappaTerm = kappa > 1e-3 ? kappa / (1.0 - exp(-2.0 * kappa)) : 0.5 + 0.5 * kappa;
+  float mTerm = m > 1e-3 ? (1.0 - exp(-2.0 * m)) / m : 2.0 - 2.0 * m;
+  float e = exp(m - kappa - lambda) * kappaTerm * mTerm;
+  float na = m > 1e-3 ? dot(N, w) / m : 0.0;
+  float mm = max(m, 1e-3);
+  float sd = sqrt(max(1.0 - na * na, 1.0 / mm) / mm);
+  return e * clNormalShare(na / sd);
+}
+
+// Mirrors EvaluateFarSpecularBins at the grid's texture coordinates uvw, for world N and R.
+vec3 clFarSpecularFromBins(vec3 uvw, vec3 N, vec3 R, float n)
+{
+  // Within a slab: the coordinate along the axis clamped to its texel centres, so the
+  // filter never mixes two slabs.
+  float depth = clFarSpecularDepth;
+  float z = clamp(uvw[clFarSpecularAxis] * depth, 0.5, depth - 0.5);
+  vec3 c = uvw;
+  vec3 sum = vec3(0.0);
+  for (int b = 0; b < 26; ++b)
+  {
+//CL_IF(FAR_SHARED_COLOR)
+    c[clFarSpecularAxis] = (z + float(b) * depth) / (26.0 * depth);
+    vec4 t = texture(clFarSpecularBins, c);
+    sum += t.x * clFarSpecularBinLobe(t.x, t.yzw, N, R, n) * clFarFieldColor;
+//CL_ELSE
+    c[clFarSpecularAxis] = (z + float(2 * b) * depth) / (52.0 * depth);
+    vec4 s = texture(clFarSpecularBins, c);
+    c[clFarSpecularAxis] = (z + float(2 * b + 1) * depth) / (52.0 * depth);
+    vec4 v = texture(clFarSpecularBins, c);
+    sum += s.rgb * clFarSpecularBinLobe(s.r + s.g + s.b, v.xyz, N, R, n);
+//CL_ENDIF
+  }
+  return sum;
+}
+//CL_ENDIF
 //CL_ENDIF
 //CL_ENDIF
 //CL_IF(HEAT_MAP)

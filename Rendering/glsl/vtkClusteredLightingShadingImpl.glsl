@@ -105,6 +105,16 @@
   clFarSpecular = clApplyFarLobe(clNw, clWorldFromVC * clR, specularPower, clFarDiffuse, clVN,
     clNTN, clS, clVx, clVy, clVz, clTxx, clTyy, clTxy, clTxz, clTyz, clSpecularLow,
     clSpecularHigh);
+//CL_IF(FAR_SPECULAR_BINS)
+  // Powers the bins serve (FarSpecularBinsLeastPower): their estimate, clamped into the
+  // same interval (EvaluateFarSpecular).
+  if (specularPower >= 8.0)
+  {
+    clFarSpecular = clamp(
+      clFarSpecularFromBins(clUVW, clNw, clWorldFromVC * clR, specularPower), clSpecularLow,
+      clSpecularHigh);
+  }
+//CL_ENDIF
 //CL_ENDIF
 //CL_ENDIF
 //CL_ENDIF

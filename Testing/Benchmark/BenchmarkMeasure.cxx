@@ -207,6 +207,7 @@ void Context::ResetPassDefaults()
   p->SetFarFieldGrouping(1.0);
   p->SetFarFieldSharedColor(true);
   p->SetFarFieldOrder4Diffuse(true);
+  p->SetFarFieldSpecularBins(false);
   p->SetNearFieldBudget(8.0);
   p->SetFalloff(vtkClusteredLightingPass::FALLOFF_HARD_CUT);
   p->SetTilesX(32);

@@ -180,6 +180,18 @@ Step WithOrder2Diffuse(const Step& from)
   return t;
 }
 
+// The same step with the far specular from directional bins (FarFieldSpecularBins on):
+// what they cost (a texture of 26 or 52 slabs read per specular fragment, their sums in
+// each build) and buy.
+Step WithSpecularBins(const Step& from)
+{
+  Step t = from;
+  t.Sweep = "far field";
+  t.Value = "specular bins";
+  t.Apply = [](vtkClusteredLightingPass* p) { p->SetFarFieldSpecularBins(true); };
+  return t;
+}
+
 // The same step with the pass's default choice of the prepass (AutomaticDepthPrepass, off
 // in every other row so that it times the mode it names): its trial runs in the warm-up
 // frames (3 settle frames, 4 with the prepass, 4 without), so the timed frames show the
@@ -274,6 +286,8 @@ std::vector<Step> MakePlan(const PlanOptions& options)
           // The far diffuse to order 2 against the same reference (issue 11's 2-step target
           // at 65,536 lights: docs/far-field.md).
           plan.push_back(WithOrder2Diffuse(s));
+          // The far specular from bins (the rest of the 2-step target).
+          plan.push_back(WithSpecularBins(s));
           // What the exact far sums near saturation would cost here, above their default
           // limit (FarFieldExactSumLimit): 93% of an H200's frame, for the same error
           // (docs/far-field.md, "The exact far sums on a GPU").
@@ -364,6 +378,10 @@ std::vector<Step> MakePlan(const PlanOptions& options)
           order2.Sweep = "lights";
           order2.Value = "animated (order-2 diffuse)";
           plan.push_back(order2);
+          Step bins = WithSpecularBins(s);
+          bins.Sweep = "lights";
+          bins.Value = "animated (specular bins)";
+          plan.push_back(bins);
         }
         // Lights moving under a still camera: the prepass's depths are copied back
         // (ReuseDepthPrepass), and only the lights are assigned again.
@@ -658,6 +676,7 @@ std::vector<Step> MakePlan(const PlanOptions& options)
     }
     // The default with the far diffuse to order 2, on every scene.
     plan.push_back(WithOrder2Diffuse(base));
+    plan.push_back(WithSpecularBins(base));
     if (!main)
     {
       continue;

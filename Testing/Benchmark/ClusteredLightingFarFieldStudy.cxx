@@ -45,6 +45,7 @@
 #include "BenchmarkPlan.h"
 #include "ClusteredLightingScenes.h"
 #include "FarBlocksStudy.h"
+#include "SpecularBinsStudy.h"
 #include "vtkClusteredLightingFarFieldBound.h"
 
 #include "vtkActor.h"
@@ -680,6 +681,204 @@ void PrintWorstSamples(const std::vector<Sample>& samples, const std::vector<glm
   }
 }
 
+/**
+ * --specular-bins K1,K2,...: the far specular from K directional bins per node
+ * (SpecularBinsStudy.h), each bin's light summed exactly at every node (brute force over
+ * the lights) and interpolated trilinearly, against the product's far specular, with the
+ * product's far diffuse and near parts unchanged; also the bins summed at the point itself
+ * (the bins' angular error without the grid's).
+ */
+void PrintSpecularBins(const std::vector<Sample>& samples, const std::vector<glm::dvec3>& exact,
+  const std::vector<glm::dvec3>& approx, const std::vector<PreparedLight>& lights,
+  const std::vector<double>& radii, const FarFieldGrid& grid, const std::vector<double>& values,
+  const std::vector<double>& binCounts, const std::vector<float>& productBins)
+{
+  std::vector<SpecularBinTable> tables;
+  for (double k : binCounts)
+  {
+    tables.emplace_back(static_cast<int>(k));
+  }
+  const std::size_t nodes = static_cast<std::size_t>(grid.GetNumberOfNodes());
+  std::vector<std::vector<double>> nodeBins(tables.size());
+  for (std::size_t s = 0; s < tables.size(); ++s)
+  {
+    nodeBins[s].assign(nodes * tables[s].Count() * SpecularBinFloats, 0.0);
+  }
+  const auto t0 = std::chrono::steady_clock::now();
+  ParallelFor(static_cast<std::size_t>(grid.Dims[2]),
+    [&](std::size_t k)
+    {
+      for (int j = 0; j < grid.Dims[1]; ++j)
+      {
+        for (int i = 0; i < grid.Dims[0]; ++i)
+        {
+          const glm::dvec3 p = grid.NodePosition(i, j, static_cast<int>(k));
+          const std::size_t node =
+            static_cast<std::size_t>(grid.NodeIndex(i, j, static_cast<int>(k)));
+          for (std::size_t l = 0; l < lights.size(); ++l)
+          {
+            double far;
+            glm::dvec3 u;
+            if (ComputeFarContribution(lights[l], radii[l], p, far, u))
+            {
+              for (std::size_t s = 0; s < tables.size(); ++s)
+              {
+                AddToSpecularBins(tables[s], lights[l].Color, far, u,
+                  &nodeBins[s][node * tables[s].Count() * SpecularBinFloats]);
+              }
+            }
+          }
+        }
+      }
+    });
+  std::printf("    specular bins summed at the nodes in %.1f s (brute force)\n",
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  struct Parts
+  {
+    glm::dvec3 TrueS{ 0.0 }, GridD{ 0.0 }, GridS{ 0.0 }, Product{ 0.0 }, ProductOnExact{ 0.0 };
+    std::vector<glm::dvec3> PointBins, GridBins, GridShared;
+  };
+  std::vector<Parts> parts(samples.size());
+  ParallelFor(samples.size(),
+    [&](std::size_t i)
+    {
+      const Sample& smp = samples[i];
+      Parts& q = parts[i];
+      if (!(smp.Ks > 0.0))
+      {
+        q.PointBins.assign(tables.size(), glm::dvec3(0.0));
+        q.GridBins = q.PointBins;
+        q.GridShared = q.PointBins;
+        const auto g = InterpolateFarMoments(grid, values, smp.P);
+        q.GridD = EvaluateFarDiffuse(g, smp.N);
+        return;
+      }
+      const glm::dvec3 R = 2.0 * glm::dot(smp.N, smp.V) * smp.N - smp.V;
+      std::vector<std::vector<double>> pointBins(tables.size());
+      for (std::size_t s = 0; s < tables.size(); ++s)
+      {
+        pointBins[s].assign(tables[s].Count() * SpecularBinFloats, 0.0);
+      }
+      for (std::size_t l = 0; l < lights.size(); ++l)
+      {
+        double far;
+        glm::dvec3 u;
+        if (ComputeFarContribution(lights[l], radii[l], smp.P, far, u))
+        {
+          q.TrueS += lights[l].Color * far * Shade(smp, u).y;
+          for (std::size_t s = 0; s < tables.size(); ++s)
+          {
+            AddToSpecularBins(tables[s], lights[l].Color, far, u, pointBins[s].data());
+          }
+        }
+      }
+      const auto g = InterpolateFarMoments(grid, values, smp.P);
+      q.GridD = EvaluateFarDiffuse(g, smp.N);
+      q.GridS = EvaluateFarSpecular(g, smp.N, R, smp.Power);
+      const auto pb = InterpolateFarSpecularBins(grid, productBins, smp.P);
+      q.Product = EvaluateFarSpecular(g, smp.N, R, smp.Power, true, pb.data());
+      glm::dvec3 low(0.0), high(0.0);
+      for (int c = 0; c < 3; ++c)
+      {
+        ApplyFarLobe(&g[static_cast<std::size_t>(c) * FarFieldMomentsPerChannel], smp.N, R,
+          smp.Power, &low[c], &high[c]);
+      }
+      for (std::size_t s = 0; s < tables.size(); ++s)
+      {
+        std::vector<double> gb(tables[s].Count() * SpecularBinFloats);
+        InterpolateNodeValues(grid, nodeBins[s], gb.size(), smp.P, gb.data());
+        q.PointBins.push_back(glm::clamp(
+          EvaluateSpecularBins(tables[s], pointBins[s].data(), smp.N, R, smp.Power), low, high));
+        q.GridBins.push_back(
+          glm::clamp(EvaluateSpecularBins(tables[s], gb.data(), smp.N, R, smp.Power), low, high));
+        q.GridShared.push_back(
+          glm::clamp(EvaluateSpecularBinsSharedDirection(tables[s], gb.data(), smp.N, R, smp.Power),
+            low, high));
+        if (tables[s].Count() == FarSpecularBins)
+        {
+          // The same cells in the same order: the product's evaluation of these bins.
+          double pbins[FarSpecularFloatsPerNode];
+          for (int b = 0; b < FarSpecularBins; ++b)
+          {
+            const double* from = &gb[static_cast<std::size_t>(b) * SpecularBinFloats];
+            double* to = pbins + b * FarSpecularBinFloats;
+            for (int c = 0; c < 3; ++c)
+            {
+              to[c] = from[4 * c];
+              to[3 + c] = from[1 + c] + from[5 + c] + from[9 + c];
+            }
+          }
+          q.ProductOnExact =
+            glm::clamp(EvaluateFarSpecularBins(pbins, smp.N, R, smp.Power), low, high);
+        }
+      }
+    });
+  const double per = 255.0 / (3.0 * samples.size());
+  Errors product, productExact;
+  double productKernel = 0.0;
+  for (std::size_t i = 0; i < samples.size(); ++i)
+  {
+    const Parts& p = parts[i];
+    const glm::dvec3 rest = approx[i] - p.GridS * samples[i].Ks;
+    product.Add(exact[i], approx[i]);
+    productExact.Add(exact[i], rest + p.TrueS * samples[i].Ks);
+    for (int c = 0; c < 3; ++c)
+    {
+      productKernel += std::abs(p.GridS[c] - p.TrueS[c]) * samples[i].Ks;
+    }
+  }
+  Errors productBinsErrors;
+  double productBinsKernel = 0.0;
+  for (std::size_t i = 0; i < samples.size(); ++i)
+  {
+    const Parts& p = parts[i];
+    productBinsErrors.Add(exact[i], approx[i] + (p.Product - p.GridS) * samples[i].Ks);
+    for (int c = 0; c < 3; ++c)
+    {
+      productBinsKernel += std::abs(p.Product[c] - p.TrueS[c]) * samples[i].Ks;
+    }
+  }
+  productBinsErrors.Print("    the product's bins (tree build)", 0.0, 0);
+  Errors onExact;
+  for (std::size_t i = 0; i < samples.size(); ++i)
+  {
+    onExact.Add(exact[i], approx[i] + (parts[i].ProductOnExact - parts[i].GridS) * samples[i].Ks);
+  }
+  onExact.Print("    the product's evaluation, exact bins", 0.0, 0);
+  std::printf("      mean |far specular error| %.3f steps\n", productBinsKernel * per);
+  product.Print("    the product's far specular", 0.0, 0);
+  std::printf("      mean |far specular error| %.3f steps\n", productKernel * per);
+  productExact.Print("    the far specular exact", 0.0, 0);
+  for (std::size_t s = 0; s < tables.size(); ++s)
+  {
+    Errors point, grid2, shared;
+    double pointError = 0.0, gridError = 0.0, gridSigned = 0.0;
+    for (std::size_t i = 0; i < samples.size(); ++i)
+    {
+      const Parts& p = parts[i];
+      const glm::dvec3 rest = approx[i] - p.GridS * samples[i].Ks;
+      point.Add(exact[i], rest + p.PointBins[s] * samples[i].Ks);
+      grid2.Add(exact[i], rest + p.GridBins[s] * samples[i].Ks);
+      shared.Add(exact[i], rest + p.GridShared[s] * samples[i].Ks);
+      for (int c = 0; c < 3; ++c)
+      {
+        pointError += std::abs(p.PointBins[s][c] - p.TrueS[c]) * samples[i].Ks;
+        gridError += std::abs(p.GridBins[s][c] - p.TrueS[c]) * samples[i].Ks;
+        gridSigned += (p.GridBins[s][c] - p.TrueS[c]) * samples[i].Ks;
+      }
+    }
+    char name[96];
+    std::snprintf(name, sizeof(name), "    %zu bins, summed at the point", tables[s].Count());
+    point.Print(name, 0.0, 0);
+    std::snprintf(name, sizeof(name), "    %zu bins, through the grid", tables[s].Count());
+    grid2.Print(name, 0.0, 0);
+    std::snprintf(name, sizeof(name), "    %zu bins, one direction per bin", tables[s].Count());
+    shared.Print(name, 0.0, 0);
+    std::printf("      mean |far specular error| %.3f steps at the point, %.3f through the grid "
+                "(signed %+.3f)\n",
+      pointError * per, gridError * per, gridSigned * per);
+  }
+}
 }
 
 int main(int argc, char* argv[])
@@ -698,6 +897,7 @@ int main(int argc, char* argv[])
   bool farCutoffs = false;
   bool copies = false;
   int worst = -1;
+  std::vector<double> specularBins;
   double intensity = -1.0;
   auto parseList = [](const char* text, double (*f)(double))
   {
@@ -782,6 +982,10 @@ int main(int argc, char* argv[])
     {
       // Every light's intensity (the benchmark's always-on layout: 0.005).
       intensity = std::atof(argv[++i]);
+    }
+    else if (a == "--specular-bins" && value)
+    {
+      specularBins = parseList(argv[++i], same);
     }
     else if (a == "--worst" && value)
     {
@@ -962,6 +1166,26 @@ int main(int argc, char* argv[])
           const double ms =
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
               .count();
+          // --specular-bins: the product's bins, built again with the moments and timed.
+          std::vector<float> productBins;
+          if (!specularBins.empty())
+          {
+            std::vector<double> again(values.size());
+            productBins.assign(
+              static_cast<std::size_t>(grid.GetNumberOfNodes()) * FarSpecularFloatsPerNode, 0.0f);
+            const auto t1 = std::chrono::steady_clock::now();
+            ParallelFor(static_cast<std::size_t>(blocks[2]),
+              [&](std::size_t k)
+              {
+                ComputeFarFieldMomentsForThisCPU(grid, lights, radii, tree, grouping,
+                  static_cast<std::int64_t>(k) * slab, static_cast<std::int64_t>(k + 1) * slab,
+                  again, -1, true, &productBins);
+              });
+            std::printf("    build with the far specular's bins %.1f ms (without %.1f ms)\n",
+              std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t1)
+                .count(),
+              ms);
+          }
           Errors e;
           std::vector<glm::dvec3> approx(samples.size());
           double near = 0.0, sumBound = 0.0, maxBound = 0.0, maxRatio = 0.0;
@@ -1013,6 +1237,11 @@ int main(int argc, char* argv[])
             }
             PrintWorstSamples(samples, exact, approx, lights, radii, grid, values, worst, orders,
               order4Grid ? &band4 : nullptr);
+          }
+          if (!specularBins.empty() && plan.Active)
+          {
+            PrintSpecularBins(
+              samples, exact, approx, lights, radii, grid, values, specularBins, productBins);
           }
           char name[160];
           if (farCutoffs)

@@ -103,16 +103,19 @@ inline GLNames TakeGLNameCensus(vtkRenderWindow* rw)
 /// while they are kept for the next frame.
 constexpr int AssignmentGLObjects = 10;
 constexpr int FarFieldGLObjects = 15;
+constexpr int FarSpecularBinsGLObjects = 1; ///< with a specular the bins serve
 constexpr int DepthAwareGLObjects = 2;
 constexpr int SavedDepthGLObjects = 2;
 
 /// The far field's GL objects for the pass's last render: the specular table and the
 /// moment textures, 14 for three channels, 5 for lights that share a colour, 7 and 3 with
-/// the diffuse to order 2 (FarFieldOrder4Diffuse off).
+/// the diffuse to order 2 (FarFieldOrder4Diffuse off), and the far specular's bins when
+/// they were used (FarFieldSpecularBins).
 inline int FarFieldGLObjectsOf(vtkClusteredLightingPass* pass)
 {
   const bool order4 = pass->GetFarFieldOrder4Diffuse();
-  return 1 + (pass->GetFarFieldSharedColorUsed() ? (order4 ? 5 : 3) : (order4 ? 14 : 7));
+  return 1 + (pass->GetFarFieldSpecularBinsUsed() ? 1 : 0) +
+    (pass->GetFarFieldSharedColorUsed() ? (order4 ? 5 : 3) : (order4 ? 14 : 7));
 }
 
 /// GL objects per renderer for the lights the pass last rendered.

@@ -373,7 +373,7 @@ struct SnapshotFarField
     : Radii(vtkClusteredLighting::GetFarFieldNearRadii(frame.Lights))
     , Tree(vtkClusteredLighting::BuildFarFieldLightTree(frame.Lights, Radii))
     , Inputs{ &frame.FarField.Grid, &frame.Lights, &Radii, &Tree, frame.FarField.Grouping,
-      frame.FarField.Order4Diffuse }
+      frame.FarField.Order4Diffuse, frame.FarField.SpecularBins }
   {
   }
   SnapshotFarField(const SnapshotFarField&) = delete;

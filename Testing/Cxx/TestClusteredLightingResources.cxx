@@ -49,6 +49,7 @@ int TestClusteredLightingResources(int, char*[])
 
   vtkSmartPointer<vtkClusteredLightingPass> pass = vtkSmartPointer<vtkClusteredLightingPass>::New();
   pass->AddLightSet(lights);
+  pass->FarFieldSpecularBinsOn(); // its texture counts too
   // A small near-field budget gives these lights a far field, so that its textures are
   // part of every census below.
   pass->SetNearFieldBudget(1.0);
@@ -69,9 +70,14 @@ int TestClusteredLightingResources(int, char*[])
   // far field's moment textures (the scene's lights are inverse-square), the cluster
   // depths and rectangles (depth-aware clusters are on by default), and the copy of the prepass's
   // depths for the next frame (ReuseDepthPrepass, on by default).
+  // The sphere's specular (power 20) takes the far specular's bins (on here).
   const int per = GLObjectsPerRenderer(pass);
-  Check(per == AssignmentGLObjects + FarFieldGLObjects + DepthAwareGLObjects + SavedDepthGLObjects,
-    "the lights have a far field, the clusters are depth-aware, the prepass's depths are kept");
+  Check(pass->GetFarFieldSpecularBinsUsed() &&
+      per ==
+        AssignmentGLObjects + FarFieldGLObjects + FarSpecularBinsGLObjects + DepthAwareGLObjects +
+          SavedDepthGLObjects,
+    "the lights have a far field with the specular's bins, the clusters are depth-aware, the "
+    "prepass's depths are kept");
   Check(pass->GetNumberOfGLObjects() == per && own.size() == static_cast<std::size_t>(per),
     "the pass holds " + std::to_string(per) + " GL objects: count " +
       std::to_string(pass->GetNumberOfGLObjects()) + ", names " + Describe(own));

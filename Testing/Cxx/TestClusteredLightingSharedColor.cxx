@@ -96,6 +96,9 @@ int TestClusteredLightingSharedColor(int, char*[])
   }
   vtkNew<vtkClusteredLightingPass> pass;
   pass->AddLightSet(lights);
+  // With the far specular's bins (off by default): one channel of them must give the
+  // same image as three.
+  pass->FarFieldSpecularBinsOn();
   ren->SetPass(pass);
   rw->Render();
   Check(pass->GetNumberOfFarFieldLights() == n, "every light is split (none has a radius)");
@@ -110,10 +113,13 @@ int TestClusteredLightingSharedColor(int, char*[])
     static_cast<unsigned long long>(bytesOn), static_cast<unsigned long long>(bytesOff),
     MaxSteps(one, three));
   Check(usedOn && !usedOff, "white lights: one channel with the option on, three with it off");
-  // Beside the moments, both hold the far specular's table (LobeTableBytes).
+  // Beside the moments, both hold the far specular's table (LobeTableBytes), and for the
+  // sphere's specular (power 20) its bins: 26 slabs of the grid with one channel, 52 with
+  // three (FarFieldSpecularBins).
   const vtkTypeUInt64 table = vtkClusteredLighting::LobeTableBytes;
-  Check(bytesOn > table && (bytesOn - table) * 14 == (bytesOff - table) * 5,
-    "white lights: 5 moment textures instead of 14");
+  Check(pass->GetFarFieldSpecularBinsUsed(), "the sphere's specular takes the far specular's bins");
+  Check(bytesOn > table && (bytesOn - table) * (14 + 52) == (bytesOff - table) * (5 + 26),
+    "white lights: 5 moment textures and 26 bin slabs instead of 14 and 52");
   Check(MaxSteps(one, three) == 0.0, "white lights: the same image bit for bit");
   Check(ClusteredLightingTest::CheckClusteredFrame(pass, rw, ren, 1.4, "white lights") == 0,
     "white lights: within the stated bound of brute force, zero false negatives, finite");

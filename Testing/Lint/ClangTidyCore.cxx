@@ -8,6 +8,7 @@
 #include "vtkClusteredLightingFarFieldBound.h"
 #include "vtkClusteredLightingFarFieldBudget.h"
 #include "vtkClusteredLightingFarFieldTree.h"
+#include "vtkClusteredLightingFarSpecularBins.h"
 #include "vtkClusteredLightingGrid.h"
 #include "vtkClusteredLightingLayout.h"
 #include "vtkClusteredLightingLights.h"

@@ -335,7 +335,26 @@ float clFarSpecularBinLobe(float S, vec3 V, vec3 N, vec3 R, float n)
   return e * clNormalShare(na / sd);
 }
 
-// Mirrors EvaluateFarSpecularBins at the grid's texture coordinates uvw, for world N and R.
+// Mirrors GetFarSpecularBinReach: the least cosine between R and a bin's axis for which
+// the bin is read (FarSpecularBinLobeFloor 1/4096, FarSpecularBinCellRadius 0.86285621).
+float clFarSpecularBinReach(float n)
+{
+  float c = 1.0 + log(1.0 / 4096.0) / max(n, 1e-6);
+  float angle = acos(clamp(c, -1.0, 1.0)) + acos(0.86285621);
+  return angle >= 3.14159265 ? -1.0 : cos(angle);
+}
+
+// Mirrors GetFarSpecularBinAxis.
+vec3 clFarSpecularBinAxis(int b)
+{
+  int i = b + (b >= 13 ? 1 : 0);
+  return normalize(vec3(float(i / 9 - 1), float((i / 3) % 3 - 1), float(i % 3 - 1)));
+}
+
+// Mirrors EvaluateFarSpecularBins at the grid's texture coordinates uvw, for world N and R:
+// a mask of the bins in reach (IsFarSpecularBinInReach; -0.50544947 is -sin of the cell's
+// radius), then only those bins read, so a group of fragments loops as often as its
+// fragments' most bins in reach (a masked-out texture read may still cost its time).
 vec3 clFarSpecularFromBins(vec3 uvw, vec3 N, vec3 R, float n)
 {
   // Within a slab: the coordinate along the axis clamped to its texel centres, so the
@@ -344,8 +363,20 @@ vec3 clFarSpecularFromBins(vec3 uvw, vec3 N, vec3 R, float n)
   float z = clamp(uvw[clFarSpecularAxis] * depth, 0.5, depth - 0.5);
   vec3 c = uvw;
   vec3 sum = vec3(0.0);
+  float reach = clFarSpecularBinReach(n);
+  uint inReach = 0u;
   for (int b = 0; b < 26; ++b)
   {
+    vec3 a = clFarSpecularBinAxis(b);
+    if (dot(R, a) >= reach && dot(N, a) >= -0.50544947)
+    {
+      inReach |= 1u << uint(b);
+    }
+  }
+  while (inReach != 0u)
+  {
+    int b = clFindLSB(inReach);
+    inReach &= inReach - 1u;
 //CL_IF(FAR_SHARED_COLOR)
     c[clFarSpecularAxis] = (z + float(b) * depth) / (26.0 * depth);
     vec4 t = texture(clFarSpecularBins, c);

@@ -3,6 +3,7 @@
 
 #include "ClusteredLightingImages.h"
 #include "ClusteredLightingScenes.h"
+#include "ClusteredLightingTestUtilities.h"
 #include "vtkClusteredLightingInspector.h"
 
 #include "vtkActorCollection.h"
@@ -291,6 +292,77 @@ void Context::MakeReference()
 }
 
 //------------------------------------------------------------------------------
+// A diagnostic: the k pixels farthest from the reference (largest channel), each with its
+// place (pixel, depth, world point and normal), its channels against the reference, and
+// the far field's stated bound there (the GL tests' per-pixel bound,
+// ClusteredLightingTestUtilities.h), which tells the far field's error from the rest.
+void Context::PrintWorstPixels(const Row& row, const std::vector<float>& img)
+{
+  const int* size = this->Window->GetSize();
+  const std::size_t pixels = img.size() / 3;
+  if (pixels != static_cast<std::size_t>(size[0]) * size[1] || img.size() != this->Reference.size())
+  {
+    return;
+  }
+  std::vector<std::pair<double, std::size_t>> errors(pixels);
+  std::size_t overTwo = 0;
+  for (std::size_t p = 0; p < pixels; ++p)
+  {
+    double worst = 0.0;
+    for (int c = 0; c < 3; ++c)
+    {
+      worst =
+        std::max(worst, std::abs(double(img[3 * p + c]) - double(this->Reference[3 * p + c])));
+    }
+    errors[p] = { worst, p };
+    overTwo += worst > 2.5 / 255.0 ? 1 : 0;
+  }
+  const std::size_t k = std::min<std::size_t>(static_cast<std::size_t>(this->WorstPixels), pixels);
+  std::partial_sort(errors.begin(), errors.begin() + static_cast<std::ptrdiff_t>(k), errors.end(),
+    [](const auto& a, const auto& b) { return a.first > b.first; });
+
+  vtkClusteredLightingInspector inspect(this->Pass);
+  const vtkClusteredLightingAssignmentSnapshot frame = inspect.GetFrame(this->Renderer);
+  int w = 0, h = 0;
+  const std::vector<float> depth =
+    ClusteredLightingTest::CaptureDepth(this->Window, this->Renderer, w, h);
+  const int previous = this->Pass->GetDebugView();
+  this->Pass->SetDebugView(vtkClusteredLightingPass::DEBUG_NORMAL);
+  this->Window->Render();
+  const std::vector<float> normals = ClusteredLightingImages::CaptureRGB(this->Window);
+  this->Pass->SetDebugView(previous);
+  this->Window->Render();
+  std::vector<char> needed(pixels, 0);
+  for (std::size_t i = 0; i < k; ++i)
+  {
+    needed[errors[i].second] = 1;
+  }
+  const glm::dmat4 inverse = glm::inverse(frame.VCDC);
+  const std::vector<double> bounds = ClusteredLightingTest::ComputeFarFieldBounds(
+    this->Pass, this->Window, this->Renderer, frame, depth, w, h, inverse, 0, &needed);
+  const glm::dmat4 worldFromVC = glm::inverse(frame.WCVC);
+  std::printf("  worst pixels of %s/%s/%d/%s/%s/%s (8-bit steps; world point, view normal; "
+              "%zu pixels more than 2 steps off):\n",
+    row.Scene.c_str(), row.Layout.c_str(), row.Lights, row.Method.c_str(), row.Sweep.c_str(),
+    row.Value.c_str(), overTwo);
+  for (std::size_t i = 0; i < k; ++i)
+  {
+    const std::size_t p = errors[i].second;
+    const int x = static_cast<int>(p % static_cast<std::size_t>(w));
+    const int y = static_cast<int>(p / static_cast<std::size_t>(w));
+    const glm::dvec3 vc = ClusteredLightingTest::UnprojectPixel(x, y, depth[p], w, h, inverse);
+    const glm::dvec3 wc(worldFromVC * glm::dvec4(vc, 1.0));
+    std::printf("    (%d, %d) depth %.6f: clustered %.1f %.1f %.1f, reference %.1f %.1f %.1f, "
+                "bound %.2f; at (%.4g, %.4g, %.4g) normal (%.3f, %.3f, %.3f)\n",
+      x, y, double(depth[p]), 255.0 * img[3 * p], 255.0 * img[3 * p + 1], 255.0 * img[3 * p + 2],
+      255.0 * this->Reference[3 * p], 255.0 * this->Reference[3 * p + 1],
+      255.0 * this->Reference[3 * p + 2], 255.0 * bounds[p], wc.x, wc.y, wc.z,
+      2.0 * normals[3 * p] - 1.0, 2.0 * normals[3 * p + 1] - 1.0, 2.0 * normals[3 * p + 2] - 1.0);
+  }
+  std::fflush(stdout);
+}
+
+//------------------------------------------------------------------------------
 void Context::MeasureCounts(Row& row)
 {
   this->Pass->SetDebugView(vtkClusteredLightingPass::DEBUG_EVALUATED_COUNT);
@@ -547,7 +619,12 @@ Row Context::Measure(const Step& step)
   }
   this->SetView();
   this->Window->Render();
-  CompareWithReference(ClusteredLightingImages::CaptureRGB(this->Window), this->Reference, row);
+  const std::vector<float> image = ClusteredLightingImages::CaptureRGB(this->Window);
+  CompareWithReference(image, this->Reference, row);
+  if (clustered && this->WorstPixels > 0 && !this->Reference.empty())
+  {
+    this->PrintWorstPixels(row, image);
+  }
   if (clustered && step.Counts)
   {
     this->MeasureCounts(row);

@@ -121,10 +121,14 @@ public:
   /// Count rows also measure the culling floor (Row::FloorPerPixel). Default is off: the
   /// reference assignment takes seconds at thousands of lights.
   void SetMeasureCullingFloor(bool on) { this->MeasureFloor = on; }
+  /// Clustered rows with a reference also print their `k` worst pixels (--worst-pixels):
+  /// where they are, their error and the far field's stated bound there. Default is 0.
+  void SetWorstPixels(int k) { this->WorstPixels = k; }
 
 private:
   void MeasureCullingFloor(Row& row);
   void MeasureCounts(Row& row);
+  void PrintWorstPixels(const Row& row, const std::vector<float>& img);
   void NudgeLights(int frame);
   void AddStockLights(std::vector<vtkSmartPointer<vtkLight>>& added);
   void RemoveRendererLights();
@@ -139,6 +143,7 @@ private:
   std::vector<unsigned char> Geometry; ///< pixels that show geometry at the view
   double Nudged = 0.0;                 ///< how far NudgeLights moved the lights
   bool MeasureFloor = false;
+  int WorstPixels = 0;
   std::vector<vtkSmartPointer<vtkLight>> RendererLights; ///< the "always-on" layout's lights
 };
 

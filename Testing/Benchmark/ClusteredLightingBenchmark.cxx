@@ -9,14 +9,16 @@
 // and machine.txt.
 //
 //   ClusteredLightingBenchmark [--quick] [--output DIR] [--frames N] [--check]
-//                              [--filter REGEX] [--culling-floor]
+//                              [--filter REGEX] [--culling-floor] [--worst-pixels K]
 //                              [--snapshot SCENE FILE [--view px py pz fx fy fz angle]]
 //
 // --quick finishes in under 2 minutes (small window, fewer steps); --check validates the
 // written CSV (well-formed, finite, error budgets met) and sets the exit code; --filter
 // measures only the steps whose id "scene/layout/lights/method/sweep/value" matches;
 // --culling-floor also measures, on count rows, the lights per pixel that exact cell
-// culling and the best possible list per cluster would walk (results.md's "Culling floor").
+// culling and the best possible list per cluster would walk (results.md's "Culling floor");
+// --worst-pixels K prints, for each clustered row with a reference, its K pixels farthest
+// from it: where they are and the far field's stated bound there (a diagnostic).
 #include "BenchmarkMeasure.h"
 #include "BenchmarkPlan.h"
 #include "BenchmarkReport.h"
@@ -45,6 +47,7 @@ struct Options
   bool CullingFloor = false;
   int Width = 1024, Height = 768;
   int Frames = 10;
+  int WorstPixels = 0;
   std::string Output = "benchmark-results";
   std::string Filter;
   std::string SnapshotScene, SnapshotFile;
@@ -75,6 +78,10 @@ bool ParseOptions(int argc, char* argv[], Options& opt)
     else if (a == "--frames" && i + 1 < argc)
     {
       opt.Frames = std::max(1, std::atoi(argv[++i]));
+    }
+    else if (a == "--worst-pixels" && i + 1 < argc)
+    {
+      opt.WorstPixels = std::max(0, std::atoi(argv[++i]));
     }
     else if (a == "--filter" && i + 1 < argc)
     {
@@ -148,6 +155,7 @@ int main(int argc, char* argv[])
 
   Context ctx(opt.Width, opt.Height);
   ctx.SetMeasureCullingFloor(opt.CullingFloor);
+  ctx.SetWorstPixels(opt.WorstPixels);
   PlanOptions planOptions;
   planOptions.Quick = opt.Quick;
   planOptions.Frames = opt.Frames;

@@ -1926,6 +1926,55 @@ TEST(FarSpecularBins, OneLightGivesItsPhongLobe)
   }
 }
 
+// The bins left unread (IsFarSpecularBinInReach) hold no direction whose light VTK's
+// Phong specular would let through by more than FarSpecularBinLobeFloor of it: each
+// direction's light, where its bin is out of reach, is behind the surface or its lobe
+// max(0, R.u)^n is below the floor. And they are many: fewer than half the bins are read
+// at power 20.
+TEST(FarSpecularBins, BinsOutOfReachHoldNoLightTheLobeLetsThrough)
+{
+  std::mt19937 rng(25);
+  std::normal_distribution<double> G(0.0, 1.0);
+  const auto unit = [&] { return glm::normalize(glm::dvec3(G(rng), G(rng), G(rng))); };
+  for (double n : { 8.0, 20.0, 60.0, 128.0 })
+  {
+    const double reach = GetFarSpecularBinReach(n);
+    double largest = 0.0, read = 0.0;
+    const int views = 2000, directions = 400;
+    for (int i = 0; i < views; ++i)
+    {
+      const glm::dvec3 N = unit();
+      glm::dvec3 V = unit();
+      V = glm::dot(V, N) < 0.0 ? V - 2.0 * glm::dot(V, N) * N : V;
+      const glm::dvec3 R = glm::normalize(2.0 * glm::dot(N, V) * N - V);
+      for (int b = 0; b < FarSpecularBins; ++b)
+      {
+        read += IsFarSpecularBinInReach(b, N, R, reach) ? 1.0 : 0.0;
+      }
+      for (int k = 0; k < directions; ++k)
+      {
+        // Directions near R, near the edge of the lit side and anywhere.
+        const glm::dvec3 u = k % 3 == 0 ? glm::normalize(R + 1.5 * unit())
+          : k % 3 == 1                  ? glm::normalize(N + 3.0 * unit())
+                                        : unit();
+        if (IsFarSpecularBinInReach(ComputeFarSpecularBin(u.x, u.y, u.z), N, R, reach))
+        {
+          continue;
+        }
+        const double phong =
+          glm::dot(N, u) > 0.0 ? std::pow(std::max(0.0, glm::dot(R, u)), n) : 0.0;
+        largest = std::max(largest, phong);
+      }
+    }
+    read /= views;
+    std::printf("power %g: %.1f of 26 bins read on average; the largest lobe of a light "
+                "left unread %.3g of it\n",
+      n, read, largest);
+    EXPECT_LE(largest, FarSpecularBinLobeFloor) << n;
+    EXPECT_LT(read, n < 10.0 ? 20.0 : 13.0) << n;
+  }
+}
+
 // For far light spread over many directions (a floor under a box of lights, a sphere in
 // it), the bins' far specular is closer to the truth than the moments' at the powers they
 // serve: what they are for (docs/far-field.md, "A far specular from directional bins").

@@ -14,6 +14,7 @@
 //     [--lights N] [--samples S] [--cutoffs 1024,4096] [--nodes 32768] [--cells 2]
 //     [--grouping 0.05] [--hierarchy 0.02,0.1] [--bounds] [--copies] [--worst K]
 //     [--orders] [--order4-grid] [--blocks 255,2048] [--far-cutoffs] [--intensity I]
+//     [--pass-region] [--at x,y,z,x,y,z,...]
 //
 // Rows: "cut at 1/c" (before the far field: every light cut at its cutoff radius); "far
 // field" (design 1, the product's core code: PlanFarField, ComputeFarFieldMoments, the
@@ -40,7 +41,12 @@
 // 1/t (colour units), the far parts summed to within half of it from bounds of blocks of 32 lights
 // in Morton order (FarBlocksStudy.h, a design measured and not adopted): the work per point (block
 // bounds and lights summed) against the far-field lights, and the largest error against the exact
-// far sum. List options take comma-separated values.
+// far sum. The far field's region is the samples' box; with --pass-region the pass's own (the
+// visible props' bounds), so that the grid's nodes are the pass's. --at takes the surface
+// points nearest to given world points as the samples instead of random ones (the points
+// that the benchmark's --worst-pixels prints; implies --pass-region): with --worst their
+// errors taken apart, with --specular-bins each point's error with the moments' far
+// specular and with the bins. List options take comma-separated values.
 #include "BenchmarkMeasure.h"
 #include "BenchmarkPlan.h"
 #include "ClusteredLightingScenes.h"
@@ -84,8 +90,8 @@ struct Sample
   double Ks = 0.0, Power = 1.0;
 };
 
-/// Area-weighted points on the renderer's actors, inside the camera frustum, facing it.
-std::vector<Sample> SampleSurfaces(vtkRenderer* ren, int count, unsigned seed)
+/// The renderer's actors as triangles (polygons fanned), with point normals and areas.
+struct SurfaceTriangles
 {
   struct Tri
   {
@@ -94,52 +100,174 @@ std::vector<Sample> SampleSurfaces(vtkRenderer* ren, int count, unsigned seed)
     vtkIdType Ids[3];
     vtkProperty* Property;
   };
-  std::vector<Tri> tris;
-  std::vector<double> cumulative;
-  std::vector<vtkSmartPointer<vtkPolyData>> keep;
-  double total = 0.0;
-  vtkActorCollection* actors = ren->GetActors();
-  actors->InitTraversal();
-  while (vtkActor* a = actors->GetNextActor())
+  std::vector<Tri> Tris;
+  std::vector<double> Cumulative; ///< running sum of the triangles' areas
+  std::vector<vtkSmartPointer<vtkPolyData>> Keep;
+
+  explicit SurfaceTriangles(vtkRenderer* ren)
   {
-    vtkPolyData* in = vtkPolyData::SafeDownCast(a->GetMapper()->GetInputDataObject(0, 0));
-    if (!in)
+    double total = 0.0;
+    vtkActorCollection* actors = ren->GetActors();
+    actors->InitTraversal();
+    while (vtkActor* a = actors->GetNextActor())
     {
-      continue;
-    }
-    vtkNew<vtkPolyDataNormals> normals;
-    normals->SetInputData(in);
-    normals->SplittingOff();
-    normals->ComputePointNormalsOn();
-    normals->Update();
-    vtkSmartPointer<vtkPolyData> mesh = normals->GetOutput();
-    keep.push_back(mesh);
-    vtkCellArray* polys = mesh->GetPolys();
-    vtkNew<vtkIdList> ids;
-    for (polys->InitTraversal(); polys->GetNextCell(ids);)
-    {
-      for (vtkIdType t = 1; t + 1 < ids->GetNumberOfIds(); ++t) // fan
+      vtkPolyData* in = vtkPolyData::SafeDownCast(a->GetMapper()->GetInputDataObject(0, 0));
+      if (!in)
       {
-        Tri tri{ mesh, mesh->GetPointData()->GetNormals(),
-          { ids->GetId(0), ids->GetId(t), ids->GetId(t + 1) }, a->GetProperty() };
-        double p[3][3];
-        for (int k = 0; k < 3; ++k)
+        continue;
+      }
+      vtkNew<vtkPolyDataNormals> normals;
+      normals->SetInputData(in);
+      normals->SplittingOff();
+      normals->ComputePointNormalsOn();
+      normals->Update();
+      vtkSmartPointer<vtkPolyData> mesh = normals->GetOutput();
+      this->Keep.push_back(mesh);
+      vtkCellArray* polys = mesh->GetPolys();
+      vtkNew<vtkIdList> ids;
+      for (polys->InitTraversal(); polys->GetNextCell(ids);)
+      {
+        for (vtkIdType t = 1; t + 1 < ids->GetNumberOfIds(); ++t) // fan
         {
-          mesh->GetPoint(tri.Ids[k], p[k]);
+          Tri tri{ mesh, mesh->GetPointData()->GetNormals(),
+            { ids->GetId(0), ids->GetId(t), ids->GetId(t + 1) }, a->GetProperty() };
+          const auto p = this->GetCorners(tri);
+          total += 0.5 * glm::length(glm::cross(p[1] - p[0], p[2] - p[0]));
+          this->Tris.push_back(tri);
+          this->Cumulative.push_back(total);
         }
-        const glm::dvec3 u(p[1][0] - p[0][0], p[1][1] - p[0][1], p[1][2] - p[0][2]);
-        const glm::dvec3 v(p[2][0] - p[0][0], p[2][1] - p[0][1], p[2][2] - p[0][2]);
-        total += 0.5 * glm::length(glm::cross(u, v));
-        tris.push_back(tri);
-        cumulative.push_back(total);
       }
     }
   }
-  vtkCamera* cam = ren->GetActiveCamera();
-  double eyeD[3];
-  cam->GetPosition(eyeD);
-  const glm::dvec3 eye(eyeD[0], eyeD[1], eyeD[2]);
-  vtkMatrix4x4* m = cam->GetCompositeProjectionTransformMatrix(1024.0 / 768.0, -1, 1);
+
+  static std::array<glm::dvec3, 3> GetCorners(const Tri& tri)
+  {
+    std::array<glm::dvec3, 3> p;
+    for (int k = 0; k < 3; ++k)
+    {
+      double q[3];
+      tri.Mesh->GetPoint(tri.Ids[k], q);
+      p[static_cast<std::size_t>(k)] = glm::dvec3(q[0], q[1], q[2]);
+    }
+    return p;
+  }
+
+  /// The sample at barycentric weights `w` of a triangle: point, interpolated normal
+  /// (turned towards the eye, as VTK shades back faces), material.
+  static Sample MakeSample(const Tri& tri, const double w[3], const glm::dvec3& eye)
+  {
+    const auto p = GetCorners(tri);
+    Sample s;
+    glm::dvec3 n(0.0);
+    s.P = glm::dvec3(0.0);
+    for (int k = 0; k < 3; ++k)
+    {
+      double nk[3];
+      tri.Normals->GetTuple(tri.Ids[k], nk);
+      s.P += w[k] * p[static_cast<std::size_t>(k)];
+      n += w[k] * glm::dvec3(nk[0], nk[1], nk[2]);
+    }
+    s.V = glm::normalize(eye - s.P);
+    s.N = glm::normalize(n);
+    if (glm::dot(s.N, s.V) < 0.0)
+    {
+      s.N = -s.N;
+    }
+    double c[3];
+    tri.Property->GetDiffuseColor(c);
+    s.Kd = tri.Property->GetDiffuse() * glm::dvec3(c[0], c[1], c[2]);
+    s.Ks = tri.Property->GetSpecular();
+    s.Power = tri.Property->GetSpecularPower();
+    return s;
+  }
+};
+
+glm::dvec3 GetEye(vtkRenderer* ren)
+{
+  double eye[3];
+  ren->GetActiveCamera()->GetPosition(eye);
+  return glm::dvec3(eye[0], eye[1], eye[2]);
+}
+
+/**
+ * --at: the surface points nearest to given world points (the benchmark's --worst-pixels
+ * prints them), each the closest point of the closest triangle (projected into the
+ * triangle's plane, or onto its nearest edge where the projection falls outside).
+ */
+std::vector<Sample> SampleSurfacesAt(vtkRenderer* ren, const std::vector<glm::dvec3>& points)
+{
+  const SurfaceTriangles surface(ren);
+  const glm::dvec3 eye = GetEye(ren);
+  std::vector<Sample> out;
+  for (const glm::dvec3& x : points)
+  {
+    double best = 1e300, bestW[3] = { 1.0, 0.0, 0.0 };
+    const SurfaceTriangles::Tri* bestTri = nullptr;
+    for (const SurfaceTriangles::Tri& tri : surface.Tris)
+    {
+      const auto p = SurfaceTriangles::GetCorners(tri);
+      const glm::dvec3 n = glm::cross(p[1] - p[0], p[2] - p[0]);
+      const double nn = glm::dot(n, n);
+      if (!(nn > 0.0))
+      {
+        continue;
+      }
+      const glm::dvec3 q = x - glm::dot(x - p[0], n) / nn * n;
+      // Each corner's weight: the area opposite it over the whole, signed.
+      double w[3] = { glm::dot(glm::cross(p[2] - p[1], q - p[1]), n) / nn,
+        glm::dot(glm::cross(p[0] - p[2], q - p[2]), n) / nn, 0.0 };
+      w[2] = 1.0 - w[0] - w[1];
+      if (w[0] < 0.0 || w[1] < 0.0 || w[2] < 0.0)
+      {
+        // Outside: the nearest point of the nearest edge.
+        double edgeBest = 1e300;
+        for (int e = 0; e < 3; ++e)
+        {
+          const int a = e, b = (e + 1) % 3;
+          const glm::dvec3 ab = p[static_cast<std::size_t>(b)] - p[static_cast<std::size_t>(a)];
+          const double t = std::min(1.0,
+            std::max(0.0,
+              glm::dot(x - p[static_cast<std::size_t>(a)], ab) /
+                std::max(glm::dot(ab, ab), 1e-300)));
+          const double d = glm::length(x - (p[static_cast<std::size_t>(a)] + t * ab));
+          if (d < edgeBest)
+          {
+            edgeBest = d;
+            w[0] = w[1] = w[2] = 0.0;
+            w[a] = 1.0 - t;
+            w[b] = t;
+          }
+        }
+      }
+      const glm::dvec3 c = w[0] * p[0] + w[1] * p[1] + w[2] * p[2];
+      const double d = glm::length(x - c);
+      if (d < best)
+      {
+        best = d;
+        std::copy(w, w + 3, bestW);
+        bestTri = &tri;
+      }
+    }
+    if (bestTri)
+    {
+      out.push_back(SurfaceTriangles::MakeSample(*bestTri, bestW, eye));
+      std::printf("  --at (%.4g, %.4g, %.4g): surface point %.3g away, normal (%.3f, %.3f, %.3f)\n",
+        x.x, x.y, x.z, best, out.back().N.x, out.back().N.y, out.back().N.z);
+    }
+  }
+  return out;
+}
+
+/// Area-weighted points on the renderer's actors, inside the camera frustum, facing it.
+std::vector<Sample> SampleSurfaces(vtkRenderer* ren, int count, unsigned seed)
+{
+  const SurfaceTriangles surface(ren);
+  const std::vector<SurfaceTriangles::Tri>& tris = surface.Tris;
+  const std::vector<double>& cumulative = surface.Cumulative;
+  const double total = cumulative.empty() ? 0.0 : cumulative.back();
+  const glm::dvec3 eye = GetEye(ren);
+  vtkMatrix4x4* m =
+    ren->GetActiveCamera()->GetCompositeProjectionTransformMatrix(1024.0 / 768.0, -1, 1);
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> U(0.0, 1.0);
   std::vector<Sample> out;
@@ -149,7 +277,7 @@ std::vector<Sample> SampleSurfaces(vtkRenderer* ren, int count, unsigned seed)
     const std::size_t t = std::min(tris.size() - 1,
       static_cast<std::size_t>(
         std::lower_bound(cumulative.begin(), cumulative.end(), pick) - cumulative.begin()));
-    const Tri& tri = tris[t];
+    const SurfaceTriangles::Tri& tri = tris[t];
     double r1 = U(rng), r2 = U(rng);
     if (r1 + r2 > 1.0)
     {
@@ -157,36 +285,15 @@ std::vector<Sample> SampleSurfaces(vtkRenderer* ren, int count, unsigned seed)
       r2 = 1.0 - r2;
     }
     const double w[3] = { 1.0 - r1 - r2, r1, r2 };
-    glm::dvec3 p(0.0), n(0.0);
-    for (int k = 0; k < 3; ++k)
-    {
-      double q[3], nk[3];
-      tri.Mesh->GetPoint(tri.Ids[k], q);
-      tri.Normals->GetTuple(tri.Ids[k], nk);
-      p += w[k] * glm::dvec3(q[0], q[1], q[2]);
-      n += w[k] * glm::dvec3(nk[0], nk[1], nk[2]);
-    }
+    const Sample s = SurfaceTriangles::MakeSample(tri, w, eye);
     double clip[4];
-    const double hp[4] = { p.x, p.y, p.z, 1.0 };
+    const double hp[4] = { s.P.x, s.P.y, s.P.z, 1.0 };
     m->MultiplyPoint(hp, clip);
     if (!(clip[3] > 0.0) || std::abs(clip[0]) > clip[3] || std::abs(clip[1]) > clip[3] ||
       std::abs(clip[2]) > clip[3])
     {
       continue;
     }
-    Sample s;
-    s.P = p;
-    s.V = glm::normalize(eye - p);
-    s.N = glm::normalize(n);
-    if (glm::dot(s.N, s.V) < 0.0)
-    {
-      s.N = -s.N; // VTK flips back faces
-    }
-    double c[3];
-    tri.Property->GetDiffuseColor(c);
-    s.Kd = tri.Property->GetDiffuse() * glm::dvec3(c[0], c[1], c[2]);
-    s.Ks = tri.Property->GetSpecular();
-    s.Power = tri.Property->GetSpecularPower();
     out.push_back(s);
   }
   return out;
@@ -691,7 +798,7 @@ void PrintWorstSamples(const std::vector<Sample>& samples, const std::vector<glm
 void PrintSpecularBins(const std::vector<Sample>& samples, const std::vector<glm::dvec3>& exact,
   const std::vector<glm::dvec3>& approx, const std::vector<PreparedLight>& lights,
   const std::vector<double>& radii, const FarFieldGrid& grid, const std::vector<double>& values,
-  const std::vector<double>& binCounts, const std::vector<float>& productBins)
+  const std::vector<double>& binCounts, const std::vector<float>& productBins, bool eachPoint)
 {
   std::vector<SpecularBinTable> tables;
   for (double k : binCounts)
@@ -832,10 +939,24 @@ void PrintSpecularBins(const std::vector<Sample>& samples, const std::vector<glm
   for (std::size_t i = 0; i < samples.size(); ++i)
   {
     const Parts& p = parts[i];
-    productBinsErrors.Add(exact[i], approx[i] + (p.Product - p.GridS) * samples[i].Ks);
+    const glm::dvec3 withBins = approx[i] + (p.Product - p.GridS) * samples[i].Ks;
+    productBinsErrors.Add(exact[i], withBins);
     for (int c = 0; c < 3; ++c)
     {
       productBinsKernel += std::abs(p.Product[c] - p.TrueS[c]) * samples[i].Ks;
+    }
+    if (eachPoint)
+    {
+      // --at: each point's error in steps, per channel, with the moments and with the bins.
+      const glm::dvec3 a = 255.0 * (approx[i] - exact[i]), b = 255.0 * (withBins - exact[i]);
+      const glm::dvec3 t = 255.0 * samples[i].Ks * p.TrueS, g = 255.0 * samples[i].Ks * p.GridS,
+                       q = 255.0 * samples[i].Ks * p.Product;
+      std::printf("    point %zu: exact (%.2f, %.2f, %.2f)\n", i, 255.0 * exact[i].x,
+        255.0 * exact[i].y, 255.0 * exact[i].z);
+      std::printf("    point %zu: error with the moments (%+.2f, %+.2f, %+.2f), with the bins "
+                  "(%+.2f, %+.2f, %+.2f); far specular true (%.2f, %.2f, %.2f), moments (%.2f, "
+                  "%.2f, %.2f), bins (%.2f, %.2f, %.2f)\n",
+        i, a.x, a.y, a.z, b.x, b.y, b.z, t.x, t.y, t.z, g.x, g.y, g.z, q.x, q.y, q.z);
     }
   }
   productBinsErrors.Print("    the product's bins (tree build)", 0.0, 0);
@@ -898,6 +1019,8 @@ int main(int argc, char* argv[])
   bool copies = false;
   int worst = -1;
   std::vector<double> specularBins;
+  std::vector<double> atPoints;
+  bool passRegion = false;
   double intensity = -1.0;
   auto parseList = [](const char* text, double (*f)(double))
   {
@@ -991,11 +1114,25 @@ int main(int argc, char* argv[])
     {
       worst = std::atoi(argv[++i]);
     }
+    else if (a == "--at" && value)
+    {
+      atPoints = parseList(argv[++i], same);
+      passRegion = true;
+    }
+    else if (a == "--pass-region")
+    {
+      passRegion = true;
+    }
     else
     {
       std::fprintf(stderr, "unknown or incomplete option %s\n", a.c_str());
       return EXIT_FAILURE;
     }
+  }
+  if (atPoints.size() % 3 != 0)
+  {
+    std::fprintf(stderr, "--at takes x,y,z triples\n");
+    return EXIT_FAILURE;
   }
   if (cutoffs.empty() || nodeTargets.empty() || cellsPerRadius.empty())
   {
@@ -1070,7 +1207,20 @@ int main(int argc, char* argv[])
     set->GetAttenuation(i, v);
     s.Attenuation = glm::dvec3(v[0], v[1], v[2]);
   }
-  const std::vector<Sample> samples = SampleSurfaces(ctx.GetRenderer(), samplesCount, 3);
+  std::vector<Sample> samples;
+  if (atPoints.empty())
+  {
+    samples = SampleSurfaces(ctx.GetRenderer(), samplesCount, 3);
+  }
+  else
+  {
+    std::vector<glm::dvec3> points;
+    for (std::size_t k = 0; k < atPoints.size(); k += 3)
+    {
+      points.emplace_back(atPoints[k], atPoints[k + 1], atPoints[k + 2]);
+    }
+    samples = SampleSurfacesAt(ctx.GetRenderer(), points);
+  }
   std::printf("scene %s: %zu lights, %zu surface samples\n", sceneName.c_str(), sources.size(),
     samples.size());
 
@@ -1093,13 +1243,25 @@ int main(int argc, char* argv[])
     });
 
   glm::dvec3 lo(1e300), hi(-1e300);
-  for (const Sample& s : samples)
+  if (passRegion)
   {
-    lo = glm::min(lo, s.P);
-    hi = glm::max(hi, s.P);
+    // The pass's region: the visible props' bounds (vtkClusteredLightingPass).
+    double b[6];
+    ctx.GetRenderer()->ComputeVisiblePropBounds(b);
+    lo = glm::dvec3(b[0], b[2], b[4]);
+    hi = glm::dvec3(b[1], b[3], b[5]);
   }
-  // The region as the pass adopts it: the samples' box grown by FarFieldRegionMargin, the
-  // grid's node planes through the box's lower corner (vtkClusteredLightingAssigner).
+  else
+  {
+    // The samples' box: the visible surfaces inside the frustum.
+    for (const Sample& s : samples)
+    {
+      lo = glm::min(lo, s.P);
+      hi = glm::max(hi, s.P);
+    }
+  }
+  // The region as the pass adopts it: the box grown by FarFieldRegionMargin, the grid's
+  // node planes through the box's lower corner (vtkClusteredLightingAssigner).
   const glm::dvec3 anchor = lo, grow = FarFieldRegionMargin * (hi - lo);
   lo -= grow;
   hi += grow;
@@ -1240,8 +1402,8 @@ int main(int argc, char* argv[])
           }
           if (!specularBins.empty() && plan.Active)
           {
-            PrintSpecularBins(
-              samples, exact, approx, lights, radii, grid, values, specularBins, productBins);
+            PrintSpecularBins(samples, exact, approx, lights, radii, grid, values, specularBins,
+              productBins, !atPoints.empty());
           }
           char name[160];
           if (farCutoffs)

@@ -1,0 +1,84 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// 65,536 lights within 2 steps of brute force (issue 11's target): the benchmark's bunny
+// scene (uniform inverse-square lights in the box over the bunny and its floor, no radius)
+// with the far field made finer at the same near radii (FarFieldCellsPerRadius 3 at
+// 110,592 nodes: the default's near radius of 2 spacings at 32,768 nodes) and the far
+// specular from its directional bins (FarFieldSpecularBins). With the defaults the
+// benchmark's 1024x768 image is 3 steps off at 302 pixels (the far field's interpolation
+// and its order-2 specular lobe, docs/far-field.md, "The 65,536-light image within 2
+// steps"). Checks, at 320x240 (brute force at 65,536 lights is slow on llvmpipe):
+//  - every light is split and the bins are read;
+//  - zero false negatives, every pixel within the stated bound of brute force, no NaN
+//    (CheckClusteredFrame);
+//  - every pixel within 2 steps of brute force, under 1% of them more than one step off.
+#include "ClusteredLightingScenes.h"
+#include "ClusteredLightingTestUtilities.h"
+
+#include "vtkCamera.h"
+#include "vtkClusteredLightSet.h"
+#include "vtkClusteredLightingPass.h"
+
+#include <cstdio>
+
+int TestClusteredLightingManyLightsAccurate(int, char*[])
+{
+  vtkSmartPointer<vtkPolyData> bunny = ClusteredLightingScenes::LoadBunny(0);
+  if (!bunny)
+  {
+    std::printf("bunny mesh missing: %s\n", ClusteredLightingScenes::BunnyPath().c_str());
+    return EXIT_FAILURE;
+  }
+  int failed = 0;
+  auto check = [&](bool ok, const std::string& what)
+  {
+    std::printf("%s: %s\n", ok ? "ok" : "FAILED", what.c_str());
+    failed += ok ? 0 : 1;
+  };
+  vtkNew<vtkRenderWindow> rw;
+  rw->SetSize(320, 240);
+  rw->SetMultiSamples(0);
+  vtkNew<vtkRenderer> ren;
+  ren->SetBackground(0.02, 0.02, 0.03);
+  ren->AutomaticLightCreationOff();
+  rw->AddRenderer(ren);
+  ClusteredLightingScenes::AddBunnyScene(ren, bunny);
+  const double eye[3] = { 0.0, 1.6, 4.6 };
+  ren->GetActiveCamera()->SetPosition(eye);
+  ren->GetActiveCamera()->SetFocalPoint(0.0, -0.3, 0.0);
+  ren->GetActiveCamera()->SetViewAngle(40.0);
+  ren->ResetCameraClippingRange();
+
+  // The benchmark's uniform lights: attenuation (1, 0, k) with an influence radius of 0.35
+  // at the cutoff, intensity 1, random colours, no radius.
+  const int n = 65536;
+  vtkNew<vtkClusteredLightSet> lights;
+  ClusteredLightingScenes::LightParameters params;
+  params.Intensity = 1.0;
+  params.TargetRadius = 0.35;
+  const double lo[3] = { -3.0, -0.98, -3.0 }, hi[3] = { 3.0, 1.0, 3.0 };
+  ClusteredLightingScenes::MakeLights(
+    lights, n, ClusteredLightingScenes::Layout::Uniform, lo, hi, params, 7, eye);
+
+  vtkNew<vtkClusteredLightingPass> pass;
+  pass->AddLightSet(lights);
+  pass->SetFarFieldCellsPerRadius(3.0);
+  pass->SetFarFieldResolution(110592);
+  pass->SetFarFieldSpecularBins(true);
+  ren->SetPass(pass);
+  rw->Render();
+
+  check(pass->GetNumberOfFarFieldLights() == n, "every light is split");
+  check(pass->GetFarFieldSpecularBinsUsed(), "the far specular's bins are read");
+  ClusteredLightingTest::BruteForceCheck comparison;
+  // Bunny: Diffuse 1 + Specular 0.3; floor: Diffuse 1.
+  check(ClusteredLightingTest::CheckClusteredFrame(
+          pass, rw, ren, 1.3, "65536 lights", 0, &comparison) == 0,
+    "within the stated bound of brute force, zero false negatives, finite");
+  const double maxSteps = 255.0 * comparison.Image.MaxAbsError;
+  std::printf("65536 lights: max %.2f steps, RMSE %.3f steps, %.3f%% of pixels over one step\n",
+    maxSteps, 255.0 * comparison.Image.RMSE, 100.0 * comparison.Image.FractionOverOneStep);
+  // Whole steps (8-bit images), read back as floats.
+  check(maxSteps < 2.5, "within 2 steps of brute force at every pixel");
+  check(comparison.Image.FractionOverOneStep < 0.01, "under 1% of pixels more than a step off");
+  return failed == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}

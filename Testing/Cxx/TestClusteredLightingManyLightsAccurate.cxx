@@ -11,6 +11,8 @@
 //  - zero false negatives, every pixel within the stated bound of brute force, no NaN
 //    (CheckClusteredFrame);
 //  - every pixel within 2 steps of brute force, under 1% of them more than one step off.
+// Measured: max 2 steps, RMSE 0.408, 0.25% of the pixels over a step; with the defaults
+// the same render is max 3 and 1.55%, with the bins alone max 3 and 1.27%.
 #include "ClusteredLightingScenes.h"
 #include "ClusteredLightingTestUtilities.h"
 

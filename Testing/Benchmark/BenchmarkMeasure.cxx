@@ -58,11 +58,18 @@ double Median(std::vector<double> v)
 }
 
 //------------------------------------------------------------------------------
-void CompareWithReference(const std::vector<float>& img, const std::vector<float>& ref, Row& row)
+// The row's error statistics against the reference; with `perPixel`, each pixel's largest
+// channel error too (colour units).
+void CompareWithReference(const std::vector<float>& img, const std::vector<float>& ref, Row& row,
+  std::vector<double>* perPixel = nullptr)
 {
   if (img.size() != ref.size() || ref.empty())
   {
     return;
+  }
+  if (perPixel)
+  {
+    perPixel->resize(ref.size() / 3);
   }
   double maxErr = 0.0, sum = 0.0, signedSum = 0.0;
   std::size_t over = 0;
@@ -80,6 +87,10 @@ void CompareWithReference(const std::vector<float>& img, const std::vector<float
     }
     maxErr = std::max(maxErr, worst);
     over += worst > 1.5 / 255.0 ? 1 : 0;
+    if (perPixel)
+    {
+      (*perPixel)[p] = worst;
+    }
   }
   row.MaxError = maxErr;
   row.RMSE = std::sqrt(sum / (3.0 * pixels));
@@ -296,11 +307,12 @@ void Context::MakeReference()
 // place (pixel, depth, world point and normal), its channels against the reference, and
 // the far field's stated bound there (the GL tests' per-pixel bound,
 // ClusteredLightingTestUtilities.h), which tells the far field's error from the rest.
-void Context::PrintWorstPixels(const Row& row, const std::vector<float>& img)
+void Context::PrintWorstPixels(
+  const Row& row, const std::vector<float>& img, const std::vector<double>& pixelErrors)
 {
   const int* size = this->Window->GetSize();
   const std::size_t pixels = img.size() / 3;
-  if (pixels != static_cast<std::size_t>(size[0]) * size[1] || img.size() != this->Reference.size())
+  if (pixels != static_cast<std::size_t>(size[0]) * size[1] || pixelErrors.size() != pixels)
   {
     return;
   }
@@ -308,14 +320,8 @@ void Context::PrintWorstPixels(const Row& row, const std::vector<float>& img)
   std::size_t overTwo = 0;
   for (std::size_t p = 0; p < pixels; ++p)
   {
-    double worst = 0.0;
-    for (int c = 0; c < 3; ++c)
-    {
-      worst =
-        std::max(worst, std::abs(double(img[3 * p + c]) - double(this->Reference[3 * p + c])));
-    }
-    errors[p] = { worst, p };
-    overTwo += worst > 2.5 / 255.0 ? 1 : 0;
+    errors[p] = { pixelErrors[p], p };
+    overTwo += pixelErrors[p] > 2.5 / 255.0 ? 1 : 0;
   }
   const std::size_t k = std::min<std::size_t>(static_cast<std::size_t>(this->WorstPixels), pixels);
   std::partial_sort(errors.begin(), errors.begin() + static_cast<std::ptrdiff_t>(k), errors.end(),
@@ -326,12 +332,8 @@ void Context::PrintWorstPixels(const Row& row, const std::vector<float>& img)
   int w = 0, h = 0;
   const std::vector<float> depth =
     ClusteredLightingTest::CaptureDepth(this->Window, this->Renderer, w, h);
-  const int previous = this->Pass->GetDebugView();
-  this->Pass->SetDebugView(vtkClusteredLightingPass::DEBUG_NORMAL);
-  this->Window->Render();
-  const std::vector<float> normals = ClusteredLightingImages::CaptureRGB(this->Window);
-  this->Pass->SetDebugView(previous);
-  this->Window->Render();
+  const std::vector<float> normals =
+    ClusteredLightingTest::CaptureNormalView(this->Pass, this->Window);
   std::vector<char> needed(pixels, 0);
   for (std::size_t i = 0; i < k; ++i)
   {
@@ -339,7 +341,7 @@ void Context::PrintWorstPixels(const Row& row, const std::vector<float>& img)
   }
   const glm::dmat4 inverse = glm::inverse(frame.VCDC);
   const std::vector<double> bounds = ClusteredLightingTest::ComputeFarFieldBounds(
-    this->Pass, this->Window, this->Renderer, frame, depth, w, h, inverse, 0, &needed);
+    this->Pass, this->Window, this->Renderer, frame, depth, w, h, inverse, 0, &needed, &normals);
   const glm::dmat4 worldFromVC = glm::inverse(frame.WCVC);
   std::printf("  worst pixels of %s/%s/%d/%s/%s/%s (8-bit steps; world point, view normal; "
               "%zu pixels more than 2 steps off):\n",
@@ -620,10 +622,12 @@ Row Context::Measure(const Step& step)
   this->SetView();
   this->Window->Render();
   const std::vector<float> image = ClusteredLightingImages::CaptureRGB(this->Window);
-  CompareWithReference(image, this->Reference, row);
-  if (clustered && this->WorstPixels > 0 && !this->Reference.empty())
+  const bool worst = clustered && this->WorstPixels > 0 && !this->Reference.empty();
+  std::vector<double> pixelErrors;
+  CompareWithReference(image, this->Reference, row, worst ? &pixelErrors : nullptr);
+  if (worst)
   {
-    this->PrintWorstPixels(row, image);
+    this->PrintWorstPixels(row, image, pixelErrors);
   }
   if (clustered && step.Counts)
   {

@@ -128,7 +128,8 @@ public:
 private:
   void MeasureCullingFloor(Row& row);
   void MeasureCounts(Row& row);
-  void PrintWorstPixels(const Row& row, const std::vector<float>& img);
+  void PrintWorstPixels(
+    const Row& row, const std::vector<float>& img, const std::vector<double>& pixelErrors);
   void NudgeLights(int frame);
   void AddStockLights(std::vector<vtkSmartPointer<vtkLight>>& added);
   void RemoveRendererLights();

@@ -384,6 +384,19 @@ struct SnapshotFarField
   const vtkClusteredLighting::FarFieldBuildInputs Inputs;
 };
 
+/// The pass's DEBUG_NORMAL view of the window (view-space normals as colours, n * 0.5 +
+/// 0.5), rendered and captured; the debug view is put back and the window rendered again.
+inline std::vector<float> CaptureNormalView(vtkClusteredLightingPass* pass, vtkRenderWindow* rw)
+{
+  const int previous = pass->GetDebugView();
+  pass->SetDebugView(vtkClusteredLightingPass::DEBUG_NORMAL);
+  rw->Render();
+  std::vector<float> normals = CapturePixels(rw);
+  pass->SetDebugView(previous);
+  rw->Render();
+  return normals;
+}
+
 /**
  * The far field's stated bound (vtkClusteredLightingFarFieldBound.h) at every pixel of a
  * renderer's viewport, largest channel, in colour units, row-major from the bottom (0 off
@@ -392,24 +405,25 @@ struct SnapshotFarField
  * the renderer's actors (CollectMaterials, one per specular power). With raySamples > 0 the bound
  * is the largest over that many points along the ray up to the opaque surface, each with the
  * pixel's normal and its opposite (translucent layers in front). With `needed`, only the pixels it
- * marks (others stay 0).
+ * marks (others stay 0). `normalView`, when given, is the caller's CaptureNormalView of
+ * this frame (not rendered again).
  */
 inline std::vector<double> ComputeFarFieldBounds(vtkClusteredLightingPass* pass,
   vtkRenderWindow* rw, vtkRenderer* ren, const vtkClusteredLightingAssignmentSnapshot& frame,
   const std::vector<float>& depth, int w, int h, const glm::dmat4& inverseVCDC, int raySamples,
-  const std::vector<char>* needed = nullptr)
+  const std::vector<char>* needed = nullptr, const std::vector<float>* normalView = nullptr)
 {
   std::vector<double> bounds(static_cast<std::size_t>(w) * h, 0.0);
   if (!frame.FarField.Active)
   {
     return bounds;
   }
-  const int previous = pass->GetDebugView();
-  pass->SetDebugView(vtkClusteredLightingPass::DEBUG_NORMAL);
-  rw->Render();
-  const std::vector<float> normals = CapturePixels(rw);
-  pass->SetDebugView(previous);
-  rw->Render();
+  std::vector<float> rendered;
+  if (!normalView)
+  {
+    rendered = CaptureNormalView(pass, rw);
+  }
+  const std::vector<float>& normals = normalView ? *normalView : rendered;
 
   const SnapshotFarField farField(frame);
   const vtkClusteredLighting::FarFieldBuildInputs& in = farField.Inputs;

@@ -2,8 +2,10 @@
 #include "vtkClusteredLightingAssigner.h"
 
 #include "vtkCamera.h"
+#include "vtkClusteredLightingFarFieldBlocks.h"
 #include "vtkClusteredLightingLightCollector.h"
 #include "vtkClusteredLightingRasterBackend.h"
+#include "vtkClusteredLightingSurfaceBoxes.h"
 #include "vtkCommand.h"
 #include "vtkMatrix3x3.h"
 #include "vtkMatrix4x4.h"
@@ -307,7 +309,25 @@ const vtkClusteredLightingAssignment& vtkClusteredLightingAssigner::Update(
   r.Grid[1] = inputs.View.Grid.TilesY;
   r.Grid[2] = inputs.View.Grid.Slices;
 
-  // 4. Light records, uploaded only when the lights changed.
+  // 4. Light records, uploaded only when the lights changed. The far field is summed on
+  // the blocks the surfaces read: all of them when the lights changed, else those that
+  // surfaces reached since (a prop that moved or appeared).
+  if (r.Enabled && this->FarFieldPlan.Active)
+  {
+    this->UpdateFarFieldBlocks(inputs);
+  }
+  r.FarFieldNodesBuilt = 0;
+  if (r.Enabled && this->LightDataUploaded && this->FarFieldPlan.Active &&
+    this->FarField.GetNumberOfGLObjects() > 0 &&
+    this->FarField.IsMissingBlocks(this->FarFieldNeeded))
+  {
+    if (!this->FarField.Extend(rw, this->FarFieldPlan, prepared.Lights, this->FarFieldNeeded))
+    {
+      r.NewError = "Could not upload the far field (its RGBA32F 3D textures).";
+    }
+    r.FarFieldBuildTime = this->FarField.GetBuildTime();
+    r.FarFieldNodesBuilt = this->FarField.GetNodesBuilt();
+  }
   if (r.Enabled && !this->LightDataUploaded)
   {
     this->LightData.Upload(rw, PackLightData(prepared.Lights));
@@ -317,8 +337,10 @@ const vtkClusteredLightingAssignment& vtkClusteredLightingAssigner::Update(
     r.FarField = false;
     if (this->FarFieldPlan.Active)
     {
-      r.FarField = this->FarField.Build(rw, this->FarFieldPlan, prepared.Lights);
+      r.FarField =
+        this->FarField.Build(rw, this->FarFieldPlan, prepared.Lights, &this->FarFieldNeeded);
       r.FarFieldBuildTime = this->FarField.GetBuildTime();
+      r.FarFieldNodesBuilt = this->FarField.GetNodesBuilt();
       if (!r.FarField)
       {
         r.NewError = "Could not upload the far field (its RGBA32F 3D textures).";
@@ -342,6 +364,12 @@ const vtkClusteredLightingAssignment& vtkClusteredLightingAssigner::Update(
   r.NumberOfFarFieldLights = static_cast<int>(this->FarFieldPlan.NumberOfFarFieldLights);
   r.NumberOfPackedFarFieldLights = static_cast<int>(this->FarFieldPlan.NumberOfPackedNearRadii);
   r.FarFieldSpacing = this->FarFieldPlan.Active ? this->FarFieldPlan.Grid.Spacing : 0.0;
+  r.FarFieldBlocks =
+    this->FarFieldPlan.Active ? GetNumberOfFarFieldBlocks(this->FarFieldPlan.Grid) : 0;
+  r.FarFieldBlocksNeeded = this->FarFieldPlan.Active
+    ? static_cast<std::int64_t>(std::count_if(this->FarFieldNeeded.begin(),
+        this->FarFieldNeeded.end(), [](std::uint64_t nodes) { return nodes != 0; }))
+    : 0;
   r.NearRadiusCap = this->FarFieldPlan.Active ? this->FarFieldPlan.NearRadiusCap : 0.0;
   for (int a = 0; a < 3; ++a)
   {
@@ -401,6 +429,37 @@ const vtkClusteredLightingAssignment& vtkClusteredLightingAssigner::Update(
     16u * (this->LightData.GetNumberOfTexels() + this->LightView.GetNumberOfTexels()) +
     this->Backend->GetWorkBytes();
   return r;
+}
+
+//------------------------------------------------------------------------------
+// The blocks are marked again only when the surfaces' boxes or the grid changed: lights
+// that move every frame reuse the marks.
+void vtkClusteredLightingAssigner::UpdateFarFieldBlocks(
+  const vtkClusteredLightingAssignerInputs& inputs)
+{
+  const vtkClusteredLighting::FarFieldGrid& grid = this->FarFieldPlan.Grid;
+  const std::size_t blocks = static_cast<std::size_t>(GetNumberOfFarFieldBlocks(grid));
+  const vtkClusteredLightingSurfaceBoxes* surfaces = inputs.Surfaces;
+  const bool everywhere = !surfaces || surfaces->GetEverywhere();
+  const std::uint64_t version = surfaces ? surfaces->GetVersion() : 0;
+  if (this->FarFieldNeeded.size() == blocks && everywhere == this->NeededEverywhere &&
+    (everywhere || version == this->NeededVersion) && grid.Origin == this->NeededGrid.Origin &&
+    grid.Spacing == this->NeededGrid.Spacing && grid.Dims == this->NeededGrid.Dims)
+  {
+    return;
+  }
+  this->NeededEverywhere = everywhere;
+  this->NeededVersion = version;
+  this->NeededGrid = grid;
+  this->FarFieldNeeded.assign(blocks, everywhere ? vtkClusteredLighting::FarFieldAllNodes : 0);
+  if (!everywhere)
+  {
+    const std::vector<glm::dvec3>& boxes = surfaces->GetBoxes();
+    for (std::size_t i = 0; i + 1 < boxes.size(); i += 2)
+    {
+      vtkClusteredLighting::MarkFarFieldBlocks(grid, boxes[i], boxes[i + 1], this->FarFieldNeeded);
+    }
+  }
 }
 
 //------------------------------------------------------------------------------

@@ -72,6 +72,7 @@
 #include <vector>  // for std::vector
 
 class vtkClusteredLightingAssignmentBackend;
+class vtkClusteredLightingSurfaceBoxes;
 class vtkRenderer;
 struct vtkClusteredLightingLightCollection;
 
@@ -114,6 +115,9 @@ struct vtkClusteredLightingAssignerInputs
   vtkClusteredLighting::FarFieldOptions FarField;
   /// World box of the geometry to shade (the far field's region; invalid: the lights' box).
   glm::dvec3 RegionLo = glm::dvec3(1.0), RegionHi = glm::dvec3(-1.0);
+  /// Where surfaces lie: the far field sums only the blocks they read (nullptr: every
+  /// block; vtkClusteredLightingFarFieldBlocks.h).
+  const vtkClusteredLightingSurfaceBoxes* Surfaces = nullptr;
   vtkClusteredLighting::ViewParameters View; ///< see vtkClusteredLightingAssigner::ComputeView
   bool Clustered = true;                     ///< false: brute force (no list and master passes)
   bool PerClusterCulling = true;
@@ -170,8 +174,12 @@ struct vtkClusteredLightingAssignment
   int NumberOfFarFieldLights = 0;
   int NumberOfPackedFarFieldLights = 0; ///< FarFieldPlan::NumberOfPackedNearRadii
   double FarFieldBuildTime = 0.0;       ///< ms, the last build
-  double FarFieldSpacing = 0.0;         ///< grid spacing h (world units)
-  double NearRadiusCap = 0.0;           ///< near radius of bright and always-on lights
+  /// Nodes the last build summed (the blocks surfaces read; a build that only adds blocks
+  /// for surfaces that moved counts those), and the blocks the grid has and surfaces read.
+  std::int64_t FarFieldNodesBuilt = 0;
+  std::int64_t FarFieldBlocks = 0, FarFieldBlocksNeeded = 0;
+  double FarFieldSpacing = 0.0; ///< grid spacing h (world units)
+  double NearRadiusCap = 0.0;   ///< near radius of bright and always-on lights
   int FarFieldDims[3] = { 0, 0, 0 };
   std::int64_t FarFieldNodesTarget = 0; ///< FarFieldOptions::TargetNodes used (0: no far field)
   /// With an error budget: the choice of the far field's resolution (Nodes 0: none made).
@@ -307,6 +315,9 @@ private:
   static vtkClusteredLighting::FarFieldBoundSummary SummarizeOnThreads(
     const vtkClusteredLighting::FarFieldBuildInputs& in);
   void UpdateRegion(const vtkClusteredLightingAssignerInputs& inputs);
+  /// The far field's blocks that the surfaces read (FarFieldNeeded), marked again when
+  /// the surfaces or the grid changed.
+  void UpdateFarFieldBlocks(const vtkClusteredLightingAssignerInputs& inputs);
   bool CheckLimits(vtkOpenGLRenderWindow* rw, vtkClusteredLightingAssignerInputs& inputs);
   void CheckCulling(const vtkClusteredLightingAssignerInputs& inputs);
   static bool ReachesEveryCluster(const vtkClusteredLighting::PreparedLight& light);
@@ -350,6 +361,12 @@ private:
   vtkClusteredLightingTextureBuffer LightView;
   vtkClusteredLighting::FarFieldPlan FarFieldPlan;
   vtkClusteredLightingFarFieldTextures FarField;
+  /// Per block of the far field's grid: its nodes some surface reads, as a mask
+  /// (UpdateFarFieldBlocks), and what they were marked from.
+  std::vector<std::uint64_t> FarFieldNeeded;
+  std::uint64_t NeededVersion = 0;
+  bool NeededEverywhere = true;
+  vtkClusteredLighting::FarFieldGrid NeededGrid;
   vtkClusteredLightingSampleDepths SampleDepths;
   vtkClusteredLightingSavedDepth SavedDepth;
   glm::dvec3 RegionLo = glm::dvec3(1.0), RegionHi = glm::dvec3(-1.0); ///< the far field's region

@@ -1,13 +1,15 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkClusteredLightingFarFieldTextures.h"
-#include "vtkClusteredLightingGLHelpers.h" // for vtkClusteredLightingReleaseObject
+#include "vtkClusteredLightingFarFieldBlocks.h" // for GetFarFieldBlocksToBuild
+#include "vtkClusteredLightingGLHelpers.h"      // for vtkClusteredLightingReleaseObject
 
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkSMPTools.h"
 #include "vtkTextureObject.h"
 #include "vtk_glew.h" // for GL enums
 
-#include <chrono> // for timings
+#include <algorithm> // for std::min
+#include <chrono>    // for timings
 
 using namespace vtkClusteredLighting;
 
@@ -38,16 +40,53 @@ vtkClusteredLightingFarFieldTextures::~vtkClusteredLightingFarFieldTextures()
 }
 
 //------------------------------------------------------------------------------
-bool vtkClusteredLightingFarFieldTextures::Build(
-  vtkOpenGLRenderWindow* rw, const FarFieldPlan& plan, const std::vector<PreparedLight>& lights)
+bool vtkClusteredLightingFarFieldTextures::Build(vtkOpenGLRenderWindow* rw,
+  const FarFieldPlan& plan, const std::vector<PreparedLight>& lights,
+  const std::vector<std::uint64_t>* needed)
+{
+  return this->Sum(rw, plan, lights, needed, true);
+}
+
+bool vtkClusteredLightingFarFieldTextures::Extend(vtkOpenGLRenderWindow* rw,
+  const FarFieldPlan& plan, const std::vector<PreparedLight>& lights,
+  const std::vector<std::uint64_t>& needed)
+{
+  return this->Sum(rw, plan, lights, &needed, false);
+}
+
+bool vtkClusteredLightingFarFieldTextures::IsMissingBlocks(
+  const std::vector<std::uint64_t>& needed) const
+{
+  for (std::size_t b = 0; b < needed.size(); ++b)
+  {
+    if (needed[b] & ~(b < this->Built.size() ? this->Built[b] : std::uint64_t{ 0 }))
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+bool vtkClusteredLightingFarFieldTextures::Sum(vtkOpenGLRenderWindow* rw, const FarFieldPlan& plan,
+  const std::vector<PreparedLight>& lights, const std::vector<std::uint64_t>* needed, bool full)
 {
   const auto t0 = std::chrono::steady_clock::now();
   const FarFieldGrid& grid = plan.Grid;
-  this->NearRadii = GetFarFieldNearRadii(lights);
-  this->Tree = BuildFarFieldLightTree(lights, this->NearRadii);
+  const std::size_t blockCount = static_cast<std::size_t>(GetNumberOfFarFieldBlocks(grid));
+  if (full || this->Built.size() != blockCount)
+  {
+    this->NearRadii = GetFarFieldNearRadii(lights);
+    this->Tree = BuildFarFieldLightTree(lights, this->NearRadii);
+    this->Built.assign(blockCount, 0);
+  }
   const std::vector<double>& nearRadii = this->NearRadii;
   const FarFieldLightTree& tree = this->Tree;
-  // Every node is written by the sums, every texel by the packing: sized, not cleared
+  // The blocks to sum: those surfaces read (every block without `needed`) that this
+  // light tree has not summed yet (vtkClusteredLightingFarFieldBlocks.h).
+  const std::vector<std::uint64_t> all(needed ? 0 : blockCount, FarFieldAllNodes);
+  const FarFieldBlockList list = GetFarFieldBlocksToBuild(needed ? *needed : all, this->Built);
+  // The sums write every node of those blocks, the packing their texels; the others keep
+  // what they held (stale or zero: finite, and read by no surface). Sized, not cleared
   // (rebuilt every frame for moving lights).
   const std::size_t nodes = static_cast<std::size_t>(grid.GetNumberOfNodes());
   this->Moments.resize(nodes * FarFieldFloatsPerNode);
@@ -91,31 +130,84 @@ bool vtkClusteredLightingFarFieldTextures::Build(
     std::vector<float>().swap(this->Bins);
     std::vector<float>().swap(this->BinTexels);
   }
-  vtkSMPTools::For(0, static_cast<vtkIdType>(GetNumberOfFarFieldBlocks(grid)), 1,
+  if (list.Blocks.empty() && !full)
+  {
+    this->NodesBuilt = 0;
+    this->BuildTime = 0.0;
+    return true; // nothing new to sum or upload
+  }
+  const vtkIdType listed = static_cast<vtkIdType>(list.Blocks.size());
+  vtkSMPTools::For(0, listed, 1,
     [&](vtkIdType b0, vtkIdType b1)
     {
       ComputeFarFieldMomentsForThisCPU(grid, lights, nearRadii, tree, plan.Grouping, b0, b1,
-        this->Moments, channel, plan.Order4Diffuse, bins ? &this->Bins : nullptr);
+        this->Moments, channel, plan.Order4Diffuse, bins ? &this->Bins : nullptr, &list);
     });
-  vtkSMPTools::For(0, static_cast<vtkIdType>(nodes), 4096,
-    [&](vtkIdType n0, vtkIdType n1)
+  // Packed block by block, the layers summed (lowest to highest asked, along the block's
+  // axis), a row of up to 4 nodes along x at a time.
+  const std::array<int, 3> blocks = GetFarFieldBlocks(grid);
+  struct Entry
+  {
+    glm::ivec3 First;       ///< the block's first node
+    glm::ivec3 Lo, Hi;      ///< the nodes summed, in the grid
+    std::uint64_t Mask = 0; ///< their bits in the block
+  };
+  auto describe = [&](std::size_t at)
+  {
+    Entry e;
+    const std::int64_t b = list.Blocks[at];
+    e.First =
+      glm::ivec3(static_cast<int>(b % blocks[0]), static_cast<int>((b / blocks[0]) % blocks[1]),
+        static_cast<int>(b / (static_cast<std::int64_t>(blocks[0]) * blocks[1]))) *
+      FarFieldBlockSize;
+    const glm::ivec3 dims(grid.Dims[0], grid.Dims[1], grid.Dims[2]);
+    e.Lo = e.First;
+    e.Hi = glm::min(e.First + FarFieldBlockSize, dims) - 1;
+    const int layerAxis = list.Axis[at];
+    int first, last;
+    GetFarFieldLayerRange(list.Layers[at], first, last);
+    e.Mask = GetFarFieldLayerMask(layerAxis, first, last);
+    e.Lo[layerAxis] = e.First[layerAxis] + first;
+    e.Hi[layerAxis] = std::min(e.Hi[layerAxis], e.First[layerAxis] + last);
+    return e;
+  };
+  vtkSMPTools::For(0, listed, 16,
+    [&](vtkIdType b0, vtkIdType b1)
     {
-      if (oneChannel)
+      for (vtkIdType at = b0; at < b1; ++at)
       {
-        PackFarFieldTexelsOneChannel(this->Moments, channel, static_cast<std::size_t>(n0),
-          static_cast<std::size_t>(n1), this->Texels);
-      }
-      else
-      {
-        PackFarFieldTexels(
-          this->Moments, static_cast<std::size_t>(n0), static_cast<std::size_t>(n1), this->Texels);
-      }
-      if (bins)
-      {
-        PackFarSpecularBinTexels(this->Bins, channel, grid.Dims, axis, static_cast<std::size_t>(n0),
-          static_cast<std::size_t>(n1), this->BinTexels);
+        const Entry e = describe(static_cast<std::size_t>(at));
+        for (int k = e.Lo.z; k <= e.Hi.z; ++k)
+        {
+          for (int j = e.Lo.y; j <= e.Hi.y; ++j)
+          {
+            const std::size_t n0 = static_cast<std::size_t>(grid.NodeIndex(e.Lo.x, j, k));
+            const std::size_t n1 = n0 + static_cast<std::size_t>(e.Hi.x - e.Lo.x + 1);
+            if (oneChannel)
+            {
+              PackFarFieldTexelsOneChannel(this->Moments, channel, n0, n1, this->Texels);
+            }
+            else
+            {
+              PackFarFieldTexels(this->Moments, n0, n1, this->Texels);
+            }
+            if (bins)
+            {
+              PackFarSpecularBinTexels(
+                this->Bins, channel, grid.Dims, axis, n0, n1, this->BinTexels);
+            }
+          }
+        }
       }
     });
+  this->NodesBuilt = 0;
+  for (std::size_t at = 0; at < list.Blocks.size(); ++at)
+  {
+    const Entry e = describe(at);
+    this->Built[static_cast<std::size_t>(list.Blocks[at])] |= e.Mask;
+    const glm::ivec3 n = e.Hi - e.Lo + 1;
+    this->NodesBuilt += static_cast<std::int64_t>(n.x) * n.y * n.z;
+  }
 
   bool ok = true;
   const bool resize = grid.Dims != this->Dims;
@@ -294,6 +386,7 @@ void vtkClusteredLightingFarFieldTextures::Release(vtkWindow* w)
   // heap, which keeps the memory (TestClusteredLightingSoak saw resident memory step up
   // by 12 to 15 MiB when they were given back here).
   vtkClusteredLightingReleaseObject(this->SpecularBins, w);
+  std::vector<std::uint64_t>().swap(this->Built); // the next sums start over
   this->Dims = { { 0, 0, 0 } };
   this->SharedColor = glm::dvec3(0.0);
   for (std::vector<float>& t : this->Texels)

@@ -12,7 +12,10 @@
  * the CPU with the light tree (ComputeFarFieldMomentsForThisCPU: blocks of 4 x 4 x 4 nodes,
  * single precision, vectorized, in a copy for AVX2 or AVX-512 where the processor has
  * them), the blocks split between threads with vtkSMPTools, then packed (in parallel,
- * into buffers kept from build to build) and uploaded.
+ * into buffers kept from build to build) and uploaded. Only the nodes that surfaces read
+ * are summed and packed, when the caller says which (vtkClusteredLightingFarFieldBlocks.h,
+ * vtkClusteredLightingPass::FarFieldSkipEmptyBlocks); Extend adds those of surfaces that
+ * moved or appeared, with the same lights. The textures are uploaded whole.
  *
  * GL objects: 14 3D textures, RGBA32F, of the grid's dimensions (54 moments per node, 224
  * bytes with the padding), linear filtering (the shading code's trilinear interpolation),
@@ -40,7 +43,7 @@
 #include "vtkClusteredLightingFarFieldTree.h" // for FarFieldPlan, the light tree (Rendering/Core)
 
 #include <array>   // for std::array
-#include <cstdint> // for std::uint64_t
+#include <cstdint> // for std::int64_t, std::uint64_t
 #include <utility> // for std::pair
 #include <vector>  // for std::vector
 
@@ -56,10 +59,26 @@ public:
 
   /**
    * Sums the far field of `lights` (PreparedLight::FarField ones) on the plan's grid and
-   * uploads it. Returns false on a GL failure. BuildTime (ms) covers the sums and upload.
+   * uploads it: the nodes marked in `needed` (a mask per block of nodes,
+   * vtkClusteredLightingFarFieldBlocks.h: those the surfaces read, taken in layers of
+   * their blocks), every node when `needed` is null. Returns false on a GL failure. BuildTime (ms)
+   * covers the sums and upload.
    */
   bool Build(vtkOpenGLRenderWindow* rw, const vtkClusteredLighting::FarFieldPlan& plan,
-    const std::vector<vtkClusteredLighting::PreparedLight>& lights);
+    const std::vector<vtkClusteredLighting::PreparedLight>& lights,
+    const std::vector<std::uint64_t>* needed = nullptr);
+  /**
+   * The same lights and plan as the last Build: sums the nodes marked in `needed` that no
+   * build since then has summed (surfaces that moved or appeared) and uploads. Nothing to
+   * sum: returns true and uploads nothing.
+   */
+  bool Extend(vtkOpenGLRenderWindow* rw, const vtkClusteredLighting::FarFieldPlan& plan,
+    const std::vector<vtkClusteredLighting::PreparedLight>& lights,
+    const std::vector<std::uint64_t>& needed);
+  /// Whether `needed` marks a node that the builds since the last Build have not summed.
+  bool IsMissingBlocks(const std::vector<std::uint64_t>& needed) const;
+  /// Nodes summed by the last Build or Extend.
+  std::int64_t GetNodesBuilt() const { return this->NodesBuilt; }
 
   double GetBuildTime() const { return this->BuildTime; }
   /// The shared colour of the last build ((0, 0, 0): three channels, 14 textures or 7).
@@ -94,6 +113,10 @@ public:
 private:
   vtkClusteredLightingFarFieldTextures(const vtkClusteredLightingFarFieldTextures&) = delete;
   void operator=(const vtkClusteredLightingFarFieldTextures&) = delete;
+  /// Build (full: a new light tree, nothing summed yet) and Extend.
+  bool Sum(vtkOpenGLRenderWindow* rw, const vtkClusteredLighting::FarFieldPlan& plan,
+    const std::vector<vtkClusteredLighting::PreparedLight>& lights,
+    const std::vector<std::uint64_t>* needed, bool full);
 
   std::array<vtkTextureObject*, vtkClusteredLighting::FarFieldTextures> Textures{};
   vtkTextureObject* LobeTable = nullptr;    ///< the lit-side lobe's coefficients
@@ -105,6 +128,8 @@ private:
   std::array<int, 3> Dims = { { 0, 0, 0 } };
   std::vector<double> Moments; ///< node sums, reused from build to build (animated lights)
   std::array<std::vector<float>, vtkClusteredLighting::FarFieldTextures> Texels; ///< packed, reused
+  std::vector<std::uint64_t> Built; ///< per block: its nodes summed for the current lights
+  std::int64_t NodesBuilt = 0;
   std::vector<double> NearRadii;
   vtkClusteredLighting::FarFieldLightTree Tree;
   glm::dvec3 SharedColor = glm::dvec3(0.0);

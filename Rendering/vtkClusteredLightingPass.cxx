@@ -17,6 +17,7 @@
 #include "vtkClusteredLightingSampleZero.h"
 #include "vtkClusteredLightingShaderCode.h"
 #include "vtkClusteredLightingShaderVariant.h"
+#include "vtkClusteredLightingSurfaceBoxes.h"
 #include "vtkClusteredLightingTranslucentStep.h"
 #include "vtkClusteredLightingVolumetricStep.h"
 #include "vtkLight.h"
@@ -420,6 +421,8 @@ struct vtkClusteredLightingPass::vtkInternals
     /// The renderer's own prepass: its readback and the signature of the depths it saved
     /// (ReuseDepthPrepass), so that renderers sharing the pass each reuse theirs.
     vtkSmartPointer<vtkClusteredLightingDepthPrepass> Prepass;
+    /// Where the renderer's surfaces lie (FarFieldSkipEmptyBlocks).
+    vtkClusteredLightingSurfaceBoxes Surfaces;
   };
   std::map<vtkRenderer*, RendererEntry> Renderers;
   std::vector<vtkSmartPointer<vtkClusteredLightSet>> LightSets;
@@ -1047,6 +1050,12 @@ vtkClusteredLightingAssignerInputs vtkClusteredLightingPass::MakeAssignerInputs(
   }
   in.RegionLo = glm::dvec3(bounds[0], bounds[2], bounds[4]);
   in.RegionHi = glm::dvec3(bounds[1], bounds[3], bounds[5]);
+  if (this->FarField && this->FarFieldSkipEmptyBlocks)
+  {
+    vtkClusteredLightingSurfaceBoxes& surfaces = this->Internals->GetEntry(ren).Surfaces;
+    surfaces.Update(ren);
+    in.Surfaces = &surfaces;
+  }
   vtkClusteredLightingGridOptions grid;
   grid.TilesX = this->TilesX;
   grid.TilesY = this->TilesY;
@@ -1169,6 +1178,9 @@ void vtkClusteredLightingPass::ReportAssignment(const vtkClusteredLightingAssign
   this->NumberOfFarFieldLights = r.FarField ? r.NumberOfFarFieldLights : 0;
   this->NumberOfPackedFarFieldLights = r.FarField ? r.NumberOfPackedFarFieldLights : 0;
   this->LastFarFieldBuildTime = r.FarFieldBuildTime;
+  this->NumberOfFarFieldNodesBuilt = r.FarField ? r.FarFieldNodesBuilt : 0;
+  this->NumberOfFarFieldBlocks = r.FarField ? r.FarFieldBlocks : 0;
+  this->NumberOfFarFieldBlocksRead = r.FarField ? r.FarFieldBlocksNeeded : 0;
   this->FarFieldGridSpacing = r.FarField ? r.FarFieldSpacing : 0.0;
   this->NearRadiusCap = r.FarField ? r.NearRadiusCap : 0.0;
   for (int a = 0; a < 3; ++a)
@@ -1692,6 +1704,8 @@ void vtkClusteredLightingPass::PrintSelf(ostream& os, vtkIndent indent)
   os << next << "FarFieldSharedColor: " << (this->FarFieldSharedColor ? "On" : "Off") << "\n";
   os << next << "FarFieldOrder4Diffuse: " << (this->FarFieldOrder4Diffuse ? "On" : "Off") << "\n";
   os << next << "FarFieldSpecularBins: " << (this->FarFieldSpecularBins ? "On" : "Off") << "\n";
+  os << next << "FarFieldSkipEmptyBlocks: " << (this->FarFieldSkipEmptyBlocks ? "On" : "Off")
+     << "\n";
   const double* r = this->FarFieldRegion;
   os << next << "FarFieldRegion: ";
   if (vtkBoundingBox::IsValid(r))
@@ -1732,6 +1746,9 @@ void vtkClusteredLightingPass::PrintSelf(ostream& os, vtkIndent indent)
      << "\n";
   os << next << "FarFieldSpecularBinsUsed: " << (this->FarFieldSpecularBinsUsed ? "yes" : "no")
      << "\n";
+  os << next << "NumberOfFarFieldNodesBuilt: " << this->NumberOfFarFieldNodesBuilt << "\n";
+  os << next << "NumberOfFarFieldBlocksRead: " << this->NumberOfFarFieldBlocksRead << " of "
+     << this->NumberOfFarFieldBlocks << "\n";
   os << next << "ClusterGridInUse: " << this->ClusterGridInUse[0] << " x "
      << this->ClusterGridInUse[1] << " x " << this->ClusterGridInUse[2] << "\n";
   os << next << "ClusteringBypassed: " << (this->ClusteringBypassed ? "yes" : "no") << "\n";

@@ -515,6 +515,26 @@ public:
 
   //@{
   /**
+   * Advanced: sum the far field only in the blocks of 4 x 4 x 4 grid nodes that the
+   * visible props' surfaces read (Rendering/Core/vtkClusteredLightingFarFieldBlocks.h).
+   * The grid fills the box of the visible geometry, but a floor and a model touch a small
+   * part of its volume, so where lights move every frame this cuts each rebuild to that
+   * part. Where the surfaces lie is read from the props, not the camera: actors of VTK's
+   * own classes whose mappers draw their input as it is (vtkOpenGLPolyDataMapper,
+   * vtkCompositePolyDataMapper2) give a box per cell, any other prop its bounds, and an
+   * actor that draws lines as tubes or points as spheres every block. A prop that moves or
+   * appears later gets its blocks summed in the frame it does (the others are kept).
+   * Switch it off only for shader replacements that move vertices off the mapper's
+   * input (vtkShaderProperty), which the boxes do not see: every block is then summed.
+   * GetNumberOfFarFieldBlocksRead tells how many blocks the surfaces read. Default is on.
+   */
+  vtkSetMacro(FarFieldSkipEmptyBlocks, bool);
+  vtkGetMacro(FarFieldSkipEmptyBlocks, bool);
+  vtkBooleanMacro(FarFieldSkipEmptyBlocks, bool);
+  //@}
+
+  //@{
+  /**
    * Advanced: how many lights per point, on average over the box of the visible geometry,
    * the near field may evaluate exactly (a light counts at most once per point). When all
    * lights fit whole, each keeps its cutoff radius and the far field holds only the tails
@@ -890,6 +910,14 @@ public:
   vtkGetMacro(NumberOfPackedFarFieldLights, int);
   /// Time in ms of the last far-field build.
   vtkGetMacro(LastFarFieldBuildTime, double);
+  /// Grid nodes the last render's far-field build summed (see FarFieldSkipEmptyBlocks;
+  /// 0 when it built nothing).
+  vtkGetMacro(NumberOfFarFieldNodesBuilt, vtkTypeInt64);
+  /// Blocks of 4 x 4 x 4 nodes of the far field's grid; 0 without a far field.
+  vtkGetMacro(NumberOfFarFieldBlocks, vtkTypeInt64);
+  /// Of those, the blocks the visible surfaces read (all of them with
+  /// FarFieldSkipEmptyBlocks off).
+  vtkGetMacro(NumberOfFarFieldBlocksRead, vtkTypeInt64);
   /// Spacing of the far field's grid in world units, 0 without a far field.
   vtkGetMacro(FarFieldGridSpacing, double);
   /// Near radius of bright and always-on lights when the far field splits them.
@@ -1021,6 +1049,7 @@ protected:
   bool FarFieldSharedColor = true;
   bool FarFieldOrder4Diffuse = true;
   bool FarFieldSpecularBins = false;
+  bool FarFieldSkipEmptyBlocks = true;
   double NearFieldBudget = 8.0;
 
   int NumberOfClusteredLights = 0;
@@ -1042,6 +1071,9 @@ protected:
   int NumberOfFarFieldLights = 0;
   int NumberOfPackedFarFieldLights = 0;
   double LastFarFieldBuildTime = 0.0;
+  vtkTypeInt64 NumberOfFarFieldNodesBuilt = 0;
+  vtkTypeInt64 NumberOfFarFieldBlocks = 0;
+  vtkTypeInt64 NumberOfFarFieldBlocksRead = 0;
   double FarFieldGridSpacing = 0.0;
   double NearRadiusCap = 0.0;
   int FarFieldDimensions[3] = { 0, 0, 0 };

@@ -48,7 +48,10 @@
  * AVX2 or AVX-512, in a copy compiled for them: ComputeFarFieldMomentsForThisCPU). Positions
  * are taken relative to the block's centre before they become floats, so a scene far from
  * the origin keeps its precision. Blocks are independent: the caller splits them between
- * threads.
+ * threads. A build may sum only some blocks, each only in some layers of its nodes
+ * (FarFieldBlockList: those that surfaces read, vtkClusteredLightingFarFieldBlocks.h); a
+ * node it sums gets exactly the value a whole build gives it (the walk takes the whole
+ * block's box, and each node's terms are added in the same order).
  */
 #ifndef vtkClusteredLightingFarFieldTree_h
 #define vtkClusteredLightingFarFieldTree_h
@@ -496,6 +499,61 @@ void SplitGroupForFarSpecularBins(const FarFieldLightTree& tree, int node, const
 constexpr int FarFieldBlockSize = 4;
 constexpr int FarFieldBlockNodes = FarFieldBlockSize * FarFieldBlockSize * FarFieldBlockSize;
 
+/// Nodes of one layer of a block (4 x 4 nodes at one offset along an axis).
+constexpr int FarFieldLayerNodes = FarFieldBlockSize * FarFieldBlockSize;
+/// A block's layers along an axis as bits (bit l: the nodes at offset l): all of them.
+constexpr unsigned char FarFieldAllLayers = (1u << FarFieldBlockSize) - 1u;
+
+/**
+ * The blocks a build sums (ComputeFarFieldMoments with a list) and, per block, the axis
+ * its nodes are taken in layers along and the layers it needs (bits, FarFieldAllLayers
+ * for all): a floor on a node plane is read from 2 of a block's 4 layers across it
+ * (vtkClusteredLightingFarFieldBlocks.h). The sums cover the layers from the lowest set
+ * bit to the highest.
+ */
+struct FarFieldBlockList
+{
+  std::vector<std::int64_t> Blocks;
+  std::vector<unsigned char> Axis;
+  std::vector<unsigned char> Layers;
+};
+
+/**
+ * The offsets (di, dj, dk) in its block of the node the sums hold at n, when the block is
+ * taken in layers along `axis`: n = (l * 4 + a) * 4 + b, with l the offset along `axis`
+ * and a, b those along the other two axes (the higher axis as a). Along z this is the
+ * order nodes are stored in, (dk * 4 + dj) * 4 + di; the sums' values do not depend on it
+ * (each node's terms are added in the same order wherever it sits).
+ */
+inline glm::ivec3 GetFarFieldBlockNode(int n, int axis)
+{
+  const int l = n / FarFieldLayerNodes, a = (n / FarFieldBlockSize) % FarFieldBlockSize,
+            b = n % FarFieldBlockSize;
+  return axis == 0 ? glm::ivec3(l, b, a) : (axis == 1 ? glm::ivec3(b, l, a) : glm::ivec3(b, a, l));
+}
+
+/// The bit of node (di, dj, dk) of a block in the masks of nodes per block
+/// (vtkClusteredLightingFarFieldBlocks.h): (dk * 4 + dj) * 4 + di.
+inline int GetFarFieldBlockBit(int di, int dj, int dk)
+{
+  return (dk * FarFieldBlockSize + dj) * FarFieldBlockSize + di;
+}
+
+/// The lowest and highest set bit of a mask of layers (0 and -1 when none is set).
+inline void GetFarFieldLayerRange(unsigned layers, int& first, int& last)
+{
+  first = 0;
+  last = -1;
+  for (int l = 0; l < FarFieldBlockSize; ++l)
+  {
+    if (layers & (1u << l))
+    {
+      first = last < 0 ? l : first;
+      last = l;
+    }
+  }
+}
+
 /// Blocks per axis of a grid.
 inline std::array<int, 3> GetFarFieldBlocks(const FarFieldGrid& grid)
 {
@@ -665,7 +723,7 @@ inline void AddFarFieldSource(
 
 template <bool Windowed, int Lanes, int Channels, int Terms>
 inline void AccumulateBlock(const FarFieldSources& s, const float* px, const float* py,
-  const float* pz, float (*acc)[FarFieldBlockNodes])
+  const float* pz, float (*acc)[FarFieldBlockNodes], int first = 0, int end = FarFieldBlockNodes)
 {
   constexpr int Rows = Channels * FarFieldMomentsPerChannel;
   if constexpr (Lanes == 0)
@@ -673,7 +731,7 @@ inline void AccumulateBlock(const FarFieldSources& s, const float* px, const flo
     for (std::size_t q = 0; q < s.Size(); ++q)
     {
       const FarFieldSource src = s.Get(q);
-      for (int i = 0; i < FarFieldBlockNodes; ++i)
+      for (int i = first; i < end; ++i)
       {
         AddFarFieldSource<Windowed, FarFieldBlockNodes, Channels, Terms>(
           src, px[i], py[i], pz[i], acc, i);
@@ -682,8 +740,8 @@ inline void AccumulateBlock(const FarFieldSources& s, const float* px, const flo
   }
   else
   {
-    static_assert(FarFieldBlockNodes % Lanes == 0, "lanes must divide the block");
-    for (int i0 = 0; i0 < FarFieldBlockNodes; i0 += Lanes)
+    static_assert(FarFieldLayerNodes % Lanes == 0, "lanes must divide a layer");
+    for (int i0 = first; i0 < end; i0 += Lanes)
     {
       float a[Rows][Lanes];
       for (int m = 0; m < Rows; ++m)
@@ -888,7 +946,8 @@ template <int Lanes, int Channels, int Terms>
 std::int64_t ComputeFarFieldMomentsOf(const FarFieldGrid& grid,
   const std::vector<PreparedLight>& lights, const std::vector<double>& nearRadii,
   const FarFieldLightTree& tree, double grouping, std::int64_t b0, std::int64_t b1,
-  std::vector<double>& moments, int channel, std::vector<float>* bins)
+  std::vector<double>& moments, int channel, std::vector<float>* bins,
+  const FarFieldBlockList* blockList)
 {
   constexpr int Rows = Channels * FarFieldMomentsPerChannel;
   // Where the rows go in a node's moments (channel-major), and the sources' colours.
@@ -911,8 +970,10 @@ std::int64_t ComputeFarFieldMomentsOf(const FarFieldGrid& grid,
     bins ? std::size_t{ FarSpecularFloatsPerNode } * FarFieldBlockNodes : 0);
   std::vector<float> binScratch(bins ? std::size_t{ 5 } * FarFieldBlockNodes : 0);
   std::int64_t pairs = 0;
-  for (std::int64_t b = b0; b < b1; ++b)
+  for (std::int64_t entry = b0; entry < b1; ++entry)
   {
+    const std::size_t e = static_cast<std::size_t>(entry);
+    const std::int64_t b = blockList ? blockList->Blocks[e] : entry;
     const int i0 = static_cast<int>(b % blocks[0]) * FarFieldBlockSize;
     const int j0 = static_cast<int>((b / blocks[0]) % blocks[1]) * FarFieldBlockSize;
     const int k0 =
@@ -920,16 +981,26 @@ std::int64_t ComputeFarFieldMomentsOf(const FarFieldGrid& grid,
     const int ni = std::min(FarFieldBlockSize, grid.Dims[0] - i0);
     const int nj = std::min(FarFieldBlockSize, grid.Dims[1] - j0);
     const int nk = std::min(FarFieldBlockSize, grid.Dims[2] - k0);
+    const glm::ivec3 extent(ni, nj, nk);
+    // The layers to sum along the block's axis: from the lowest asked to the highest
+    // (within the grid).
+    const int axis = blockList ? blockList->Axis[e] : 2;
+    int lFirst, lLast;
+    GetFarFieldLayerRange(blockList ? blockList->Layers[e] : FarFieldAllLayers, lFirst, lLast);
+    lLast = std::min(lLast, extent[axis] - 1);
+    if (lFirst > lLast)
+    {
+      continue;
+    }
+    const int nodeFirst = lFirst * FarFieldLayerNodes, nodeEnd = (lLast + 1) * FarFieldLayerNodes;
     glm::dvec3 lo, hi;
     GetFarFieldBlockBox(grid, glm::ivec3(i0, j0, k0), lo, hi);
     const glm::dvec3 center = 0.5 * (lo + hi);
     for (int n = 0; n < FarFieldBlockNodes; ++n)
     {
       // Nodes past the grid's end repeat the last one (summed, not stored).
-      const int di = std::min(n % FarFieldBlockSize, ni - 1);
-      const int dj = std::min((n / FarFieldBlockSize) % FarFieldBlockSize, nj - 1);
-      const int dk = std::min(n / (FarFieldBlockSize * FarFieldBlockSize), nk - 1);
-      const glm::dvec3 p = grid.NodePosition(i0 + di, j0 + dj, k0 + dk) - center;
+      const glm::ivec3 d = glm::min(GetFarFieldBlockNode(n, axis), extent - 1);
+      const glm::dvec3 p = grid.NodePosition(i0 + d.x, j0 + d.y, k0 + d.z) - center;
       px[n] = static_cast<float>(p.x);
       py[n] = static_cast<float>(p.y);
       pz[n] = static_cast<float>(p.z);
@@ -1002,8 +1073,8 @@ std::int64_t ComputeFarFieldMomentsOf(const FarFieldGrid& grid,
     {
       std::fill(row, row + FarFieldBlockNodes, 0.0f);
     }
-    AccumulateBlock<false, Lanes, Channels, Terms>(whole, px, py, pz, acc);
-    AccumulateBlock<true, Lanes, Channels, Terms>(windowed, px, py, pz, acc);
+    AccumulateBlock<false, Lanes, Channels, Terms>(whole, px, py, pz, acc, nodeFirst, nodeEnd);
+    AccumulateBlock<true, Lanes, Channels, Terms>(windowed, px, py, pz, acc, nodeFirst, nodeEnd);
     AccumulateSpotBlock<false, Channels, Terms>(spotsWhole, px, py, pz, acc);
     AccumulateSpotBlock<true, Channels, Terms>(spotsWindowed, px, py, pz, acc);
     if (bins)
@@ -1017,72 +1088,68 @@ std::int64_t ComputeFarFieldMomentsOf(const FarFieldGrid& grid,
       AccumulateSpecularBinsBlock<true>(
         spotsWindowed.Base, &spotsWindowed, px, py, pz, rows, scratch);
     }
-    pairs += static_cast<std::int64_t>(whole.Size() + windowed.Size() + spotsWhole.Size() +
-               spotsWindowed.Size() + spots.size()) *
-      ni * nj * nk;
-    for (int dk = 0; dk < nk; ++dk)
+    const std::int64_t sources = static_cast<std::int64_t>(
+      whole.Size() + windowed.Size() + spotsWhole.Size() + spotsWindowed.Size() + spots.size());
+    for (int n = nodeFirst; n < nodeEnd; ++n)
     {
-      for (int dj = 0; dj < nj; ++dj)
+      const glm::ivec3 d = GetFarFieldBlockNode(n, axis);
+      if (d.x >= ni || d.y >= nj || d.z >= nk)
       {
-        for (int di = 0; di < ni; ++di)
+        continue; // past the grid's end
+      }
+      pairs += sources;
+      const std::int64_t index = grid.NodeIndex(i0 + d.x, j0 + d.y, k0 + d.z);
+      double* o = &moments[static_cast<std::size_t>(index) * FarFieldFloatsPerNode];
+      for (int q = 0; q < Rows; ++q)
+      {
+        const int at = first + q;
+        o[at] = acc[q][n] + spread[static_cast<std::size_t>(at)];
+      }
+      float* ob =
+        bins ? &(*bins)[static_cast<std::size_t>(index) * FarSpecularFloatsPerNode] : nullptr;
+      for (int bin = 0; ob && bin < FarSpecularBins; ++bin)
+      {
+        // A one-channel build's sources carry `channel`'s colour in R.
+        auto row = [&](int q)
         {
-          const int n = (dk * FarFieldBlockSize + dj) * FarFieldBlockSize + di;
-          double* o = &moments[static_cast<std::size_t>(grid.NodeIndex(i0 + di, j0 + dj, k0 + dk)) *
-            FarFieldFloatsPerNode];
-          for (int q = 0; q < Rows; ++q)
+          return binRows[static_cast<std::size_t>(bin * FarSpecularBinFloats + q) *
+              FarFieldBlockNodes +
+            static_cast<std::size_t>(n)];
+        };
+        float* o = ob + static_cast<std::ptrdiff_t>(bin) * FarSpecularBinFloats;
+        for (int c = 0; c < 3; ++c)
+        {
+          o[c] = Channels == 3 ? row(c) : (c == channel ? row(0) : 0.0f);
+          o[3 + c] = row(3 + c);
+        }
+      }
+      // Spot lights: ComputeFarContribution at the node itself, as the bound takes them.
+      const glm::dvec3 node = grid.NodePosition(i0 + d.x, j0 + d.y, k0 + d.z);
+      for (int light : spots)
+      {
+        const PreparedLight& l = lights[static_cast<std::size_t>(light)];
+        double far;
+        glm::dvec3 u;
+        if (ComputeFarContribution(l, nearRadii[static_cast<std::size_t>(light)], node, far, u))
+        {
+          const glm::dvec3 color = colorOf(l.Color);
+          if (ob)
           {
-            const int at = first + q;
-            o[at] = acc[q][n] + spread[static_cast<std::size_t>(at)];
+            const glm::dvec3 binColor = Channels == 1
+              ? glm::dvec3(channel == 0 ? color.x : 0.0, channel == 1 ? color.x : 0.0,
+                  channel == 2 ? color.x : 0.0)
+              : color;
+            AddToFarSpecularBins(binColor, far, u, ob);
           }
-          const std::int64_t index = grid.NodeIndex(i0 + di, j0 + dj, k0 + dk);
-          float* ob =
-            bins ? &(*bins)[static_cast<std::size_t>(index) * FarSpecularFloatsPerNode] : nullptr;
-          for (int b = 0; ob && b < FarSpecularBins; ++b)
+          double t[FarFieldMomentsPerChannel];
+          ComputeFarMomentTerms(1.0, u, t);
+          for (int c = 0; c < Channels; ++c)
           {
-            // A one-channel build's sources carry `channel`'s colour in R.
-            auto row = [&](int q)
+            const double g = far * color[c];
+            double* row = o + first + static_cast<std::ptrdiff_t>(c) * FarFieldMomentsPerChannel;
+            for (int m = 0; m < Terms; ++m)
             {
-              return binRows[static_cast<std::size_t>(b * FarSpecularBinFloats + q) *
-                  FarFieldBlockNodes +
-                static_cast<std::size_t>(n)];
-            };
-            float* o = ob + static_cast<std::ptrdiff_t>(b) * FarSpecularBinFloats;
-            for (int c = 0; c < 3; ++c)
-            {
-              o[c] = Channels == 3 ? row(c) : (c == channel ? row(0) : 0.0f);
-              o[3 + c] = row(3 + c);
-            }
-          }
-          // Spot lights: ComputeFarContribution at the node itself, as the bound takes them.
-          const glm::dvec3 node = grid.NodePosition(i0 + di, j0 + dj, k0 + dk);
-          for (int light : spots)
-          {
-            const PreparedLight& l = lights[static_cast<std::size_t>(light)];
-            double far;
-            glm::dvec3 u;
-            if (ComputeFarContribution(l, nearRadii[static_cast<std::size_t>(light)], node, far, u))
-            {
-              const glm::dvec3 color = colorOf(l.Color);
-              if (ob)
-              {
-                const glm::dvec3 binColor = Channels == 1
-                  ? glm::dvec3(channel == 0 ? color.x : 0.0, channel == 1 ? color.x : 0.0,
-                      channel == 2 ? color.x : 0.0)
-                  : color;
-                AddToFarSpecularBins(binColor, far, u, ob);
-              }
-              double t[FarFieldMomentsPerChannel];
-              ComputeFarMomentTerms(1.0, u, t);
-              for (int c = 0; c < Channels; ++c)
-              {
-                const double g = far * color[c];
-                double* row =
-                  o + first + static_cast<std::ptrdiff_t>(c) * FarFieldMomentsPerChannel;
-                for (int m = 0; m < Terms; ++m)
-                {
-                  row[m] += g * t[m];
-                }
-              }
+              row[m] += g * t[m];
             }
           }
         }
@@ -1096,16 +1163,18 @@ std::int64_t ComputeFarFieldMomentsOf(const FarFieldGrid& grid,
 /**
  * The grid's node moments (FarFieldFloatsPerNode per node, channel-major, as
  * ComputeFarFieldMomentsExact gives them) with the light tree, a block at a time (see the
- * file description). Fills blocks [b0, b1) (block index x fastest, GetFarFieldBlocks);
- * `moments` must hold every node. Returns the number of (node, source) pairs summed: the
- * cost. Lanes picks the loop order of the sums (Detail::AccumulateBlock); the default
- * suits any processor. With `channel` 0, 1 or 2 only that channel's 18 moments of each node
- * are summed and written (the others are left as they are): a third of the multiply-adds,
- * for lights that share a colour (FindFarFieldSharedColor, PackFarFieldTexelsOneChannel).
- * With `order4` false the fourth moments are written as 0 and not summed (an order-2 far
- * diffuse reads none of them): half the multiply-adds. With `bins` (FarSpecularFloatsPerNode
- * per node, vtkClusteredLightingFarSpecularBins.h) the far specular's bins of the same
- * blocks are summed too (single precision: the texture's), from the same walk
+ * file description). Fills blocks [b0, b1) (block index x fastest, GetFarFieldBlocks), or
+ * with `blockList` its entries b0 to b1 - 1, each only in its layers (those that surfaces
+ * read, vtkClusteredLightingFarFieldBlocks.h: the same values there as a whole build);
+ * `moments` must hold every node. Returns the
+ * number of (node, source) pairs summed: the cost. Lanes picks the loop order of the sums
+ * (Detail::AccumulateBlock); the default suits any processor. With `channel` 0, 1 or 2 only that
+ * channel's 18 moments of each node are summed and written (the others are left as they are): a
+ * third of the multiply-adds, for lights that share a colour (FindFarFieldSharedColor,
+ * PackFarFieldTexelsOneChannel). With `order4` false the fourth moments are written as 0 and not
+ * summed (an order-2 far diffuse reads none of them): half the multiply-adds. With `bins`
+ * (FarSpecularFloatsPerNode per node, vtkClusteredLightingFarSpecularBins.h) the far specular's
+ * bins of the same blocks are summed too (single precision: the texture's), from the same walk
  * (SplitGroupForFarSpecularBins: groups at most FarSpecularBinsGrouping as wide as they are
  * far, at their centroids, no spread term).
  */
@@ -1114,20 +1183,20 @@ std::int64_t ComputeFarFieldMoments(const FarFieldGrid& grid,
   const std::vector<PreparedLight>& lights, const std::vector<double>& nearRadii,
   const FarFieldLightTree& tree, double grouping, std::int64_t b0, std::int64_t b1,
   std::vector<double>& moments, int channel = -1, bool order4 = true,
-  std::vector<float>* bins = nullptr)
+  std::vector<float>* bins = nullptr, const FarFieldBlockList* blockList = nullptr)
 {
   constexpr int All = FarFieldMomentsPerChannel, Two = FarFieldOrder2Moments;
   if (channel >= 0 && channel < 3)
   {
-    return order4 ? Detail::ComputeFarFieldMomentsOf<Lanes, 1, All>(
-                      grid, lights, nearRadii, tree, grouping, b0, b1, moments, channel, bins)
-                  : Detail::ComputeFarFieldMomentsOf<Lanes, 1, Two>(
-                      grid, lights, nearRadii, tree, grouping, b0, b1, moments, channel, bins);
+    return order4 ? Detail::ComputeFarFieldMomentsOf<Lanes, 1, All>(grid, lights, nearRadii, tree,
+                      grouping, b0, b1, moments, channel, bins, blockList)
+                  : Detail::ComputeFarFieldMomentsOf<Lanes, 1, Two>(grid, lights, nearRadii, tree,
+                      grouping, b0, b1, moments, channel, bins, blockList);
   }
   return order4 ? Detail::ComputeFarFieldMomentsOf<Lanes, 3, All>(
-                    grid, lights, nearRadii, tree, grouping, b0, b1, moments, 0, bins)
+                    grid, lights, nearRadii, tree, grouping, b0, b1, moments, 0, bins, blockList)
                 : Detail::ComputeFarFieldMomentsOf<Lanes, 3, Two>(
-                    grid, lights, nearRadii, tree, grouping, b0, b1, moments, 0, bins);
+                    grid, lights, nearRadii, tree, grouping, b0, b1, moments, 0, bins, blockList);
 }
 
 // The node sums are arithmetic bound (per node and source: a square root, two divisions
@@ -1157,10 +1226,10 @@ __attribute__((target("avx2,fma") VTK_CLUSTERED_LIGHTING_FLATTEN)) inline std::i
 ComputeFarFieldMomentsAVX2(const FarFieldGrid& grid, const std::vector<PreparedLight>& lights,
   const std::vector<double>& nearRadii, const FarFieldLightTree& tree, double grouping,
   std::int64_t b0, std::int64_t b1, std::vector<double>& moments, int channel, bool order4,
-  std::vector<float>* bins)
+  std::vector<float>* bins, const FarFieldBlockList* blockList)
 {
   return ComputeFarFieldMoments<0>(
-    grid, lights, nearRadii, tree, grouping, b0, b1, moments, channel, order4, bins);
+    grid, lights, nearRadii, tree, grouping, b0, b1, moments, channel, order4, bins, blockList);
 }
 
 __attribute__((
@@ -1168,10 +1237,10 @@ __attribute__((
 ComputeFarFieldMomentsAVX512(const FarFieldGrid& grid, const std::vector<PreparedLight>& lights,
   const std::vector<double>& nearRadii, const FarFieldLightTree& tree, double grouping,
   std::int64_t b0, std::int64_t b1, std::vector<double>& moments, int channel, bool order4,
-  std::vector<float>* bins)
+  std::vector<float>* bins, const FarFieldBlockList* blockList)
 {
   return ComputeFarFieldMoments<16>(
-    grid, lights, nearRadii, tree, grouping, b0, b1, moments, channel, order4, bins);
+    grid, lights, nearRadii, tree, grouping, b0, b1, moments, channel, order4, bins, blockList);
 }
 } // namespace Detail
 #endif
@@ -1223,23 +1292,23 @@ inline std::int64_t ComputeFarFieldMomentsWith(FarFieldBuildCopy copy, const Far
   const std::vector<PreparedLight>& lights, const std::vector<double>& nearRadii,
   const FarFieldLightTree& tree, double grouping, std::int64_t b0, std::int64_t b1,
   std::vector<double>& moments, int channel = -1, bool order4 = true,
-  std::vector<float>* bins = nullptr)
+  std::vector<float>* bins = nullptr, const FarFieldBlockList* blockList = nullptr)
 {
 #ifdef VTK_CLUSTERED_LIGHTING_VECTOR_BUILDS
   if (copy == FarFieldBuildCopy::AVX512)
   {
     return Detail::ComputeFarFieldMomentsAVX512(
-      grid, lights, nearRadii, tree, grouping, b0, b1, moments, channel, order4, bins);
+      grid, lights, nearRadii, tree, grouping, b0, b1, moments, channel, order4, bins, blockList);
   }
   if (copy == FarFieldBuildCopy::AVX2)
   {
     return Detail::ComputeFarFieldMomentsAVX2(
-      grid, lights, nearRadii, tree, grouping, b0, b1, moments, channel, order4, bins);
+      grid, lights, nearRadii, tree, grouping, b0, b1, moments, channel, order4, bins, blockList);
   }
 #endif
   (void)copy;
   return ComputeFarFieldMoments(
-    grid, lights, nearRadii, tree, grouping, b0, b1, moments, channel, order4, bins);
+    grid, lights, nearRadii, tree, grouping, b0, b1, moments, channel, order4, bins, blockList);
 }
 
 /// ComputeFarFieldMoments in the widest copy this processor runs
@@ -1248,10 +1317,10 @@ inline std::int64_t ComputeFarFieldMomentsForThisCPU(const FarFieldGrid& grid,
   const std::vector<PreparedLight>& lights, const std::vector<double>& nearRadii,
   const FarFieldLightTree& tree, double grouping, std::int64_t b0, std::int64_t b1,
   std::vector<double>& moments, int channel = -1, bool order4 = true,
-  std::vector<float>* bins = nullptr)
+  std::vector<float>* bins = nullptr, const FarFieldBlockList* blockList = nullptr)
 {
   return ComputeFarFieldMomentsWith(GetFarFieldBuildCopyForThisCPU(), grid, lights, nearRadii, tree,
-    grouping, b0, b1, moments, channel, order4, bins);
+    grouping, b0, b1, moments, channel, order4, bins, blockList);
 }
 
 } // namespace vtkClusteredLighting

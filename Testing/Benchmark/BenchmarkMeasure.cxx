@@ -220,6 +220,7 @@ void Context::ResetPassDefaults()
   p->SetFarFieldSharedColor(true);
   p->SetFarFieldOrder4Diffuse(true);
   p->SetFarFieldSpecularBins(false);
+  p->SetFarFieldSkipEmptyBlocks(true);
   p->SetNearFieldBudget(8.0);
   p->SetFalloff(vtkClusteredLightingPass::FALLOFF_HARD_CUT);
   p->SetTilesX(32);
@@ -556,7 +557,7 @@ Row Context::Measure(const Step& step)
     return ClusteredLightingScenes::TimeRender(this->Window);
   };
   std::vector<double> ms, cpu, instrumented, assign, update, shade, prepass, shaded, opaqueShaded,
-    farBuild;
+    farBuild, farNodesBuilt;
   for (int f = 0; f < step.Frames; ++f)
   {
     const double cpu0 = ThreadCpuMs();
@@ -577,6 +578,7 @@ Row Context::Measure(const Step& step)
       shaded.push_back(this->Pass->GetShadedFragmentsPerVisiblePixel());
       opaqueShaded.push_back(this->Pass->GetShadedOpaqueFragmentsPerVisiblePixel());
       farBuild.push_back(this->Pass->GetLastFarFieldBuildTime());
+      farNodesBuilt.push_back(static_cast<double>(this->Pass->GetNumberOfFarFieldNodesBuilt()));
     }
     this->Pass->SetMeasureTimings(false);
   }
@@ -609,6 +611,7 @@ Row Context::Measure(const Step& step)
       row.FarBuildMs = Median(farBuild);
       row.FarBoundSteps = this->Pass->ComputeFarFieldErrorBound(); // in steps
       row.FarNodes = this->Pass->GetFarFieldResolutionInUse();
+      row.FarNodesBuilt = Median(farNodesBuilt);
     }
     row.ListMiB = this->Pass->GetListTextureBytes() / 1048576.0;
     row.MasterMiB = this->Pass->GetMasterTextureBytes() / 1048576.0;
@@ -645,7 +648,7 @@ Row Context::Measure(const Step& step)
     "%-6s %-8s %6d %-9s %-9s %-14s %8.1f ms [%7.1f, %7.1f]  cpu %6s  instrumented %6s  assign %6s  "
     "lights %6s  "
     "eval/px %6s (in 32s %6s) reach/px %6s  max err %5s  rmse %7s  signed %7s  prepass %6s  "
-    "shaded/px %5s (opaque %5s)  far build %6s bound %5s nodes %6s  culled %3s\n",
+    "shaded/px %5s (opaque %5s)  far build %6s bound %5s nodes %6s (built %6s)  culled %3s\n",
     row.Scene.c_str(), row.Layout.c_str(), row.Lights, row.Method.c_str(), row.Sweep.c_str(),
     row.Value.c_str(), row.MsMedian, row.MsMin, row.MsMax, Num(row.CpuMs).c_str(),
     Num(row.InstrumentedMs).c_str(), Num(row.AssignMs).c_str(), Num(row.LightUpdateMs).c_str(),
@@ -655,6 +658,9 @@ Row Context::Measure(const Step& step)
     Num(row.ShadedPerVisible).c_str(), Num(row.OpaqueShadedPerVisible).c_str(),
     Num(row.FarBuildMs).c_str(), Num(row.FarBoundSteps).c_str(),
     (std::isnan(row.FarNodes) ? std::string() : std::to_string(std::llround(row.FarNodes))).c_str(),
+    (std::isnan(row.FarNodesBuilt) ? std::string()
+                                   : std::to_string(std::llround(row.FarNodesBuilt)))
+      .c_str(),
     stock ? "" : std::to_string(this->Pass->GetNumberOfBackfaceCulledProps()).c_str());
   std::fflush(stdout);
   return row;

@@ -73,6 +73,7 @@ struct Row
   double FarBuildMs = NAN;    ///< the far field's last build (every frame when lights move)
   double FarBoundSteps = NAN; ///< the far field's stated bound (ComputeFarFieldErrorBound)
   double FarNodes = NAN;      ///< the far field's resolution in use (an error budget chooses it)
+  double FarNodesBuilt = NAN; ///< nodes a frame's far-field build summed (0: none rebuilt)
   double MaxError = NAN, RMSE = NAN, OverOneStep = NAN;
   double SignedError = NAN; ///< mean of (image - reference): negative = darker than exact
   double ListMiB = NAN, MasterMiB = NAN, LightsMiB = NAN;

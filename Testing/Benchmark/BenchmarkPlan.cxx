@@ -413,6 +413,16 @@ std::vector<Step> MakePlan(const PlanOptions& options)
           bins.Value = "animated (specular bins)";
           plan.push_back(bins);
         }
+        // Every block of the grid summed (FarFieldSkipEmptyBlocks off): what summing only
+        // the nodes surfaces read saves in each rebuild.
+        if (!quick)
+        {
+          Step everyBlock = s;
+          everyBlock.Value = "animated (every block)";
+          everyBlock.Apply = [](vtkClusteredLightingPass* p)
+          { p->SetFarFieldSkipEmptyBlocks(false); };
+          plan.push_back(everyBlock);
+        }
         // Lights moving under a still camera: the prepass's depths are copied back
         // (ReuseDepthPrepass), and only the lights are assigned again.
         if (!quick && k == 0)

@@ -92,6 +92,7 @@ const std::vector<Column>& Columns()
     CL_NUMBER_COLUMN("far_build_ms", FarBuildMs),
     CL_NUMBER_COLUMN("far_bound_steps", FarBoundSteps),
     { "far_nodes", [](const Row& r) { return Num(r.FarNodes, 9); } },
+    { "far_nodes_built", [](const Row& r) { return Num(r.FarNodesBuilt, 9); } },
     CL_NUMBER_COLUMN("max_error", MaxError),
     CL_NUMBER_COLUMN("rmse", RMSE),
     CL_NUMBER_COLUMN("over_one_step", OverOneStep),

@@ -5,6 +5,7 @@
 #include "vtkClusteredLightingClosedSurface.h"
 #include "vtkClusteredLightingDepthBounds.h"
 #include "vtkClusteredLightingFarField.h"
+#include "vtkClusteredLightingFarFieldBlocks.h"
 #include "vtkClusteredLightingFarFieldBound.h"
 #include "vtkClusteredLightingFarFieldBudget.h"
 #include "vtkClusteredLightingFarFieldTree.h"

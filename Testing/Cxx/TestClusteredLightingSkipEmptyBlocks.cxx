@@ -1,0 +1,199 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// FarFieldSkipEmptyBlocks: the far field is summed only on the nodes that the visible
+// surfaces read (Rendering/Core/vtkClusteredLightingFarFieldBlocks.h). Lights as users
+// write them (inverse-square, no radius) over the test scene (a floor and a ball, plain
+// mappers), with a multiblock through vtkCompositePolyDataMapper2 (a box per cell of
+// each block) and instanced glyphs (vtkGlyph3DMapper: the prop's bounds). Checks that
+//  - the first build sums a part of the grid's nodes, and the frame is within the stated
+//    bound of brute force at every pixel, with zero false negatives;
+//  - switched off, the rest is summed and the image does not change, bit for bit (the
+//    nodes surfaces read hold exactly what a whole build puts there);
+//  - with moving lights every frame sums the same part again, and the image is the one
+//    the whole build gives;
+//  - a prop that moves under still lights gets its nodes summed in that frame (a part,
+//    not the whole grid), and the image is the whole build's; a prop that does not move
+//    and lights that do not change sum nothing;
+//  - an actor that draws lines as tubes (fragments off its geometry) asks for every block;
+//  - PrintSelf names the option and the counts; nothing is reported.
+#include "ClusteredLightingGLTestUtilities.h"
+#include "ClusteredLightingTestUtilities.h"
+
+#include "vtkActor.h"
+#include "vtkActorCollection.h"
+#include "vtkClusteredLightSet.h"
+#include "vtkClusteredLightingPass.h"
+#include "vtkCompositePolyDataMapper2.h"
+#include "vtkConeSource.h"
+#include "vtkGlyph3DMapper.h"
+#include "vtkLineSource.h"
+#include "vtkMultiBlockDataSet.h"
+#include "vtkPointSource.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
+#include "vtkSphereSource.h"
+
+#include <cstdio>
+#include <sstream>
+#include <string>
+
+namespace
+{
+using ClusteredLightingTest::Check;
+
+/// Renders, switches FarFieldSkipEmptyBlocks off (the rest of the grid is summed) and
+/// renders again; returns whether the two images are the same, bit for bit. Leaves the
+/// option on, with every node summed.
+bool SameAsWholeBuild(vtkClusteredLightingPass* pass, vtkRenderWindow* rw, const char* what)
+{
+  rw->Render();
+  const std::vector<float> skipped = ClusteredLightingTest::CapturePixels(rw);
+  pass->FarFieldSkipEmptyBlocksOff();
+  rw->Render();
+  const vtkTypeInt64 rest = pass->GetNumberOfFarFieldNodesBuilt();
+  const double diff =
+    ClusteredLightingTest::CompareImages(ClusteredLightingTest::CapturePixels(rw), skipped)
+      .MaxAbsError;
+  std::printf("%s: %lld more nodes summed for the whole grid; largest difference %g\n", what,
+    static_cast<long long>(rest), diff);
+  Check(pass->GetNumberOfFarFieldBlocksRead() == pass->GetNumberOfFarFieldBlocks(),
+    "switched off, every block counts as read");
+  pass->FarFieldSkipEmptyBlocksOn();
+  return diff == 0.0 && rest > 0;
+}
+
+vtkTypeInt64 GridNodes(vtkClusteredLightingPass* pass)
+{
+  const int* d = pass->GetFarFieldDimensions();
+  return static_cast<vtkTypeInt64>(d[0]) * d[1] * d[2];
+}
+}
+
+int TestClusteredLightingSkipEmptyBlocks(int, char*[])
+{
+  vtkNew<vtkRenderWindow> rw;
+  vtkNew<vtkRenderer> ren;
+  ClusteredLightingTest::SetUpTestScene(rw, ren, 240, 180);
+
+  // Two spheres through the composite mapper, and glyphs, inside the floor's box.
+  vtkNew<vtkMultiBlockDataSet> blocks;
+  blocks->SetNumberOfBlocks(2);
+  for (int b = 0; b < 2; ++b)
+  {
+    vtkNew<vtkSphereSource> s;
+    s->SetCenter(b ? 2.0 : -2.2, -0.6, b ? 1.2 : 0.8);
+    s->SetRadius(0.35);
+    s->Update();
+    blocks->SetBlock(b, s->GetOutput());
+  }
+  vtkNew<vtkCompositePolyDataMapper2> compositeMapper;
+  compositeMapper->SetInputDataObject(blocks);
+  vtkNew<vtkActor> compositeActor;
+  compositeActor->SetMapper(compositeMapper);
+  ren->AddActor(compositeActor);
+  vtkNew<vtkPointSource> points;
+  points->SetCenter(-1.5, -0.7, -1.5);
+  points->SetRadius(0.4);
+  points->SetNumberOfPoints(12);
+  points->SetRandomSequence(nullptr);
+  vtkNew<vtkConeSource> cone;
+  cone->SetHeight(0.3);
+  cone->SetRadius(0.12);
+  vtkNew<vtkGlyph3DMapper> glyphMapper;
+  glyphMapper->SetInputConnection(points->GetOutputPort());
+  glyphMapper->SetSourceConnection(cone->GetOutputPort());
+  glyphMapper->ScalingOff();
+  vtkNew<vtkActor> glyphActor;
+  glyphActor->SetMapper(glyphMapper);
+  ren->AddActor(glyphActor);
+
+  vtkNew<vtkClusteredLightSet> lights;
+  ClusteredLightingTest::MakeUserLights(lights, 400, 0.03, 5);
+  vtkNew<vtkClusteredLightingPass> pass;
+  pass->AddLightSet(lights);
+  ren->SetPass(pass);
+  vtkNew<ClusteredLightingTest::MessageCollector> messages;
+  messages->Watch(pass);
+
+  // 1. The first build sums a part of the grid; the frame is within its bound.
+  rw->Render();
+  const vtkTypeInt64 total = GridNodes(pass);
+  const vtkTypeInt64 part = pass->GetNumberOfFarFieldNodesBuilt();
+  std::printf("grid %lld nodes, %lld summed; %lld of %lld blocks read\n",
+    static_cast<long long>(total), static_cast<long long>(part),
+    static_cast<long long>(pass->GetNumberOfFarFieldBlocksRead()),
+    static_cast<long long>(pass->GetNumberOfFarFieldBlocks()));
+  Check(pass->GetFarFieldSkipEmptyBlocks() && part > 0 && part < total / 2 &&
+      pass->GetNumberOfFarFieldBlocksRead() < pass->GetNumberOfFarFieldBlocks(),
+    "the first build sums less than half of the grid's nodes");
+  Check(ClusteredLightingTest::CheckClusteredFrame(pass, rw, ren, 1.4, "skip empty blocks") == 0,
+    "within the stated bound of brute force at every pixel, zero false negatives");
+  Check(SameAsWholeBuild(pass, rw, "first build"),
+    "the whole grid's build gives the same image, bit for bit");
+
+  // 2. Moving lights: every frame sums the same part again.
+  bool samePart = true;
+  for (int frame = 0; frame < 3; ++frame)
+  {
+    double p[3];
+    lights->GetPosition(frame, p);
+    lights->SetPosition(frame, p[0] + 0.1, p[1], p[2] - 0.05);
+    rw->Render();
+    samePart = samePart && pass->GetNumberOfFarFieldNodesBuilt() == part;
+  }
+  Check(samePart, "moving lights sum the same part every frame");
+  lights->SetPosition(3, 0.3, 0.2, 0.1);
+  Check(SameAsWholeBuild(pass, rw, "moved lights"),
+    "after the lights moved: the whole grid's image, bit for bit");
+
+  // 3. Still lights and props: nothing is summed. A prop that moves: its new nodes only.
+  lights->SetPosition(4, -0.3, 0.4, 0.2); // a new build of the part
+  rw->Render();
+  rw->Render();
+  Check(pass->GetNumberOfFarFieldNodesBuilt() == 0, "nothing changed: nothing summed");
+  vtkActor* ball = nullptr;
+  {
+    vtkActorCollection* actors = ren->GetActors();
+    actors->InitTraversal();
+    actors->GetNextActor(); // the floor
+    ball = actors->GetNextActor();
+  }
+  ball->SetPosition(1.2, 0.0, -0.8);
+  rw->Render();
+  const vtkTypeInt64 moved = pass->GetNumberOfFarFieldNodesBuilt();
+  std::printf("the ball moved: %lld nodes summed\n", static_cast<long long>(moved));
+  Check(moved > 0 && moved < part, "a moved prop sums its new nodes, fewer than a build");
+  Check(SameAsWholeBuild(pass, rw, "moved ball"),
+    "after the ball moved: the whole grid's image, bit for bit");
+
+  // 4. Lines drawn as tubes: every block.
+  vtkNew<vtkLineSource> line;
+  line->SetPoint1(-2.0, -0.5, 2.0);
+  line->SetPoint2(2.0, -0.5, 2.0);
+  vtkNew<vtkPolyDataMapper> lineMapper;
+  lineMapper->SetInputConnection(line->GetOutputPort());
+  vtkNew<vtkActor> tube;
+  tube->SetMapper(lineMapper);
+  tube->GetProperty()->SetLineWidth(6.0);
+  tube->GetProperty()->RenderLinesAsTubesOn();
+  ren->AddActor(tube);
+  rw->Render();
+  Check(pass->GetNumberOfFarFieldBlocksRead() == pass->GetNumberOfFarFieldBlocks(),
+    "lines drawn as tubes: every block is read");
+  // Tubes write their own depths, which turns depth-aware clusters off, said once.
+  Check(messages->Warnings.size() == 1 &&
+      messages->Warnings[0].find("Depth-aware clusters are off") != std::string::npos,
+    "the tubes' one warning: depth-aware clusters off");
+  messages->Warnings.clear();
+  ren->RemoveActor(tube);
+  rw->Render();
+  Check(pass->GetNumberOfFarFieldBlocksRead() < pass->GetNumberOfFarFieldBlocks(),
+    "without them: a part again");
+
+  std::ostringstream printed;
+  pass->Print(printed);
+  Check(printed.str().find("FarFieldSkipEmptyBlocks: On") != std::string::npos &&
+      printed.str().find("NumberOfFarFieldBlocksRead: ") != std::string::npos,
+    "PrintSelf names the option and the blocks read");
+  Check(messages->Errors.empty() && messages->Warnings.empty(), "nothing else reported");
+  return ClusteredLightingTest::CheckStatus();
+}

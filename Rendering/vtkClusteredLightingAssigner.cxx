@@ -318,15 +318,20 @@ const vtkClusteredLightingAssignment& vtkClusteredLightingAssigner::Update(
   }
   r.FarFieldNodesBuilt = 0;
   if (r.Enabled && this->LightDataUploaded && this->FarFieldPlan.Active &&
-    this->FarField.GetNumberOfGLObjects() > 0 &&
-    this->FarField.IsMissingBlocks(this->FarFieldNeeded))
+    this->FarField.GetNumberOfGLObjects() > 0 && !this->FarFieldNeededBuilt)
   {
-    if (!this->FarField.Extend(rw, this->FarFieldPlan, prepared.Lights, this->FarFieldNeeded))
+    bool ok = true;
+    if (this->FarField.IsMissingBlocks(this->FarFieldNeeded))
     {
-      r.NewError = "Could not upload the far field (its RGBA32F 3D textures).";
+      ok = this->FarField.Extend(rw, this->FarFieldPlan, prepared.Lights, this->FarFieldNeeded);
+      if (!ok)
+      {
+        r.NewError = "Could not upload the far field (its RGBA32F 3D textures).";
+      }
+      r.FarFieldBuildTime = this->FarField.GetBuildTime();
+      r.FarFieldNodesBuilt = this->FarField.GetNodesBuilt();
     }
-    r.FarFieldBuildTime = this->FarField.GetBuildTime();
-    r.FarFieldNodesBuilt = this->FarField.GetNodesBuilt();
+    this->FarFieldNeededBuilt = ok;
   }
   if (r.Enabled && !this->LightDataUploaded)
   {
@@ -339,6 +344,7 @@ const vtkClusteredLightingAssignment& vtkClusteredLightingAssigner::Update(
     {
       r.FarField =
         this->FarField.Build(rw, this->FarFieldPlan, prepared.Lights, &this->FarFieldNeeded);
+      this->FarFieldNeededBuilt = r.FarField;
       r.FarFieldBuildTime = this->FarField.GetBuildTime();
       r.FarFieldNodesBuilt = this->FarField.GetNodesBuilt();
       if (!r.FarField)
@@ -366,10 +372,7 @@ const vtkClusteredLightingAssignment& vtkClusteredLightingAssigner::Update(
   r.FarFieldSpacing = this->FarFieldPlan.Active ? this->FarFieldPlan.Grid.Spacing : 0.0;
   r.FarFieldBlocks =
     this->FarFieldPlan.Active ? GetNumberOfFarFieldBlocks(this->FarFieldPlan.Grid) : 0;
-  r.FarFieldBlocksNeeded = this->FarFieldPlan.Active
-    ? static_cast<std::int64_t>(std::count_if(this->FarFieldNeeded.begin(),
-        this->FarFieldNeeded.end(), [](std::uint64_t nodes) { return nodes != 0; }))
-    : 0;
+  r.FarFieldBlocksNeeded = this->FarFieldPlan.Active ? this->NeededBlocks : 0;
   r.NearRadiusCap = this->FarFieldPlan.Active ? this->FarFieldPlan.NearRadiusCap : 0.0;
   for (int a = 0; a < 3; ++a)
   {
@@ -452,14 +455,17 @@ void vtkClusteredLightingAssigner::UpdateFarFieldBlocks(
   this->NeededVersion = version;
   this->NeededGrid = grid;
   this->FarFieldNeeded.assign(blocks, everywhere ? vtkClusteredLighting::FarFieldAllNodes : 0);
+  this->NeededBlocks = everywhere ? static_cast<std::int64_t>(blocks) : 0;
   if (!everywhere)
   {
     const std::vector<glm::dvec3>& boxes = surfaces->GetBoxes();
     for (std::size_t i = 0; i + 1 < boxes.size(); i += 2)
     {
-      vtkClusteredLighting::MarkFarFieldBlocks(grid, boxes[i], boxes[i + 1], this->FarFieldNeeded);
+      this->NeededBlocks += vtkClusteredLighting::MarkFarFieldBlocks(
+        grid, boxes[i], boxes[i + 1], this->FarFieldNeeded);
     }
   }
+  this->FarFieldNeededBuilt = false; // new marks: the textures may miss some
 }
 
 //------------------------------------------------------------------------------

@@ -364,6 +364,8 @@ private:
   /// Per block of the far field's grid: its nodes some surface reads, as a mask
   /// (UpdateFarFieldBlocks), and what they were marked from.
   std::vector<std::uint64_t> FarFieldNeeded;
+  std::int64_t NeededBlocks = 0;    ///< blocks with a node marked
+  bool FarFieldNeededBuilt = false; ///< whether the textures hold every node marked
   std::uint64_t NeededVersion = 0;
   bool NeededEverywhere = true;
   vtkClusteredLighting::FarFieldGrid NeededGrid;

@@ -31,6 +31,55 @@ vtkTextureObject* NewRGBA32FTexture(vtkOpenGLRenderWindow* rw, int filter)
   tex->SetWrapR(vtkTextureObject::ClampToEdge);
   return tex;
 }
+
+}
+
+//------------------------------------------------------------------------------
+void vtkClusteredLightingFarFieldTextures::UploadBoxes(vtkTextureObject* tex,
+  const glm::ivec3& dims, int axis, int slabs, const float* texels,
+  const std::vector<NodeBox>& boxes)
+{
+  if (boxes.empty())
+  {
+    return;
+  }
+  glm::ivec3 size = dims;
+  size[axis] *= slabs;
+  GLint saved[6], unpackBuffer = 0;
+  const GLenum names[6] = { GL_UNPACK_ROW_LENGTH, GL_UNPACK_IMAGE_HEIGHT, GL_UNPACK_SKIP_PIXELS,
+    GL_UNPACK_SKIP_ROWS, GL_UNPACK_SKIP_IMAGES, GL_UNPACK_ALIGNMENT };
+  for (int i = 0; i < 6; ++i)
+  {
+    glGetIntegerv(names[i], &saved[i]);
+  }
+  glGetIntegerv(GL_PIXEL_UNPACK_BUFFER_BINDING, &unpackBuffer);
+  glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
+  const GLint state[6] = { size.x, size.y, 0, 0, 0, 4 };
+  for (int i = 0; i < 6; ++i)
+  {
+    glPixelStorei(names[i], state[i]);
+  }
+  tex->Activate();
+  for (int slab = 0; slab < slabs; ++slab)
+  {
+    glm::ivec3 offset(0);
+    offset[axis] = slab * dims[axis];
+    for (const NodeBox& box : boxes)
+    {
+      const glm::ivec3 lo = box.Lo + offset;
+      const glm::ivec3 n = box.Hi - box.Lo + 1;
+      const std::size_t first =
+        static_cast<std::size_t>((static_cast<std::int64_t>(lo.z) * size.y + lo.y) * size.x + lo.x);
+      glTexSubImage3D(
+        GL_TEXTURE_3D, 0, lo.x, lo.y, lo.z, n.x, n.y, n.z, GL_RGBA, GL_FLOAT, texels + 4 * first);
+    }
+  }
+  tex->Deactivate();
+  for (int i = 0; i < 6; ++i)
+  {
+    glPixelStorei(names[i], saved[i]);
+  }
+  glBindBuffer(GL_PIXEL_UNPACK_BUFFER, static_cast<GLuint>(unpackBuffer));
 }
 
 //------------------------------------------------------------------------------
@@ -137,52 +186,43 @@ bool vtkClusteredLightingFarFieldTextures::Sum(vtkOpenGLRenderWindow* rw, const 
     return true; // nothing new to sum or upload
   }
   const vtkIdType listed = static_cast<vtkIdType>(list.Blocks.size());
+  // What each entry sums: a box of nodes, and their bits in the block.
+  const glm::ivec3 dims(grid.Dims[0], grid.Dims[1], grid.Dims[2]);
+  std::vector<NodeBox>& boxes = this->Boxes;
+  boxes.resize(list.Blocks.size());
+  this->NodesBuilt = 0;
+  for (std::size_t at = 0; at < list.Blocks.size(); ++at)
+  {
+    const glm::ivec3 first = GetFarFieldBlockFirstNode(grid, list.Blocks[at]);
+    const int layerAxis = list.Axis[at];
+    int l0, l1;
+    GetFarFieldLayerRange(list.Layers[at], l0, l1);
+    NodeBox& box = boxes[at];
+    box.Lo = first;
+    box.Hi = glm::min(first + FarFieldBlockSize, dims) - 1;
+    box.Lo[layerAxis] = first[layerAxis] + l0;
+    box.Hi[layerAxis] = std::min(box.Hi[layerAxis], first[layerAxis] + l1);
+    this->Built[static_cast<std::size_t>(list.Blocks[at])] |=
+      GetFarFieldLayerMask(layerAxis, l0, l1);
+    const glm::ivec3 n = glm::max(box.Hi - box.Lo + 1, 0);
+    this->NodesBuilt += static_cast<std::int64_t>(n.x) * n.y * n.z;
+  }
+  // Summed, then packed box by box (a row of up to 4 nodes along x at a time) while the
+  // sums are in this thread's cache.
   vtkSMPTools::For(0, listed, 1,
     [&](vtkIdType b0, vtkIdType b1)
     {
       ComputeFarFieldMomentsForThisCPU(grid, lights, nearRadii, tree, plan.Grouping, b0, b1,
         this->Moments, channel, plan.Order4Diffuse, bins ? &this->Bins : nullptr, &list);
-    });
-  // Packed block by block, the layers summed (lowest to highest asked, along the block's
-  // axis), a row of up to 4 nodes along x at a time.
-  const std::array<int, 3> blocks = GetFarFieldBlocks(grid);
-  struct Entry
-  {
-    glm::ivec3 First;       ///< the block's first node
-    glm::ivec3 Lo, Hi;      ///< the nodes summed, in the grid
-    std::uint64_t Mask = 0; ///< their bits in the block
-  };
-  auto describe = [&](std::size_t at)
-  {
-    Entry e;
-    const std::int64_t b = list.Blocks[at];
-    e.First =
-      glm::ivec3(static_cast<int>(b % blocks[0]), static_cast<int>((b / blocks[0]) % blocks[1]),
-        static_cast<int>(b / (static_cast<std::int64_t>(blocks[0]) * blocks[1]))) *
-      FarFieldBlockSize;
-    const glm::ivec3 dims(grid.Dims[0], grid.Dims[1], grid.Dims[2]);
-    e.Lo = e.First;
-    e.Hi = glm::min(e.First + FarFieldBlockSize, dims) - 1;
-    const int layerAxis = list.Axis[at];
-    int first, last;
-    GetFarFieldLayerRange(list.Layers[at], first, last);
-    e.Mask = GetFarFieldLayerMask(layerAxis, first, last);
-    e.Lo[layerAxis] = e.First[layerAxis] + first;
-    e.Hi[layerAxis] = std::min(e.Hi[layerAxis], e.First[layerAxis] + last);
-    return e;
-  };
-  vtkSMPTools::For(0, listed, 16,
-    [&](vtkIdType b0, vtkIdType b1)
-    {
       for (vtkIdType at = b0; at < b1; ++at)
       {
-        const Entry e = describe(static_cast<std::size_t>(at));
-        for (int k = e.Lo.z; k <= e.Hi.z; ++k)
+        const NodeBox& box = boxes[static_cast<std::size_t>(at)];
+        for (int k = box.Lo.z; k <= box.Hi.z; ++k)
         {
-          for (int j = e.Lo.y; j <= e.Hi.y; ++j)
+          for (int j = box.Lo.y; j <= box.Hi.y; ++j)
           {
-            const std::size_t n0 = static_cast<std::size_t>(grid.NodeIndex(e.Lo.x, j, k));
-            const std::size_t n1 = n0 + static_cast<std::size_t>(e.Hi.x - e.Lo.x + 1);
+            const std::size_t n0 = static_cast<std::size_t>(grid.NodeIndex(box.Lo.x, j, k));
+            const std::size_t n1 = n0 + static_cast<std::size_t>(box.Hi.x - box.Lo.x + 1);
             if (oneChannel)
             {
               PackFarFieldTexelsOneChannel(this->Moments, channel, n0, n1, this->Texels);
@@ -200,14 +240,28 @@ bool vtkClusteredLightingFarFieldTextures::Sum(vtkOpenGLRenderWindow* rw, const 
         }
       }
     });
-  this->NodesBuilt = 0;
-  for (std::size_t at = 0; at < list.Blocks.size(); ++at)
+  // Boxes next to each other along x with the same rows are uploaded as one (the entries
+  // come in block order, x fastest).
+  std::size_t merged = 0;
+  for (std::size_t at = 0; at < boxes.size(); ++at)
   {
-    const Entry e = describe(at);
-    this->Built[static_cast<std::size_t>(list.Blocks[at])] |= e.Mask;
-    const glm::ivec3 n = e.Hi - e.Lo + 1;
-    this->NodesBuilt += static_cast<std::int64_t>(n.x) * n.y * n.z;
+    NodeBox& last = boxes[merged > 0 ? merged - 1 : 0];
+    const NodeBox& box = boxes[at];
+    if (glm::any(glm::lessThan(box.Hi, box.Lo)))
+    {
+      continue; // nothing summed (layers past the grid's end)
+    }
+    if (merged > 0 && last.Hi.x + 1 == box.Lo.x && last.Lo.y == box.Lo.y && last.Hi.y == box.Hi.y &&
+      last.Lo.z == box.Lo.z && last.Hi.z == box.Hi.z)
+    {
+      last.Hi.x = box.Hi.x;
+    }
+    else
+    {
+      boxes[merged++] = box;
+    }
   }
+  boxes.resize(merged);
 
   bool ok = true;
   const bool resize = grid.Dims != this->Dims;
@@ -222,31 +276,48 @@ bool vtkClusteredLightingFarFieldTextures::Sum(vtkOpenGLRenderWindow* rw, const 
     {
       continue;
     }
+    const float* texels = this->Texels[static_cast<std::size_t>(q)].data();
+    if (tex && tex->GetHandle())
+    {
+      // The texture holds what the texels held before this build (uploaded whole when
+      // made, then box by box as here): only the boxes summed now changed.
+      UploadBoxes(tex, dims, 0, 1, texels, boxes);
+      continue;
+    }
     if (!tex)
     {
       tex = NewRGBA32FTexture(rw, vtkTextureObject::Linear);
     }
-    // Create3DFromRaw re-specifies the image (same size: new contents).
     ok = tex->Create3DFromRaw(static_cast<unsigned int>(grid.Dims[0]),
       static_cast<unsigned int>(grid.Dims[1]), static_cast<unsigned int>(grid.Dims[2]), 4,
-      VTK_FLOAT, this->Texels[static_cast<std::size_t>(q)].data());
+      VTK_FLOAT, const_cast<float*>(texels));
   }
-  if (resize || !bins)
+  // The bins' slab count changes with the shared colour, and with it the texture's size.
+  const int binSlabs = bins ? slabs : 0;
+  if (resize || binSlabs != this->SpecularBinSlabs)
   {
     vtkClusteredLightingReleaseObject(this->SpecularBins, rw);
   }
+  this->SpecularBinSlabs = 0;
   if (ok && bins)
   {
-    if (!this->SpecularBins)
+    if (this->SpecularBins && this->SpecularBins->GetHandle())
     {
-      this->SpecularBins = NewRGBA32FTexture(rw, vtkTextureObject::Linear);
+      UploadBoxes(this->SpecularBins, dims, axis, slabs, this->BinTexels.data(), boxes);
     }
-    // The slab count changes with the shared colour: re-specified every build.
-    std::array<int, 3> size = grid.Dims;
-    size[static_cast<std::size_t>(axis)] *= slabs;
-    ok = this->SpecularBins->Create3DFromRaw(static_cast<unsigned int>(size[0]),
-      static_cast<unsigned int>(size[1]), static_cast<unsigned int>(size[2]), 4, VTK_FLOAT,
-      this->BinTexels.data());
+    else
+    {
+      if (!this->SpecularBins)
+      {
+        this->SpecularBins = NewRGBA32FTexture(rw, vtkTextureObject::Linear);
+      }
+      std::array<int, 3> size = grid.Dims;
+      size[static_cast<std::size_t>(axis)] *= slabs;
+      ok = this->SpecularBins->Create3DFromRaw(static_cast<unsigned int>(size[0]),
+        static_cast<unsigned int>(size[1]), static_cast<unsigned int>(size[2]), 4, VTK_FLOAT,
+        this->BinTexels.data());
+    }
+    this->SpecularBinSlabs = ok ? slabs : 0;
   }
   // The lobe table: the same for every far field, made once.
   if (ok && !(this->LobeTable && this->LobeTable->GetHandle()))
@@ -386,6 +457,7 @@ void vtkClusteredLightingFarFieldTextures::Release(vtkWindow* w)
   // heap, which keeps the memory (TestClusteredLightingSoak saw resident memory step up
   // by 12 to 15 MiB when they were given back here).
   vtkClusteredLightingReleaseObject(this->SpecularBins, w);
+  this->SpecularBinSlabs = 0;
   std::vector<std::uint64_t>().swap(this->Built); // the next sums start over
   this->Dims = { { 0, 0, 0 } };
   this->SharedColor = glm::dvec3(0.0);

@@ -15,7 +15,10 @@
  * into buffers kept from build to build) and uploaded. Only the nodes that surfaces read
  * are summed and packed, when the caller says which (vtkClusteredLightingFarFieldBlocks.h,
  * vtkClusteredLightingPass::FarFieldSkipEmptyBlocks); Extend adds those of surfaces that
- * moved or appeared, with the same lights. The textures are uploaded whole.
+ * moved or appeared, with the same lights. A texture is uploaded whole when it is made
+ * (the first build, a new grid size, a new number of textures or bin slabs); after that
+ * only the boxes of nodes each build summed (glTexSubImage3D, boxes of a block's layers,
+ * merged along x), read in place from the packed buffers.
  *
  * GL objects: 14 3D textures, RGBA32F, of the grid's dimensions (54 moments per node, 224
  * bytes with the padding), linear filtering (the shading code's trilinear interpolation),
@@ -113,6 +116,20 @@ public:
 private:
   vtkClusteredLightingFarFieldTextures(const vtkClusteredLightingFarFieldTextures&) = delete;
   void operator=(const vtkClusteredLightingFarFieldTextures&) = delete;
+  /// Nodes [Lo, Hi] of the grid (inclusive; per axis).
+  struct NodeBox
+  {
+    glm::ivec3 Lo, Hi;
+  };
+  /**
+   * Uploads the boxes of nodes `boxes` of `texels` (RGBA, 4 floats per texel) into the 3D
+   * texture `tex`, already made: a grid of `dims` nodes stacked `slabs` times along `axis`
+   * (the far specular's bins; 1 for the moments), each box once per slab. The texels are
+   * read in place (the unpack row length and image height span the whole texture); the
+   * unpack state is restored after.
+   */
+  static void UploadBoxes(vtkTextureObject* tex, const glm::ivec3& dims, int axis, int slabs,
+    const float* texels, const std::vector<NodeBox>& boxes);
   /// Build (full: a new light tree, nothing summed yet) and Extend.
   bool Sum(vtkOpenGLRenderWindow* rw, const vtkClusteredLighting::FarFieldPlan& plan,
     const std::vector<vtkClusteredLighting::PreparedLight>& lights,
@@ -125,6 +142,8 @@ private:
   std::vector<float> BinTexels;             ///< packed, reused
   bool SpecularBinsTooDeep = false;
   int SpecularBinsAxis = 2;
+  int SpecularBinSlabs = 0;   ///< slabs of the bins' texture (0: none made)
+  std::vector<NodeBox> Boxes; ///< the last build's, reused
   std::array<int, 3> Dims = { { 0, 0, 0 } };
   std::vector<double> Moments; ///< node sums, reused from build to build (animated lights)
   std::array<std::vector<float>, vtkClusteredLighting::FarFieldTextures> Texels; ///< packed, reused

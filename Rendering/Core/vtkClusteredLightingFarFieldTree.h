@@ -354,7 +354,8 @@ inline void ComputeGroupSpreadTerms(const FarFieldLightTree::Node& n, const glm:
   const glm::dvec3 axes[3] = { std::sqrt(std::max(P0, 0.0)) * glm::dvec3(1.0, L10, L20),
     std::sqrt(std::max(P1, 0.0)) * glm::dvec3(0.0, 1.0, L21),
     std::sqrt(std::max(P2, 0.0)) * glm::dvec3(0.0, 0.0, 1.0) };
-  double t[FarFieldMomentsPerChannel];
+  // The fourth moments of one light of unit colour at offset y, times `scale`, added to
+  // dm (ComputeFarMomentTerms' t[9] on).
   auto addFourth = [&](const glm::dvec3& y, double scale)
   {
     const double d = glm::length(y);
@@ -363,21 +364,33 @@ inline void ComputeGroupSpreadTerms(const FarFieldLightTree::Node& n, const glm:
     {
       return;
     }
-    ComputeFarMomentTerms(1.0 / q, y / d, t);
-    for (int m = FarFieldOrder2Moments; m < FarFieldMomentsPerChannel; ++m)
-    {
-      dm[m] += scale * t[m];
-    }
+    const glm::dvec3 w = y / d;
+    const double g = scale / q, gxx = g * w.x * w.x, gxy = g * w.x * w.y, gyy = g * w.y * w.y;
+    dm[9] += gxx * w.x * w.x;
+    dm[10] += gxx * w.x * w.y;
+    dm[11] += gxx * w.y * w.y;
+    dm[12] += gxy * w.y * w.y;
+    dm[13] += gyy * w.y * w.y;
+    dm[14] += gxx * w.x * w.z;
+    dm[15] += gxx * w.y * w.z;
+    dm[16] += gyy * w.x * w.z;
+    dm[17] += gyy * w.y * w.z;
   };
   const double h = FarFieldSpreadStep;
+  int differences = 0;
   for (const glm::dvec3& l : axes)
   {
     if (glm::dot(l, l) > 0.0)
     {
       addFourth(v + h * l, 0.5 / (h * h));
       addFourth(v - h * l, 0.5 / (h * h));
-      addFourth(v, -1.0 / (h * h));
+      ++differences;
     }
+  }
+  // The centre's term of every second difference, once.
+  if (differences > 0)
+  {
+    addFourth(v, -differences / (h * h));
   }
 }
 
@@ -570,6 +583,16 @@ inline std::int64_t GetNumberOfFarFieldBlocks(const FarFieldGrid& grid)
 {
   const std::array<int, 3> b = GetFarFieldBlocks(grid);
   return static_cast<std::int64_t>(b[0]) * b[1] * b[2];
+}
+
+/// The first node (i, j, k) of block b (block index x fastest, GetFarFieldBlocks).
+inline glm::ivec3 GetFarFieldBlockFirstNode(const FarFieldGrid& grid, std::int64_t b)
+{
+  const std::array<int, 3> blocks = GetFarFieldBlocks(grid);
+  const std::int64_t layer = static_cast<std::int64_t>(blocks[0]) * blocks[1];
+  return glm::ivec3(static_cast<int>(b % blocks[0]), static_cast<int>((b % layer) / blocks[0]),
+           static_cast<int>(b / layer)) *
+    FarFieldBlockSize;
 }
 
 /// The world box of the nodes of the block holding node (i, j, k).
@@ -954,7 +977,6 @@ std::int64_t ComputeFarFieldMomentsOf(const FarFieldGrid& grid,
   const int first = Channels == 1 ? channel * FarFieldMomentsPerChannel : 0;
   auto colorOf = [channel](const glm::dvec3& c)
   { return Channels == 1 ? glm::dvec3(c[channel], 0.0, 0.0) : c; };
-  const std::array<int, 3> blocks = GetFarFieldBlocks(grid);
   Detail::FarFieldSources whole, windowed;
   Detail::FarFieldSources binWhole; // the bins' whole sources (SplitGroupForFarSpecularBins)
   std::vector<int> stack, binStack;
@@ -973,11 +995,9 @@ std::int64_t ComputeFarFieldMomentsOf(const FarFieldGrid& grid,
   for (std::int64_t entry = b0; entry < b1; ++entry)
   {
     const std::size_t e = static_cast<std::size_t>(entry);
-    const std::int64_t b = blockList ? blockList->Blocks[e] : entry;
-    const int i0 = static_cast<int>(b % blocks[0]) * FarFieldBlockSize;
-    const int j0 = static_cast<int>((b / blocks[0]) % blocks[1]) * FarFieldBlockSize;
-    const int k0 =
-      static_cast<int>(b / (static_cast<std::int64_t>(blocks[0]) * blocks[1])) * FarFieldBlockSize;
+    const glm::ivec3 firstNode =
+      GetFarFieldBlockFirstNode(grid, blockList ? blockList->Blocks[e] : entry);
+    const int i0 = firstNode.x, j0 = firstNode.y, k0 = firstNode.z;
     const int ni = std::min(FarFieldBlockSize, grid.Dims[0] - i0);
     const int nj = std::min(FarFieldBlockSize, grid.Dims[1] - j0);
     const int nk = std::min(FarFieldBlockSize, grid.Dims[2] - k0);

@@ -13,6 +13,9 @@
 //  - a prop that moves under still lights gets its nodes summed in that frame (a part,
 //    not the whole grid), and the image is the whole build's; a prop that does not move
 //    and lights that do not change sum nothing;
+//  - after the first build only the summed nodes are uploaded (boxes of them into the
+//    textures it made), the far specular's bins included: within the bound, and bit for bit
+//    the whole build's image;
 //  - an actor that draws lines as tubes (fragments off its geometry) asks for every block;
 //  - PrintSelf names the option and the counts; nothing is reported.
 #include "ClusteredLightingGLTestUtilities.h"
@@ -141,6 +144,12 @@ int TestClusteredLightingSkipEmptyBlocks(int, char*[])
     samePart = samePart && pass->GetNumberOfFarFieldNodesBuilt() == part;
   }
   Check(samePart, "moving lights sum the same part every frame");
+  // Every light elsewhere: the textures made by the first build now hold what was
+  // uploaded box by box, and nothing of the first lights may be left where surfaces read.
+  ClusteredLightingTest::MakeUserLights(lights, 400, 0.03, 6);
+  rw->Render();
+  Check(ClusteredLightingTest::CheckClusteredFrame(pass, rw, ren, 1.4, "new lights") == 0,
+    "other lights (boxes uploaded): within the bound of brute force");
   lights->SetPosition(3, 0.3, 0.2, 0.1);
   Check(SameAsWholeBuild(pass, rw, "moved lights"),
     "after the lights moved: the whole grid's image, bit for bit");
@@ -165,7 +174,38 @@ int TestClusteredLightingSkipEmptyBlocks(int, char*[])
   Check(SameAsWholeBuild(pass, rw, "moved ball"),
     "after the ball moved: the whole grid's image, bit for bit");
 
-  // 4. Lines drawn as tubes: every block.
+  // 4. The far specular's bins (the ball is shiny): made whole, then uploaded box by box
+  // for other lights.
+  pass->FarFieldSpecularBinsOn();
+  rw->Render();
+  Check(pass->GetFarFieldSpecularBinsUsed(), "the ball's specular takes the bins");
+  ClusteredLightingTest::MakeUserLights(lights, 400, 0.03, 7);
+  rw->Render();
+  Check(pass->GetNumberOfFarFieldNodesBuilt() > 0 &&
+      pass->GetNumberOfFarFieldNodesBuilt() < GridNodes(pass) / 2,
+    "other lights: a part summed again");
+  Check(ClusteredLightingTest::CheckClusteredFrame(pass, rw, ren, 1.4, "bins, other lights") == 0,
+    "the bins uploaded box by box: within the bound of brute force");
+  {
+    // Bins made afresh (switched off, which releases their texture, and on: uploaded
+    // whole) for the same lights give the same image.
+    rw->Render();
+    const std::vector<float> boxes = ClusteredLightingTest::CapturePixels(rw);
+    pass->FarFieldSpecularBinsOff();
+    rw->Render();
+    pass->FarFieldSpecularBinsOn();
+    rw->Render();
+    const double diff =
+      ClusteredLightingTest::CompareImages(ClusteredLightingTest::CapturePixels(rw), boxes)
+        .MaxAbsError;
+    std::printf("bins made afresh: largest difference %g\n", diff);
+    Check(diff == 0.0, "the bins uploaded box by box: the image of bins made afresh, bit for bit");
+  }
+  lights->SetPosition(6, -0.5, 0.3, 0.4);
+  Check(SameAsWholeBuild(pass, rw, "bins"), "with the bins: the whole grid's image, bit for bit");
+  pass->FarFieldSpecularBinsOff();
+
+  // 5. Lines drawn as tubes: every block.
   vtkNew<vtkLineSource> line;
   line->SetPoint1(-2.0, -0.5, 2.0);
   line->SetPoint2(2.0, -0.5, 2.0);

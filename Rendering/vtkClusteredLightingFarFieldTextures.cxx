@@ -35,7 +35,38 @@ vtkTextureObject* NewRGBA32FTexture(vtkOpenGLRenderWindow* rw, int filter)
 }
 
 //------------------------------------------------------------------------------
-void vtkClusteredLightingFarFieldTextures::UploadBoxes(vtkTextureObject* tex,
+vtkClusteredLightingFarFieldTextures::UnpackScope::UnpackScope()
+{
+  for (int i = 0; i < 6; ++i)
+  {
+    glGetIntegerv(Names[i], &this->Saved[i]);
+  }
+  glGetIntegerv(GL_PIXEL_UNPACK_BUFFER_BINDING, &this->SavedBuffer);
+  glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
+  glPixelStorei(GL_UNPACK_SKIP_PIXELS, 0);
+  glPixelStorei(GL_UNPACK_SKIP_ROWS, 0);
+  glPixelStorei(GL_UNPACK_SKIP_IMAGES, 0);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
+  glPixelStorei(GL_UNPACK_IMAGE_HEIGHT, 0);
+}
+
+vtkClusteredLightingFarFieldTextures::UnpackScope::~UnpackScope()
+{
+  for (int i = 0; i < 6; ++i)
+  {
+    glPixelStorei(Names[i], this->Saved[i]);
+  }
+  glBindBuffer(GL_PIXEL_UNPACK_BUFFER, static_cast<GLuint>(this->SavedBuffer));
+}
+
+const unsigned int vtkClusteredLightingFarFieldTextures::UnpackScope::Names[6] = {
+  GL_UNPACK_ROW_LENGTH, GL_UNPACK_IMAGE_HEIGHT, GL_UNPACK_SKIP_PIXELS, GL_UNPACK_SKIP_ROWS,
+  GL_UNPACK_SKIP_IMAGES, GL_UNPACK_ALIGNMENT
+};
+
+//------------------------------------------------------------------------------
+void vtkClusteredLightingFarFieldTextures::UploadBoxes(const UnpackScope&, vtkTextureObject* tex,
   const glm::ivec3& dims, int axis, int slabs, const float* texels,
   const std::vector<NodeBox>& boxes)
 {
@@ -45,20 +76,8 @@ void vtkClusteredLightingFarFieldTextures::UploadBoxes(vtkTextureObject* tex,
   }
   glm::ivec3 size = dims;
   size[axis] *= slabs;
-  GLint saved[6], unpackBuffer = 0;
-  const GLenum names[6] = { GL_UNPACK_ROW_LENGTH, GL_UNPACK_IMAGE_HEIGHT, GL_UNPACK_SKIP_PIXELS,
-    GL_UNPACK_SKIP_ROWS, GL_UNPACK_SKIP_IMAGES, GL_UNPACK_ALIGNMENT };
-  for (int i = 0; i < 6; ++i)
-  {
-    glGetIntegerv(names[i], &saved[i]);
-  }
-  glGetIntegerv(GL_PIXEL_UNPACK_BUFFER_BINDING, &unpackBuffer);
-  glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
-  const GLint state[6] = { size.x, size.y, 0, 0, 0, 4 };
-  for (int i = 0; i < 6; ++i)
-  {
-    glPixelStorei(names[i], state[i]);
-  }
+  glPixelStorei(GL_UNPACK_ROW_LENGTH, size.x);
+  glPixelStorei(GL_UNPACK_IMAGE_HEIGHT, size.y);
   tex->Activate();
   for (int slab = 0; slab < slabs; ++slab)
   {
@@ -75,11 +94,9 @@ void vtkClusteredLightingFarFieldTextures::UploadBoxes(vtkTextureObject* tex,
     }
   }
   tex->Deactivate();
-  for (int i = 0; i < 6; ++i)
-  {
-    glPixelStorei(names[i], saved[i]);
-  }
-  glBindBuffer(GL_PIXEL_UNPACK_BUFFER, static_cast<GLuint>(unpackBuffer));
+  // Back to tightly packed rows, for the textures the same scope makes whole.
+  glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
+  glPixelStorei(GL_UNPACK_IMAGE_HEIGHT, 0);
 }
 
 //------------------------------------------------------------------------------
@@ -193,17 +210,13 @@ bool vtkClusteredLightingFarFieldTextures::Sum(vtkOpenGLRenderWindow* rw, const 
   this->NodesBuilt = 0;
   for (std::size_t at = 0; at < list.Blocks.size(); ++at)
   {
-    const glm::ivec3 first = GetFarFieldBlockFirstNode(grid, list.Blocks[at]);
-    const int layerAxis = list.Axis[at];
-    int l0, l1;
-    GetFarFieldLayerRange(list.Layers[at], l0, l1);
+    const FarFieldEntryNodes entry =
+      GetFarFieldEntryNodes(grid, &list, static_cast<std::int64_t>(at));
     NodeBox& box = boxes[at];
-    box.Lo = first;
-    box.Hi = glm::min(first + FarFieldBlockSize, dims) - 1;
-    box.Lo[layerAxis] = first[layerAxis] + l0;
-    box.Hi[layerAxis] = std::min(box.Hi[layerAxis], first[layerAxis] + l1);
+    box.Lo = entry.Lo();
+    box.Hi = entry.Hi();
     this->Built[static_cast<std::size_t>(list.Blocks[at])] |=
-      GetFarFieldLayerMask(layerAxis, l0, l1);
+      GetFarFieldLayerMask(entry.Axis, entry.LayerFirst, entry.LayerLast);
     const glm::ivec3 n = glm::max(box.Hi - box.Lo + 1, 0);
     this->NodesBuilt += static_cast<std::int64_t>(n.x) * n.y * n.z;
   }
@@ -265,6 +278,7 @@ bool vtkClusteredLightingFarFieldTextures::Sum(vtkOpenGLRenderWindow* rw, const 
 
   bool ok = true;
   const bool resize = grid.Dims != this->Dims;
+  const UnpackScope unpack; // until this function returns
   for (int q = 0; q < FarFieldTextures && ok; ++q)
   {
     vtkTextureObject*& tex = this->Textures[static_cast<std::size_t>(q)];
@@ -281,7 +295,7 @@ bool vtkClusteredLightingFarFieldTextures::Sum(vtkOpenGLRenderWindow* rw, const 
     {
       // The texture holds what the texels held before this build (uploaded whole when
       // made, then box by box as here): only the boxes summed now changed.
-      UploadBoxes(tex, dims, 0, 1, texels, boxes);
+      UploadBoxes(unpack, tex, dims, 0, 1, texels, boxes);
       continue;
     }
     if (!tex)
@@ -303,7 +317,7 @@ bool vtkClusteredLightingFarFieldTextures::Sum(vtkOpenGLRenderWindow* rw, const 
   {
     if (this->SpecularBins && this->SpecularBins->GetHandle())
     {
-      UploadBoxes(this->SpecularBins, dims, axis, slabs, this->BinTexels.data(), boxes);
+      UploadBoxes(unpack, this->SpecularBins, dims, axis, slabs, this->BinTexels.data(), boxes);
     }
     else
     {

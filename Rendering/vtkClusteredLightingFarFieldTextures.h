@@ -122,14 +122,32 @@ private:
     glm::ivec3 Lo, Hi;
   };
   /**
+   * The pixel-unpack state a build's uploads need (no unpack buffer, no skips, alignment
+   * 4, tightly packed rows), set once for all its textures: saved when made, restored
+   * when destroyed.
+   */
+  class UnpackScope
+  {
+  public:
+    UnpackScope();
+    ~UnpackScope();
+    UnpackScope(const UnpackScope&) = delete;
+    void operator=(const UnpackScope&) = delete;
+
+  private:
+    static const unsigned int Names[6];
+    int Saved[6] = {};
+    int SavedBuffer = 0;
+  };
+  /**
    * Uploads the boxes of nodes `boxes` of `texels` (RGBA, 4 floats per texel) into the 3D
    * texture `tex`, already made: a grid of `dims` nodes stacked `slabs` times along `axis`
    * (the far specular's bins; 1 for the moments), each box once per slab. The texels are
-   * read in place (the unpack row length and image height span the whole texture); the
-   * unpack state is restored after.
+   * read in place (the unpack row length and image height span the whole texture while it
+   * uploads, then are set back to 0); `scope` holds the rest of the unpack state.
    */
-  static void UploadBoxes(vtkTextureObject* tex, const glm::ivec3& dims, int axis, int slabs,
-    const float* texels, const std::vector<NodeBox>& boxes);
+  static void UploadBoxes(const UnpackScope& scope, vtkTextureObject* tex, const glm::ivec3& dims,
+    int axis, int slabs, const float* texels, const std::vector<NodeBox>& boxes);
   /// Build (full: a new light tree, nothing summed yet) and Extend.
   bool Sum(vtkOpenGLRenderWindow* rw, const vtkClusteredLighting::FarFieldPlan& plan,
     const std::vector<vtkClusteredLighting::PreparedLight>& lights,

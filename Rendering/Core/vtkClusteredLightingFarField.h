@@ -94,31 +94,41 @@ constexpr int FarFieldOrder2Moments = 9;
 constexpr int FarFieldMomentsPerChannel = 18;
 constexpr int FarFieldFloatsPerNode = 3 * FarFieldMomentsPerChannel;
 
+/// The fourth-order terms (F400 to F031, the last 9 of FarFieldMomentsPerChannel) one
+/// light of far part g from unit direction u adds to a channel's moments, into f[0] to
+/// f[8]. ComputeFarMomentTerms' t[9] on, and the group spread's fourth moments
+/// (ComputeGroupSpreadTerms) use the same expressions.
+inline void ComputeFarFourthMomentTerms(double g, const glm::dvec3& u, double* f)
+{
+  const double gx = g * u.x, gy = g * u.y;
+  const double gxx = gx * u.x, gyy = gy * u.y, gxy = gx * u.y;
+  f[0] = gxx * u.x * u.x;
+  f[1] = gxx * u.x * u.y;
+  f[2] = gxx * u.y * u.y;
+  f[3] = gxy * u.y * u.y;
+  f[4] = gyy * u.y * u.y;
+  f[5] = gxx * u.x * u.z;
+  f[6] = gxx * u.y * u.z;
+  f[7] = gyy * u.x * u.z;
+  f[8] = gyy * u.y * u.z;
+}
+
 /// The terms one light of far part g from unit direction u adds to a channel's moments
 /// (FarFieldMomentsPerChannel, in their order). Mirrors Detail::ComputeFarFieldTerms.
 inline void ComputeFarMomentTerms(
   double g, const glm::dvec3& u, double (&t)[FarFieldMomentsPerChannel])
 {
   const double gx = g * u.x, gy = g * u.y;
-  const double gxx = gx * u.x, gyy = gy * u.y, gxy = gx * u.y;
   t[0] = g;
   t[1] = gx;
   t[2] = gy;
   t[3] = g * u.z;
-  t[4] = gxx;
-  t[5] = gyy;
-  t[6] = gxy;
+  t[4] = gx * u.x;
+  t[5] = gy * u.y;
+  t[6] = gx * u.y;
   t[7] = gx * u.z;
   t[8] = gy * u.z;
-  t[9] = gxx * u.x * u.x;
-  t[10] = gxx * u.x * u.y;
-  t[11] = gxx * u.y * u.y;
-  t[12] = gxy * u.y * u.y;
-  t[13] = gyy * u.y * u.y;
-  t[14] = gxx * u.x * u.z;
-  t[15] = gxx * u.y * u.z;
-  t[16] = gyy * u.x * u.z;
-  t[17] = gyy * u.y * u.z;
+  ComputeFarFourthMomentTerms(g, u, t + FarFieldOrder2Moments);
 }
 
 /// The window of the near/far split, W(x) = clamp(1 - x^4, 0, 1)^2.

@@ -364,17 +364,12 @@ inline void ComputeGroupSpreadTerms(const FarFieldLightTree::Node& n, const glm:
     {
       return;
     }
-    const glm::dvec3 w = y / d;
-    const double g = scale / q, gxx = g * w.x * w.x, gxy = g * w.x * w.y, gyy = g * w.y * w.y;
-    dm[9] += gxx * w.x * w.x;
-    dm[10] += gxx * w.x * w.y;
-    dm[11] += gxx * w.y * w.y;
-    dm[12] += gxy * w.y * w.y;
-    dm[13] += gyy * w.y * w.y;
-    dm[14] += gxx * w.x * w.z;
-    dm[15] += gxx * w.y * w.z;
-    dm[16] += gyy * w.x * w.z;
-    dm[17] += gyy * w.y * w.z;
+    double f[FarFieldMomentsPerChannel - FarFieldOrder2Moments];
+    ComputeFarFourthMomentTerms(scale / q, y / d, f);
+    for (int k = 0; k < FarFieldMomentsPerChannel - FarFieldOrder2Moments; ++k)
+    {
+      dm[FarFieldOrder2Moments + k] += f[k];
+    }
   };
   const double h = FarFieldSpreadStep;
   int differences = 0;
@@ -595,6 +590,46 @@ inline glm::ivec3 GetFarFieldBlockFirstNode(const FarFieldGrid& grid, std::int64
     FarFieldBlockSize;
 }
 
+/// The nodes one entry of a block list sums (or, without a list, block `entry` of the
+/// grid, every layer along z): its block's first node and extent within the grid, the
+/// axis its layers run along, and the layers asked (LayerFirst to LayerLast, as the
+/// entry's mask) of which those to LayerLastInGrid exist. The builder
+/// (ComputeFarFieldMoments) and the textures' uploads both read it.
+struct FarFieldEntryNodes
+{
+  glm::ivec3 FirstNode, Extent;
+  int Axis, LayerFirst, LayerLast, LayerLastInGrid;
+  /// Whether the entry sums no node (its layers lie past the grid's end).
+  bool IsEmpty() const { return this->LayerFirst > this->LayerLastInGrid; }
+  /// The box of nodes summed, inclusive (Hi below Lo along Axis when empty).
+  glm::ivec3 Lo() const
+  {
+    glm::ivec3 lo = this->FirstNode;
+    lo[this->Axis] += this->LayerFirst;
+    return lo;
+  }
+  glm::ivec3 Hi() const
+  {
+    glm::ivec3 hi = this->FirstNode + this->Extent - 1;
+    hi[this->Axis] = this->FirstNode[this->Axis] + this->LayerLastInGrid;
+    return hi;
+  }
+};
+
+inline FarFieldEntryNodes GetFarFieldEntryNodes(
+  const FarFieldGrid& grid, const FarFieldBlockList* list, std::int64_t entry)
+{
+  const std::size_t e = static_cast<std::size_t>(entry);
+  FarFieldEntryNodes r;
+  r.FirstNode = GetFarFieldBlockFirstNode(grid, list ? list->Blocks[e] : entry);
+  r.Extent = glm::min(glm::ivec3(FarFieldBlockSize),
+    glm::ivec3(grid.Dims[0], grid.Dims[1], grid.Dims[2]) - r.FirstNode);
+  r.Axis = list ? list->Axis[e] : 2;
+  GetFarFieldLayerRange(list ? list->Layers[e] : FarFieldAllLayers, r.LayerFirst, r.LayerLast);
+  r.LayerLastInGrid = std::min(r.LayerLast, r.Extent[r.Axis] - 1);
+  return r;
+}
+
 /// The world box of the nodes of the block holding node (i, j, k).
 inline void GetFarFieldBlockBox(
   const FarFieldGrid& grid, const glm::ivec3& node, glm::dvec3& lo, glm::dvec3& hi)
@@ -716,30 +751,73 @@ inline void ComputeFarFieldTerms(float dx, float dy, float dz, float a0, float a
  * - Lanes 0: source by source, each over all the block's nodes, the moments in memory
  *   (acc). Best where there are few vector registers (SSE2, AVX2).
  * - Lanes n: n nodes at a time, their moments kept in a local array while every source
- *   is added, so that most terms cost one multiply-add and no load or store (AVX-512's
- *   32 registers of 16 floats held all 27 of the order-2 moments; the 54 of order 4 spill
- *   some, and Lanes 16 is still 10 to 12% faster there than Lanes 0: 17.7 against 19.6
- *   ms at 4,096 lights, 62.8 against 71.3 at 65,536, 2026-12-06).
+ *   is added, so that most terms cost one multiply-add and no load or store. AVX-512's
+ *   32 registers of 16 floats hold the 27 order-2 moments of the three channels, but not
+ *   the 54 of order 4, so at order 4 the sources are swept twice: once for the order-2
+ *   terms, once for the fourth moments, 27 rows each (AccumulateLanes). The second sweep
+ *   computes each source's distance and attenuation again, and is still cheaper than
+ *   spilling: the order-4 node sums took 25.9 to 26.8 ms against 34.1 to 36.6 in one
+ *   sweep (ClusteredLightingFarFieldStudy --copies, 4,096 lights on the bunny, the whole
+ *   grid on 2 threads, old and new builds alternated, 2026-12-07).
  */
 /// Adds the far light of `src` at the node (px, py, pz) into column i of the moment rows
 /// (channel-major, as the nodes store them): 54 rows, or with Channels 1 the 18 rows of
-/// the one channel whose colour the source carries in R; the first Terms of each channel.
-template <bool Windowed, int Columns, int Channels, int Terms>
+/// the one channel whose colour the source carries in R; terms First to Terms - 1 of each
+/// channel, Stride rows apart (the rows hold term First first).
+template <bool Windowed, int Columns, int Channels, int Terms, int First = 0,
+  int Stride = FarFieldMomentsPerChannel>
 inline void AddFarFieldSource(
   const FarFieldSource& src, float px, float py, float pz, float (*rows)[Columns], int i)
 {
-  constexpr int M = FarFieldMomentsPerChannel;
-  float t[M];
+  float t[FarFieldMomentsPerChannel];
   ComputeFarFieldTerms<Windowed, Terms>(
     src.X - px, src.Y - py, src.Z - pz, src.A0, src.A1, src.A2, src.InverseNearRadius, t);
   VTK_CLUSTERED_LIGHTING_UNROLL
-  for (int m = 0; m < Terms; ++m)
+  for (int m = First; m < Terms; ++m)
   {
-    rows[m][i] += src.R * t[m];
+    rows[m - First][i] += src.R * t[m];
     if (Channels == 3)
     {
-      rows[M + m][i] += src.G * t[m];
-      rows[2 * M + m][i] += src.B * t[m];
+      rows[Stride + m - First][i] += src.G * t[m];
+      rows[2 * Stride + m - First][i] += src.B * t[m];
+    }
+  }
+}
+
+/// AccumulateBlock's Lanes n order for terms First to Terms - 1 of each channel: their
+/// rows of Lanes nodes held in a local array while every source is added.
+template <bool Windowed, int Lanes, int Channels, int First, int Terms>
+inline void AccumulateLanes(const FarFieldSources& s, const float* px, const float* py,
+  const float* pz, float (*acc)[FarFieldBlockNodes], int first, int end)
+{
+  static_assert(FarFieldLayerNodes % Lanes == 0, "lanes must divide a layer");
+  constexpr int M = FarFieldMomentsPerChannel, Stride = Terms - First;
+  for (int i0 = first; i0 < end; i0 += Lanes)
+  {
+    float a[Channels * Stride][Lanes];
+    for (int c = 0; c < Channels; ++c)
+    {
+      for (int m = 0; m < Stride; ++m)
+      {
+        std::copy(
+          acc[c * M + First + m] + i0, acc[c * M + First + m] + i0 + Lanes, a[c * Stride + m]);
+      }
+    }
+    for (std::size_t q = 0; q < s.Size(); ++q)
+    {
+      const FarFieldSource src = s.Get(q);
+      for (int i = 0; i < Lanes; ++i)
+      {
+        AddFarFieldSource<Windowed, Lanes, Channels, Terms, First, Stride>(
+          src, px[i0 + i], py[i0 + i], pz[i0 + i], a, i);
+      }
+    }
+    for (int c = 0; c < Channels; ++c)
+    {
+      for (int m = 0; m < Stride; ++m)
+      {
+        std::copy(a[c * Stride + m], a[c * Stride + m] + Lanes, acc[c * M + First + m] + i0);
+      }
     }
   }
 }
@@ -748,7 +826,6 @@ template <bool Windowed, int Lanes, int Channels, int Terms>
 inline void AccumulateBlock(const FarFieldSources& s, const float* px, const float* py,
   const float* pz, float (*acc)[FarFieldBlockNodes], int first = 0, int end = FarFieldBlockNodes)
 {
-  constexpr int Rows = Channels * FarFieldMomentsPerChannel;
   if constexpr (Lanes == 0)
   {
     for (std::size_t q = 0; q < s.Size(); ++q)
@@ -761,30 +838,18 @@ inline void AccumulateBlock(const FarFieldSources& s, const float* px, const flo
       }
     }
   }
+  else if constexpr (Channels == 3 && Terms > FarFieldOrder2Moments)
+  {
+    // The order-2 terms and the fourth moments in two sweeps over the sources: 27 rows
+    // each, held in registers, where the 54 of one sweep spilled (see above).
+    AccumulateLanes<Windowed, Lanes, Channels, 0, FarFieldOrder2Moments>(
+      s, px, py, pz, acc, first, end);
+    AccumulateLanes<Windowed, Lanes, Channels, FarFieldOrder2Moments, Terms>(
+      s, px, py, pz, acc, first, end);
+  }
   else
   {
-    static_assert(FarFieldLayerNodes % Lanes == 0, "lanes must divide a layer");
-    for (int i0 = first; i0 < end; i0 += Lanes)
-    {
-      float a[Rows][Lanes];
-      for (int m = 0; m < Rows; ++m)
-      {
-        std::copy(acc[m] + i0, acc[m] + i0 + Lanes, a[m]);
-      }
-      for (std::size_t q = 0; q < s.Size(); ++q)
-      {
-        const FarFieldSource src = s.Get(q);
-        for (int i = 0; i < Lanes; ++i)
-        {
-          AddFarFieldSource<Windowed, Lanes, Channels, Terms>(
-            src, px[i0 + i], py[i0 + i], pz[i0 + i], a, i);
-        }
-      }
-      for (int m = 0; m < Rows; ++m)
-      {
-        std::copy(a[m], a[m] + Lanes, acc[m] + i0);
-      }
-    }
+    AccumulateLanes<Windowed, Lanes, Channels, 0, Terms>(s, px, py, pz, acc, first, end);
   }
 }
 
@@ -994,21 +1059,14 @@ std::int64_t ComputeFarFieldMomentsOf(const FarFieldGrid& grid,
   std::int64_t pairs = 0;
   for (std::int64_t entry = b0; entry < b1; ++entry)
   {
-    const std::size_t e = static_cast<std::size_t>(entry);
-    const glm::ivec3 firstNode =
-      GetFarFieldBlockFirstNode(grid, blockList ? blockList->Blocks[e] : entry);
-    const int i0 = firstNode.x, j0 = firstNode.y, k0 = firstNode.z;
-    const int ni = std::min(FarFieldBlockSize, grid.Dims[0] - i0);
-    const int nj = std::min(FarFieldBlockSize, grid.Dims[1] - j0);
-    const int nk = std::min(FarFieldBlockSize, grid.Dims[2] - k0);
-    const glm::ivec3 extent(ni, nj, nk);
     // The layers to sum along the block's axis: from the lowest asked to the highest
     // (within the grid).
-    const int axis = blockList ? blockList->Axis[e] : 2;
-    int lFirst, lLast;
-    GetFarFieldLayerRange(blockList ? blockList->Layers[e] : FarFieldAllLayers, lFirst, lLast);
-    lLast = std::min(lLast, extent[axis] - 1);
-    if (lFirst > lLast)
+    const FarFieldEntryNodes entryNodes = GetFarFieldEntryNodes(grid, blockList, entry);
+    const int i0 = entryNodes.FirstNode.x, j0 = entryNodes.FirstNode.y, k0 = entryNodes.FirstNode.z;
+    const glm::ivec3 extent = entryNodes.Extent;
+    const int axis = entryNodes.Axis;
+    const int lFirst = entryNodes.LayerFirst, lLast = entryNodes.LayerLastInGrid;
+    if (entryNodes.IsEmpty())
     {
       continue;
     }
@@ -1113,7 +1171,7 @@ std::int64_t ComputeFarFieldMomentsOf(const FarFieldGrid& grid,
     for (int n = nodeFirst; n < nodeEnd; ++n)
     {
       const glm::ivec3 d = GetFarFieldBlockNode(n, axis);
-      if (d.x >= ni || d.y >= nj || d.z >= nk)
+      if (glm::any(glm::greaterThanEqual(d, extent)))
       {
         continue; // past the grid's end
       }
@@ -1223,8 +1281,8 @@ std::int64_t ComputeFarFieldMoments(const FarFieldGrid& grid,
 // and 54 multiply-adds, vectorized across the block's nodes). ComputeFarFieldMomentsForThisCPU
 // runs them in a copy compiled for the best instruction set the processor has, chosen at
 // run time, so that code built for any x86-64 still runs everywhere:
-// - AVX-512: 16 lanes, and 32 registers that hold most of a group of nodes' 54 moments
-//   (Lanes 16);
+// - AVX-512: 16 lanes, and 32 registers that hold a group of 16 nodes' 27 moments of
+//   one sweep (Lanes 16; order 4 sweeps twice, see AccumulateBlock);
 // - AVX2 and FMA: 8 lanes and fused multiply-adds instead of SSE2's 4 lanes (Lanes 0:
 //   16 registers cannot hold the moments).
 // `flatten` inlines the whole builder into each copy: no code compiled for one instruction

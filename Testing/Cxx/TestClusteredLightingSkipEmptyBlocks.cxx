@@ -43,19 +43,26 @@ namespace
 {
 using ClusteredLightingTest::Check;
 
+/// Renders, calls `change` and renders again; returns the largest difference between the
+/// two images.
+template <typename Change>
+double ChangeInImage(vtkRenderWindow* rw, Change change)
+{
+  rw->Render();
+  const std::vector<float> before = ClusteredLightingTest::CapturePixels(rw);
+  change();
+  rw->Render();
+  return ClusteredLightingTest::CompareImages(ClusteredLightingTest::CapturePixels(rw), before)
+    .MaxAbsError;
+}
+
 /// Renders, switches FarFieldSkipEmptyBlocks off (the rest of the grid is summed) and
 /// renders again; returns whether the two images are the same, bit for bit. Leaves the
 /// option on, with every node summed.
 bool SameAsWholeBuild(vtkClusteredLightingPass* pass, vtkRenderWindow* rw, const char* what)
 {
-  rw->Render();
-  const std::vector<float> skipped = ClusteredLightingTest::CapturePixels(rw);
-  pass->FarFieldSkipEmptyBlocksOff();
-  rw->Render();
+  const double diff = ChangeInImage(rw, [&] { pass->FarFieldSkipEmptyBlocksOff(); });
   const vtkTypeInt64 rest = pass->GetNumberOfFarFieldNodesBuilt();
-  const double diff =
-    ClusteredLightingTest::CompareImages(ClusteredLightingTest::CapturePixels(rw), skipped)
-      .MaxAbsError;
   std::printf("%s: %lld more nodes summed for the whole grid; largest difference %g\n", what,
     static_cast<long long>(rest), diff);
   Check(pass->GetNumberOfFarFieldBlocksRead() == pass->GetNumberOfFarFieldBlocks(),
@@ -189,15 +196,13 @@ int TestClusteredLightingSkipEmptyBlocks(int, char*[])
   {
     // Bins made afresh (switched off, which releases their texture, and on: uploaded
     // whole) for the same lights give the same image.
-    rw->Render();
-    const std::vector<float> boxes = ClusteredLightingTest::CapturePixels(rw);
-    pass->FarFieldSpecularBinsOff();
-    rw->Render();
-    pass->FarFieldSpecularBinsOn();
-    rw->Render();
-    const double diff =
-      ClusteredLightingTest::CompareImages(ClusteredLightingTest::CapturePixels(rw), boxes)
-        .MaxAbsError;
+    const double diff = ChangeInImage(rw,
+      [&]
+      {
+        pass->FarFieldSpecularBinsOff();
+        rw->Render();
+        pass->FarFieldSpecularBinsOn();
+      });
     std::printf("bins made afresh: largest difference %g\n", diff);
     Check(diff == 0.0, "the bins uploaded box by box: the image of bins made afresh, bit for bit");
   }

@@ -423,6 +423,11 @@ struct vtkClusteredLightingPass::vtkInternals
     vtkSmartPointer<vtkClusteredLightingDepthPrepass> Prepass;
     /// Where the renderer's surfaces lie (FarFieldSkipEmptyBlocks).
     vtkClusteredLightingSurfaceBoxes Surfaces;
+    /// The light sources of the renderer's last frame, and whether they had changed then
+    /// from the frame before (FarFieldRefineStillLights).
+    vtkClusteredLightingSourceKey LightKey;
+    bool HaveLightKey = false;
+    bool LightsChanged = false;
   };
   std::map<vtkRenderer*, RendererEntry> Renderers;
   std::vector<vtkSmartPointer<vtkClusteredLightSet>> LightSets;
@@ -451,6 +456,7 @@ struct vtkClusteredLightingPass::vtkInternals
   bool ReportedUncountedPixels = false;    ///< a debug view's counts could not be read
   bool ReportedPbrFarField = false;        ///< PBR actors sum their far light exactly
   bool ReportedUnlitVolumes = false;       ///< volumes shown with light sets, said once
+  bool RefineAsked = false;                ///< this frame's far field refined (still lights)
 
   /// The entry of `ren`, made on first use (its assigner and prepass).
   RendererEntry& GetEntry(vtkRenderer* ren)
@@ -696,6 +702,7 @@ void vtkClusteredLightingPass::Render(const vtkRenderState* s)
   // which frames to time for its trials (vtkClusteredLightingPrepassChoice.h).
   vtkClusteredLightingAssigner* assigner = this->Internals->GetAssigner(ren);
   vtkClusteredLightingAssignerInputs inputs = this->MakeAssignerInputs(ren, lights);
+  this->RefineStillFarField(ren, inputs);
   this->ChooseFarDiffuseOrder(rw, inputs);
   this->DepthPrepassUsed = false;
   this->DepthPrepassReused = false;
@@ -1012,6 +1019,42 @@ void vtkClusteredLightingPass::SetUpCamera(vtkRenderer* ren)
 }
 
 //------------------------------------------------------------------------------
+// Lights that changed in this frame and in the one before are moving: their far field is
+// rebuilt every frame, at the options' own settings. Any other build, with more than
+// FarFieldRefineLeastLights lights, is refined: 1.5 times the cells per near radius at
+// 3.375 times the nodes (the same near radii, nodes 1.5 times closer) and the far
+// specular's bins where an actor needs them. Settings that differ from the last build's
+// rebuild the far field (the assigner's preparation key), so the first frame after the
+// lights stop builds the refined one.
+void vtkClusteredLightingPass::RefineStillFarField(
+  vtkRenderer* ren, vtkClusteredLightingAssignerInputs& inputs)
+{
+  vtkInternals::RendererEntry& entry = this->Internals->GetEntry(ren);
+  const vtkClusteredLightingSourceKey& key = inputs.Lights->Key;
+  const bool changed = !entry.HaveLightKey || key != entry.LightKey;
+  const bool moving = changed && entry.LightsChanged;
+  entry.LightKey = key;
+  entry.HaveLightKey = true;
+  entry.LightsChanged = changed;
+  long long count = static_cast<long long>(inputs.Lights->ClusteredLights.size());
+  for (vtkClusteredLightSet* set : inputs.Lights->LightSets)
+  {
+    count += set->GetNumberOfLights();
+  }
+  const bool refine = this->FarFieldRefineStillLights && inputs.FarField.Enabled &&
+    inputs.ErrorBudget <= 0.0 && count > this->FarFieldRefineLeastLights && !moving;
+  this->Internals->RefineAsked = refine;
+  if (!refine)
+  {
+    return;
+  }
+  inputs.FarField.CellsPerRadius = std::min(8.0, 1.5 * inputs.FarField.CellsPerRadius);
+  inputs.FarField.TargetNodes = std::min<std::int64_t>(
+    16777216, std::llround(3.375 * static_cast<double>(inputs.FarField.TargetNodes)));
+  inputs.FarField.SpecularBins = inputs.FarField.SpecularBins || NeedsFarSpecularBins(ren);
+}
+
+//------------------------------------------------------------------------------
 vtkClusteredLightingAssignerInputs vtkClusteredLightingPass::MakeAssignerInputs(
   vtkRenderer* ren, vtkClusteredLightingLightCollection& lights) const
 {
@@ -1193,6 +1236,7 @@ void vtkClusteredLightingPass::ReportAssignment(const vtkClusteredLightingAssign
   this->FarFieldTextureBytes = r.FarFieldBytes;
   this->FarFieldSharedColorUsed = r.FarField && r.FarFieldOneChannel;
   this->FarFieldSpecularBinsUsed = r.FarField && r.FarFieldSpecularBins;
+  this->FarFieldRefinedUsed = r.FarField && this->Internals->RefineAsked;
   this->DepthAwareClustersUsed = r.Enabled && r.DepthAware;
   for (int k = 0; k < 2; ++k)
   {
@@ -1706,6 +1750,9 @@ void vtkClusteredLightingPass::PrintSelf(ostream& os, vtkIndent indent)
   os << next << "FarFieldSpecularBins: " << (this->FarFieldSpecularBins ? "On" : "Off") << "\n";
   os << next << "FarFieldSkipEmptyBlocks: " << (this->FarFieldSkipEmptyBlocks ? "On" : "Off")
      << "\n";
+  os << next << "FarFieldRefineStillLights: " << (this->FarFieldRefineStillLights ? "On" : "Off")
+     << "\n";
+  os << next << "FarFieldRefineLeastLights: " << this->FarFieldRefineLeastLights << "\n";
   const double* r = this->FarFieldRegion;
   os << next << "FarFieldRegion: ";
   if (vtkBoundingBox::IsValid(r))
@@ -1746,6 +1793,7 @@ void vtkClusteredLightingPass::PrintSelf(ostream& os, vtkIndent indent)
      << "\n";
   os << next << "FarFieldSpecularBinsUsed: " << (this->FarFieldSpecularBinsUsed ? "yes" : "no")
      << "\n";
+  os << next << "FarFieldRefinedUsed: " << (this->FarFieldRefinedUsed ? "yes" : "no") << "\n";
   os << next << "NumberOfFarFieldNodesBuilt: " << this->NumberOfFarFieldNodesBuilt << "\n";
   os << next << "NumberOfFarFieldBlocksRead: " << this->NumberOfFarFieldBlocksRead << " of "
      << this->NumberOfFarFieldBlocks << "\n";

@@ -221,6 +221,8 @@ void Context::ResetPassDefaults()
   p->SetFarFieldOrder4Diffuse(true);
   p->SetFarFieldSpecularBins(false);
   p->SetFarFieldSkipEmptyBlocks(true);
+  p->SetFarFieldRefineStillLights(true);
+  p->SetFarFieldRefineLeastLights(16384);
   p->SetNearFieldBudget(8.0);
   p->SetFalloff(vtkClusteredLightingPass::FALLOFF_HARD_CUT);
   p->SetTilesX(32);

@@ -290,6 +290,14 @@ std::vector<Step> MakePlan(const PlanOptions& options)
         }
         if (layout == "uniform" && n == 65536 && !quick)
         {
+          // The default refines the far field of still lights (FarFieldRefineStillLights);
+          // the rows of this block measure the settings they name, unrefined, beginning
+          // with the options' own settings (what moving lights get).
+          const std::size_t first = plan.size();
+          Step unrefined = s;
+          unrefined.Sweep = "far field";
+          unrefined.Value = "not refined";
+          plan.push_back(unrefined);
           // The far field's resolution where it holds most of the light (the same
           // reference): finer grids give shorter near radii, so fewer lights walked per
           // pixel; what they do to accuracy is measured (docs/far-field.md).
@@ -334,6 +342,18 @@ std::vector<Step> MakePlan(const PlanOptions& options)
             p->SetTilesY(8);
           };
           plan.push_back(q);
+          for (std::size_t k = first; k < plan.size(); ++k)
+          {
+            const std::function<void(vtkClusteredLightingPass*)> apply = plan[k].Apply;
+            plan[k].Apply = [apply](vtkClusteredLightingPass* p)
+            {
+              if (apply)
+              {
+                apply(p);
+              }
+              p->SetFarFieldRefineStillLights(false);
+            };
+          }
         }
         if (layout == "uniform" && n <= 16384)
         {

@@ -354,8 +354,9 @@ const vtkClusteredLightingAssignment& vtkClusteredLightingAssigner::Update(
       else if (this->FarField.GetSpecularBinsTooDeep())
       {
         const std::array<int, 3>& d = this->FarFieldPlan.Grid.Dims;
-        r.NewWarnings.emplace_back("FarFieldSpecularBins: the far field's grid (" +
-          std::to_string(d[0]) + " x " + std::to_string(d[1]) + " x " + std::to_string(d[2]) +
+        r.NewWarnings.emplace_back(std::string(inputs.SpecularBinsOption) +
+          ": the far field's grid (" + std::to_string(d[0]) + " x " + std::to_string(d[1]) + " x " +
+          std::to_string(d[2]) +
           " nodes) needs a 3D texture larger than this GPU's largest (GL_MAX_3D_TEXTURE_SIZE) "
           "for the far specular's bins; the far specular comes from the moments alone. A "
           "smaller FarFieldResolution makes room.");

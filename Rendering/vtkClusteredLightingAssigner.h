@@ -113,6 +113,9 @@ struct vtkClusteredLightingAssignerInputs
   double ErrorBudget = 0.0;
   bool Windowed = false; ///< windowed falloff (the error budget accounts for it)
   vtkClusteredLighting::FarFieldOptions FarField;
+  /// The option that asked for the far specular's bins (FarField.SpecularBins), named in
+  /// the warning when they cannot be made.
+  const char* SpecularBinsOption = "FarFieldSpecularBins";
   /// World box of the geometry to shade (the far field's region; invalid: the lights' box).
   glm::dvec3 RegionLo = glm::dvec3(1.0), RegionHi = glm::dvec3(-1.0);
   /// Where surfaces lie: the far field sums only the blocks they read (nullptr: every

@@ -828,7 +828,7 @@ void vtkClusteredLightingPass::ChooseFarDiffuseOrder(
     vtkClusteredLighting::ChooseFarSpecularBins(binsAsked, units, inputs.FarField.Order4Diffuse);
   if (binsAsked && !inputs.FarField.SpecularBins && !this->Internals->ReportedFarSpecularBins)
   {
-    vtkWarningMacro(<< "FarFieldSpecularBins: this GPU's fragment shaders have " << units
+    vtkWarningMacro(<< inputs.SpecularBinsOption << ": this GPU's fragment shaders have " << units
                     << " texture units, fewer than the "
                     << vtkClusteredLighting::GetFarSpecularBinsTextureUnits(
                          inputs.FarField.Order4Diffuse)
@@ -1051,7 +1051,11 @@ void vtkClusteredLightingPass::RefineStillFarField(
   inputs.FarField.CellsPerRadius = std::min(8.0, 1.5 * inputs.FarField.CellsPerRadius);
   inputs.FarField.TargetNodes = std::min<std::int64_t>(
     16777216, std::llround(3.375 * static_cast<double>(inputs.FarField.TargetNodes)));
-  inputs.FarField.SpecularBins = inputs.FarField.SpecularBins || NeedsFarSpecularBins(ren);
+  if (!inputs.FarField.SpecularBins && NeedsFarSpecularBins(ren))
+  {
+    inputs.FarField.SpecularBins = true;
+    inputs.SpecularBinsOption = "FarFieldRefineStillLights";
+  }
 }
 
 //------------------------------------------------------------------------------

@@ -550,9 +550,10 @@ public:
    * assignment's cost (docs/far-field.md, "Still lights refined"). A refined build costs
    * several times an ordinary one (0.4 to 0.6 s at 65,536 lights on 2 threads), once per
    * stop. An application that animates lights renders once more after they stop to show
-   * the refined image. Not used with an error budget (ErrorBudgetInSteps chooses the
-   * resolution). GetFarFieldRefinedUsed tells whether the last render's far field was
-   * refined. Default is on.
+   * the refined image. Where the GPU cannot hold the bins for the refined grid, the far
+   * specular comes from the moments, with a warning that names this option. Not used
+   * with an error budget (ErrorBudgetInSteps chooses the resolution). GetFarFieldRefinedUsed tells
+   * whether the last render's far field was refined. Default is on.
    */
   vtkSetMacro(FarFieldRefineStillLights, bool);
   vtkGetMacro(FarFieldRefineStillLights, bool);

@@ -17,14 +17,25 @@
 //    builds the options' own (32,768 nodes, no bins), and a still frame after it the
 //    refined one; FarFieldRefineLeastLights n and FarFieldRefineStillLights off leave it
 //    unrefined.
+//  - a ball lit by 500 lights, refined from 100: where the bins' texture is too deep for
+//    the GPU (llvmpipe), one warning naming FarFieldRefineStillLights and no bins.
 // Measured: max 2 steps, RMSE 0.408, 0.25% of the pixels over a step; with the far field
 // unrefined the same render is max 3 and 1.55%, with the bins alone max 3 and 1.27%.
 #include "ClusteredLightingScenes.h"
 #include "ClusteredLightingTestUtilities.h"
 
+#include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkClusteredLightSet.h"
 #include "vtkClusteredLightingPass.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkSphereSource.h"
+#include "vtk_glew.h" // GL_MAX_3D_TEXTURE_SIZE
+
+#include <algorithm>
 
 #include <cstdio>
 
@@ -117,5 +128,71 @@ int TestClusteredLightingManyLightsAccurate(int, char*[])
   rw->Render();
   check(!pass->GetFarFieldRefinedUsed() && pass->GetFarFieldResolutionInUse() == 32768,
     "FarFieldRefineStillLights off: the options' own far field");
+
+  // The refinement's bins on a grid too deep for them: a ball (a cubic region) lit by 500
+  // lights, refined from 100 lights on. At 110,592 nodes over a cube the bins' texture
+  // stacks 52 slabs of 49 layers (26 with a shared colour), past llvmpipe's
+  // GL_MAX_3D_TEXTURE_SIZE of 2,048: the far specular then comes from the moments, with one
+  // warning that names the option that asked for the bins, not FarFieldSpecularBins,
+  // which the application never set.
+  {
+    vtkNew<vtkRenderWindow> ballWindow;
+    ballWindow->SetSize(160, 120);
+    ballWindow->SetMultiSamples(0);
+    vtkNew<vtkRenderer> ballRenderer;
+    ballRenderer->AutomaticLightCreationOff();
+    ballWindow->AddRenderer(ballRenderer);
+    vtkNew<vtkSphereSource> sphere;
+    sphere->SetRadius(1.0);
+    sphere->SetThetaResolution(32);
+    sphere->SetPhiResolution(32);
+    vtkNew<vtkPolyDataMapper> mapper;
+    mapper->SetInputConnection(sphere->GetOutputPort());
+    vtkNew<vtkActor> ball;
+    ball->SetMapper(mapper);
+    ball->GetProperty()->SetSpecular(0.3);
+    ball->GetProperty()->SetSpecularPower(20.0);
+    ballRenderer->AddActor(ball);
+    ballRenderer->GetActiveCamera()->SetPosition(0.0, 0.0, 6.0);
+    ballRenderer->ResetCameraClippingRange();
+    vtkNew<vtkClusteredLightSet> ballLights;
+    const double blo[3] = { -1.5, -1.5, -1.5 }, bhi[3] = { 1.5, 1.5, 1.5 };
+    ClusteredLightingScenes::MakeLights(
+      ballLights, 500, ClusteredLightingScenes::Layout::Uniform, blo, bhi, params, 3);
+    vtkNew<vtkClusteredLightingPass> ballPass;
+    ballPass->AddLightSet(ballLights);
+    ballPass->SetFarFieldRefineLeastLights(100);
+    vtkNew<ClusteredLightingTest::MessageCollector> messages;
+    messages->Watch(ballPass);
+    ballRenderer->SetPass(ballPass);
+    ballWindow->Render();
+    GLint deepest = 0;
+    ballWindow->MakeCurrent();
+    glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &deepest);
+    int dims[3];
+    ballPass->GetFarFieldDimensions(dims);
+    const int slabs = ballPass->GetFarFieldSharedColorUsed() ? 26 : 52;
+    const bool tooDeep = slabs * std::min({ dims[0], dims[1], dims[2] }) > deepest;
+    std::printf(
+      "ball: %d x %d x %d nodes, %d slabs, GL_MAX_3D_TEXTURE_SIZE %d; %zu warning(s)%s%s\n",
+      dims[0], dims[1], dims[2], slabs, static_cast<int>(deepest), messages->Warnings.size(),
+      messages->Warnings.empty() ? "" : ": ",
+      messages->Warnings.empty() ? "" : messages->Warnings[0].c_str());
+    check(ballPass->GetFarFieldRefinedUsed() && ballPass->GetFarFieldResolutionInUse() == 110592,
+      "500 still lights, refined from 100: refined");
+    if (tooDeep)
+    {
+      check(!ballPass->GetFarFieldSpecularBinsUsed() && messages->Warnings.size() == 1 &&
+          messages->Warnings[0].find("FarFieldRefineStillLights: ") != std::string::npos &&
+          messages->Warnings[0].find("FarFieldSpecularBins") == std::string::npos,
+        "bins too deep for this GPU: one warning naming FarFieldRefineStillLights");
+    }
+    else
+    {
+      check(ballPass->GetFarFieldSpecularBinsUsed() && messages->Warnings.empty(),
+        "bins that fit: read, no warning");
+    }
+    check(messages->Errors.empty(), "no error");
+  }
   return failed == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -225,6 +225,13 @@ void vtkClusteredLightingAssigner::GetGLObjectNames(
 }
 
 //------------------------------------------------------------------------------
+bool vtkClusteredLightingAssigner::AreNewSources(const vtkClusteredLightingSourceKey& key) const
+{
+  return !this->HaveSources || key.Objects != this->SourceObjects ||
+    key.NewestMTime != this->SourceMTime;
+}
+
+//------------------------------------------------------------------------------
 const vtkClusteredLightingAssignment& vtkClusteredLightingAssigner::Update(
   vtkOpenGLRenderWindow* rw, const vtkClusteredLightingAssignerInputs& asked)
 {
@@ -256,8 +263,7 @@ const vtkClusteredLightingAssignment& vtkClusteredLightingAssigner::Update(
     r.Reasons |= CL_DIRTY_RESOURCES;
   }
   const vtkClusteredLightingSourceKey& key = inputs.Lights->Key;
-  if (!this->HaveSources || key.Objects != this->SourceObjects ||
-    key.NewestMTime != this->SourceMTime)
+  if (this->AreNewSources(key))
   {
     r.Reasons |= CL_DIRTY_LIGHTS;
   }

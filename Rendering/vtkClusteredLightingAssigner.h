@@ -75,6 +75,7 @@ class vtkClusteredLightingAssignmentBackend;
 class vtkClusteredLightingSurfaceBoxes;
 class vtkRenderer;
 struct vtkClusteredLightingLightCollection;
+struct vtkClusteredLightingSourceKey;
 
 /// Why an update did work (a bit set; 0: nothing changed, nothing was done).
 enum vtkClusteredLightingDirtyReason : unsigned int
@@ -251,6 +252,10 @@ public:
 
   /// The result of the last update.
   const vtkClusteredLightingAssignment& GetResult() const { return this->Result; }
+
+  /// Whether `key` names other light sources than the last update read: an update with it
+  /// prepares the lights again (CL_DIRTY_LIGHTS).
+  bool AreNewSources(const vtkClusteredLightingSourceKey& key) const;
 
   /// The far field's stated error bound over probe points (SummarizeFarFieldErrorBound,
   /// Rendering/Core/vtkClusteredLightingFarFieldBound.h) for the last build; zeros without

@@ -423,11 +423,6 @@ struct vtkClusteredLightingPass::vtkInternals
     vtkSmartPointer<vtkClusteredLightingDepthPrepass> Prepass;
     /// Where the renderer's surfaces lie (FarFieldSkipEmptyBlocks).
     vtkClusteredLightingSurfaceBoxes Surfaces;
-    /// The light sources of the renderer's last frame, and whether they had changed then
-    /// from the frame before (FarFieldRefineStillLights).
-    vtkClusteredLightingSourceKey LightKey;
-    bool HaveLightKey = false;
-    bool LightsChanged = false;
   };
   std::map<vtkRenderer*, RendererEntry> Renderers;
   std::vector<vtkSmartPointer<vtkClusteredLightSet>> LightSets;
@@ -1029,13 +1024,11 @@ void vtkClusteredLightingPass::SetUpCamera(vtkRenderer* ren)
 void vtkClusteredLightingPass::RefineStillFarField(
   vtkRenderer* ren, vtkClusteredLightingAssignerInputs& inputs)
 {
-  vtkInternals::RendererEntry& entry = this->Internals->GetEntry(ren);
-  const vtkClusteredLightingSourceKey& key = inputs.Lights->Key;
-  const bool changed = !entry.HaveLightKey || key != entry.LightKey;
-  const bool moving = changed && entry.LightsChanged;
-  entry.LightKey = key;
-  entry.HaveLightKey = true;
-  entry.LightsChanged = changed;
+  // The renderer's assigner updates once per frame: its last update says whether the
+  // lights changed in the frame before.
+  const vtkClusteredLightingAssigner* assigner = this->Internals->GetAssigner(ren);
+  const bool moving = assigner->AreNewSources(inputs.Lights->Key) &&
+    (assigner->GetResult().Reasons & CL_DIRTY_LIGHTS) != 0;
   long long count = static_cast<long long>(inputs.Lights->ClusteredLights.size());
   for (vtkClusteredLightSet* set : inputs.Lights->LightSets)
   {

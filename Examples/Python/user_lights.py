@@ -147,6 +147,9 @@ def main():
                         "sphere's specular is 0.5, the floor's SPECULAR)")
     parser.add_argument("--floor-specular", type=float, default=0.0, metavar="SPECULAR",
                         help="the floor's specular coefficient")
+    parser.add_argument("--no-refine", action="store_true",
+                        help="FarFieldRefineStillLights off: still lights above 16,384 keep "
+                        "the far field's own settings")
     parser.add_argument("--counts", action="store_true",
                         help="also print the lights evaluated and reaching per pixel of each "
                         "clustered render (the pass's evaluated-count view, one more render)")
@@ -199,6 +202,7 @@ def main():
     lights.SetDefaultIntensity(args.intensity)
     pass_ = vtkClusteredLightingPass()
     pass_.AddLightSet(lights)
+    pass_.SetFarFieldRefineStillLights(not args.no_refine)
     renderer.SetPass(pass_)
 
     window = vtkRenderWindow()

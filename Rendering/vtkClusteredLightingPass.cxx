@@ -1090,7 +1090,12 @@ vtkClusteredLightingAssignerInputs vtkClusteredLightingPass::MakeAssignerInputs(
   }
   in.RegionLo = glm::dvec3(bounds[0], bounds[2], bounds[4]);
   in.RegionHi = glm::dvec3(bounds[1], bounds[3], bounds[5]);
-  if (this->FarField && this->FarFieldSkipEmptyBlocks)
+  // A multisampled framebuffer shades a fragment that covers some of its pixel's samples
+  // at the pixel's centre, on its primitive's plane extrapolated past the primitive: at a
+  // silhouette, possibly far from every surface, in a block no surface marks (whose
+  // moments are stale or zero). There every block is summed.
+  if (this->FarField && this->FarFieldSkipEmptyBlocks &&
+    !vtkClusteredLightingSampleDepths::IsDrawFramebufferMultisampled())
   {
     vtkClusteredLightingSurfaceBoxes& surfaces = this->Internals->GetEntry(ren).Surfaces;
     surfaces.Update(ren);

@@ -29,6 +29,9 @@ differ;
 translation each frame) and prints the median frame time, far-field build, light update
 and assignment times (the first build of a still frame, which the default render's line
 gives, also allocates the far field's buffers and textures);
+--multisamples SAMPLES sets the window's MultiSamples (VTK's default, 8, when not given; in a
+multisampled framebuffer the far field sums every block, FarFieldSkipEmptyBlocks: 0 shows
+what single-sampled builds cost); --animate's line says how many blocks were summed.
 --back-face-sums also renders with FarFieldExactSumsOnBackFaces on (the floor here is a
 back face: vtkPlaneSource's normal points down). --specular-power POWER sets both actors'
 specular power (20 by default; VTK's own default is 1) and --floor-specular SPECULAR the
@@ -150,6 +153,8 @@ def main():
     parser.add_argument("--no-refine", action="store_true",
                         help="FarFieldRefineStillLights off: still lights above 16,384 keep "
                         "the far field's own settings")
+    parser.add_argument("--multisamples", type=int, default=None, metavar="SAMPLES",
+                        help="the window's MultiSamples (default: VTK's, 8)")
     parser.add_argument("--counts", action="store_true",
                         help="also print the lights evaluated and reaching per pixel of each "
                         "clustered render (the pass's evaluated-count view, one more render)")
@@ -208,6 +213,8 @@ def main():
     window = vtkRenderWindow()
     window.SetOffScreenRendering(True)
     window.SetSize(400, 300)
+    if args.multisamples is not None:
+        window.SetMultiSamples(args.multisamples)
     window.AddRenderer(renderer)
     camera = renderer.GetActiveCamera()
     camera.SetPosition(0, 1.5, 6)
@@ -324,8 +331,11 @@ def main():
                           pass_.GetLastAssignmentTime()))
         frame_ms, build_ms, update_ms, assign_ms = (numpy.median(column) for column in zip(*times))
         print("animated (%d frames, every light moving, medians): frame %.1f ms, far-field "
-              "build %.1f ms (in the light update, %.1f ms), assignment %.1f ms"
-              % (args.animate, frame_ms, build_ms, update_ms, assign_ms))
+              "build %.1f ms (in the light update, %.1f ms), assignment %.1f ms; %d of %d "
+              "blocks summed (%d samples)"
+              % (args.animate, frame_ms, build_ms, update_ms, assign_ms,
+                 pass_.GetNumberOfFarFieldBlocksRead(), pass_.GetNumberOfFarFieldBlocks(),
+                 window.GetMultiSamples()))
     if args.cone_culling_off:
         same = numpy.array_equal(results["cone-culling-off"][1], results["default"][1])
         print("cone culling: the same image as without it: %s" % ("yes" if same else "NO"))

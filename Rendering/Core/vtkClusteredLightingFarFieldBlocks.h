@@ -25,7 +25,11 @@
  *
  * Blocks not marked are not summed: what the textures hold there is stale or zero, finite,
  * and never read by a surface inside a marked box. Nothing here depends on the camera: a
- * moving camera marks the same blocks.
+ * moving camera marks the same blocks. Only single-sampled fragments lie on their
+ * surfaces: a multisampled one that covers part of its pixel is shaded at the pixel's
+ * centre, on its primitive's plane extrapolated, possibly far from every box, so the
+ * pass marks every block in a multisampled framebuffer (vtkClusteredLightingPass,
+ * FarFieldSkipEmptyBlocks).
  */
 #ifndef vtkClusteredLightingFarFieldBlocks_h
 #define vtkClusteredLightingFarFieldBlocks_h

@@ -10,11 +10,11 @@
 // differences in 8-bit steps (after rounding both to 8 bits, as images are) with the cost
 // proxies: lights evaluated exactly per point (the near lights) and far-field nodes.
 //
-//   ClusteredLightingFarFieldStudy [--scene bunny|house|user|dense] [--always-on]
+//   ClusteredLightingFarFieldStudy [--scene bunny|house|user|dense|ball] [--always-on]
 //     [--lights N] [--samples S] [--cutoffs 1024,4096] [--nodes 32768] [--cells 2]
 //     [--grouping 0.05] [--hierarchy 0.02,0.1] [--bounds] [--copies] [--worst K]
 //     [--orders] [--order4-grid] [--blocks 255,2048] [--far-cutoffs] [--intensity I]
-//     [--pass-region] [--at x,y,z,x,y,z,...]
+//     [--pass-region] [--at x,y,z,x,y,z,...] [--at-normals x,y,z,...]
 //
 // Rows: "cut at 1/c" (before the far field: every light cut at its cutoff radius); "far
 // field" (design 1, the product's core code: PlanFarField, ComputeFarFieldMoments, the
@@ -46,7 +46,10 @@
 // points nearest to given world points as the samples instead of random ones (the points
 // that the benchmark's --worst-pixels prints; implies --pass-region): with --worst their
 // errors taken apart, with --specular-bins each point's error with the moments' far
-// specular and with the bins. List options take comma-separated values.
+// specular and with the bins; --at-normals replaces those points' normals, in turn (a
+// silhouette's normal turned from the viewer, say). --scene ball is
+// Examples/Python/user_lights.py's scene (--lights, --intensity as the example's). List
+// options take comma-separated values.
 #include "BenchmarkMeasure.h"
 #include "BenchmarkPlan.h"
 #include "ClusteredLightingScenes.h"
@@ -62,10 +65,14 @@
 #include "vtkIdList.h"
 #include "vtkMapper.h"
 #include "vtkMatrix4x4.h"
+#include "vtkPlaneSource.h"
 #include "vtkPointData.h"
+#include "vtkPointSource.h"
 #include "vtkPolyData.h"
+#include "vtkPolyDataMapper.h"
 #include "vtkPolyDataNormals.h"
 #include "vtkProperty.h"
+#include "vtkSphereSource.h"
 
 #include <algorithm>
 #include <atomic>
@@ -1002,6 +1009,65 @@ void PrintSpecularBins(const std::vector<Sample>& samples, const std::vector<glm
 }
 }
 
+/**
+ * --scene ball: Examples/Python/user_lights.py's scene, a ball of radius 0.6 on a floor at
+ * y = -1 (8 x 8), seen from (0, 1.5, 6), lit by `count` white lights from a vtkPointSource
+ * (radius 3; the same points as the example's, the first thing either draws from VTK's
+ * random sequence) with attenuation (1, 0, 8) and intensity 0.02 (--intensity).
+ */
+void MakeBallScene(Context& ctx, int count)
+{
+  vtkRenderer* ren = ctx.GetRenderer();
+  ren->RemoveAllViewProps();
+  auto add = [ren](vtkPolyDataAlgorithm* source, double r, double g, double b, double specular)
+  {
+    vtkNew<vtkPolyDataMapper> mapper;
+    mapper->SetInputConnection(source->GetOutputPort());
+    mapper->Update();
+    vtkNew<vtkActor> actor;
+    actor->SetMapper(mapper);
+    actor->GetProperty()->SetColor(r, g, b);
+    actor->GetProperty()->SetSpecular(specular);
+    actor->GetProperty()->SetSpecularPower(20.0);
+    ren->AddActor(actor);
+  };
+  vtkNew<vtkPointSource> points;
+  points->SetNumberOfPoints(count);
+  points->SetRadius(3.0);
+  points->Update();
+  vtkNew<vtkPlaneSource> floor;
+  floor->SetOrigin(-4, -1, -4);
+  floor->SetPoint1(4, -1, -4);
+  floor->SetPoint2(-4, -1, 4);
+  floor->SetResolution(64, 64);
+  add(floor, 0.8, 0.8, 0.8, 0.0);
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetRadius(0.6);
+  sphere->SetThetaResolution(64);
+  sphere->SetPhiResolution(48);
+  add(sphere, 0.9, 0.85, 0.8, 0.5);
+  vtkClusteredLightSet* set = ctx.GetLights();
+  set->SetNumberOfLights(count);
+  for (vtkIdType i = 0; i < count; ++i)
+  {
+    double x[3];
+    points->GetOutput()->GetPoint(i, x);
+    set->SetPosition(i, x[0], x[1], x[2]);
+    set->SetColor(i, 1.0, 1.0, 1.0);
+    set->SetIntensity(i, 0.02);
+    set->SetAttenuation(i, 1.0, 0.0, 8.0);
+  }
+  vtkCamera* cam = ren->GetActiveCamera();
+  cam->SetPosition(0, 1.5, 6);
+  cam->SetFocalPoint(0, -0.3, 0);
+  cam->SetViewUp(0, 1, 0);
+  cam->SetViewAngle(30.0);
+  ren->ResetCameraClippingRange();
+  double p[3];
+  points->GetOutput()->GetPoint(0, p);
+  std::printf("ball: first light at (%.6f, %.6f, %.6f)\n", p[0], p[1], p[2]);
+}
+
 int main(int argc, char* argv[])
 {
   std::string sceneName = "bunny";
@@ -1020,6 +1086,7 @@ int main(int argc, char* argv[])
   int worst = -1;
   std::vector<double> specularBins;
   std::vector<double> atPoints;
+  std::vector<double> atNormals;
   bool passRegion = false;
   double intensity = -1.0;
   auto parseList = [](const char* text, double (*f)(double))
@@ -1119,6 +1186,10 @@ int main(int argc, char* argv[])
       atPoints = parseList(argv[++i], same);
       passRegion = true;
     }
+    else if (a == "--at-normals" && value)
+    {
+      atNormals = parseList(argv[++i], same);
+    }
     else if (a == "--pass-region")
     {
       passRegion = true;
@@ -1186,6 +1257,10 @@ int main(int argc, char* argv[])
       set->SetAttenuation(i, 1.0, 0.0, 0.0);
     }
   }
+  if (sceneName.rfind("ball", 0) == 0)
+  {
+    MakeBallScene(ctx, lightsCount);
+  }
   if (intensity >= 0.0)
   {
     for (vtkIdType i = 0; i < set->GetNumberOfLights(); ++i)
@@ -1193,7 +1268,10 @@ int main(int argc, char* argv[])
       set->SetIntensity(i, intensity);
     }
   }
-  ctx.SetView();
+  if (sceneName.rfind("ball", 0) != 0)
+  {
+    ctx.SetView(); // the ball's camera is the example's
+  }
   std::vector<LightSource> sources(static_cast<std::size_t>(set->GetNumberOfLights()));
   for (vtkIdType i = 0; i < set->GetNumberOfLights(); ++i)
   {
@@ -1220,6 +1298,13 @@ int main(int argc, char* argv[])
       points.emplace_back(atPoints[k], atPoints[k + 1], atPoints[k + 2]);
     }
     samples = SampleSurfacesAt(ctx.GetRenderer(), points);
+    for (std::size_t k = 0; k + 2 < atNormals.size() && k / 3 < samples.size(); k += 3)
+    {
+      samples[k / 3].N =
+        glm::normalize(glm::dvec3(atNormals[k], atNormals[k + 1], atNormals[k + 2]));
+      std::printf("  sample %zu: normal (%.3f, %.3f, %.3f), N.V %.3f\n", k / 3, samples[k / 3].N.x,
+        samples[k / 3].N.y, samples[k / 3].N.z, glm::dot(samples[k / 3].N, samples[k / 3].V));
+    }
   }
   std::printf("scene %s: %zu lights, %zu surface samples\n", sceneName.c_str(), sources.size(),
     samples.size());

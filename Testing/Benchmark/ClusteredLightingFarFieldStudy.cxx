@@ -65,14 +65,10 @@
 #include "vtkIdList.h"
 #include "vtkMapper.h"
 #include "vtkMatrix4x4.h"
-#include "vtkPlaneSource.h"
 #include "vtkPointData.h"
-#include "vtkPointSource.h"
 #include "vtkPolyData.h"
-#include "vtkPolyDataMapper.h"
 #include "vtkPolyDataNormals.h"
 #include "vtkProperty.h"
-#include "vtkSphereSource.h"
 
 #include <algorithm>
 #include <atomic>
@@ -1009,65 +1005,6 @@ void PrintSpecularBins(const std::vector<Sample>& samples, const std::vector<glm
 }
 }
 
-/**
- * --scene ball: Examples/Python/user_lights.py's scene, a ball of radius 0.6 on a floor at
- * y = -1 (8 x 8), seen from (0, 1.5, 6), lit by `count` white lights from a vtkPointSource
- * (radius 3; the same points as the example's, the first thing either draws from VTK's
- * random sequence) with attenuation (1, 0, 8) and intensity 0.02 (--intensity).
- */
-void MakeBallScene(Context& ctx, int count)
-{
-  vtkRenderer* ren = ctx.GetRenderer();
-  ren->RemoveAllViewProps();
-  auto add = [ren](vtkPolyDataAlgorithm* source, double r, double g, double b, double specular)
-  {
-    vtkNew<vtkPolyDataMapper> mapper;
-    mapper->SetInputConnection(source->GetOutputPort());
-    mapper->Update();
-    vtkNew<vtkActor> actor;
-    actor->SetMapper(mapper);
-    actor->GetProperty()->SetColor(r, g, b);
-    actor->GetProperty()->SetSpecular(specular);
-    actor->GetProperty()->SetSpecularPower(20.0);
-    ren->AddActor(actor);
-  };
-  vtkNew<vtkPointSource> points;
-  points->SetNumberOfPoints(count);
-  points->SetRadius(3.0);
-  points->Update();
-  vtkNew<vtkPlaneSource> floor;
-  floor->SetOrigin(-4, -1, -4);
-  floor->SetPoint1(4, -1, -4);
-  floor->SetPoint2(-4, -1, 4);
-  floor->SetResolution(64, 64);
-  add(floor, 0.8, 0.8, 0.8, 0.0);
-  vtkNew<vtkSphereSource> sphere;
-  sphere->SetRadius(0.6);
-  sphere->SetThetaResolution(64);
-  sphere->SetPhiResolution(48);
-  add(sphere, 0.9, 0.85, 0.8, 0.5);
-  vtkClusteredLightSet* set = ctx.GetLights();
-  set->SetNumberOfLights(count);
-  for (vtkIdType i = 0; i < count; ++i)
-  {
-    double x[3];
-    points->GetOutput()->GetPoint(i, x);
-    set->SetPosition(i, x[0], x[1], x[2]);
-    set->SetColor(i, 1.0, 1.0, 1.0);
-    set->SetIntensity(i, 0.02);
-    set->SetAttenuation(i, 1.0, 0.0, 8.0);
-  }
-  vtkCamera* cam = ren->GetActiveCamera();
-  cam->SetPosition(0, 1.5, 6);
-  cam->SetFocalPoint(0, -0.3, 0);
-  cam->SetViewUp(0, 1, 0);
-  cam->SetViewAngle(30.0);
-  ren->ResetCameraClippingRange();
-  double p[3];
-  points->GetOutput()->GetPoint(0, p);
-  std::printf("ball: first light at (%.6f, %.6f, %.6f)\n", p[0], p[1], p[2]);
-}
-
 int main(int argc, char* argv[])
 {
   std::string sceneName = "bunny";
@@ -1259,7 +1196,12 @@ int main(int argc, char* argv[])
   }
   if (sceneName.rfind("ball", 0) == 0)
   {
-    MakeBallScene(ctx, lightsCount);
+    // Examples/Python/user_lights.py's scene and lights (intensity 0.02 before --intensity).
+    ctx.GetRenderer()->RemoveAllViewProps();
+    ClusteredLightingScenes::AddBallScene(ctx.GetRenderer());
+    const std::array<double, 3> first =
+      ClusteredLightingScenes::MakeBallLights(set, lightsCount, 0.02, nullptr);
+    std::printf("ball: first light at (%.6f, %.6f, %.6f)\n", first[0], first[1], first[2]);
   }
   if (intensity >= 0.0)
   {

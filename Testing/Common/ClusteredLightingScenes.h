@@ -14,6 +14,7 @@
 #define ClusteredLightingScenes_h
 
 #include "vtkActor.h"
+#include "vtkCamera.h"
 #include "vtkCellArray.h"
 #include "vtkCleanPolyData.h"
 #include "vtkClusteredLightSet.h"
@@ -23,13 +24,16 @@
 #include "vtkOBJReader.h"
 #include "vtkPlaneSource.h"
 #include "vtkPointData.h"
+#include "vtkPointSource.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkPolyDataNormals.h"
 #include "vtkProperty.h"
+#include "vtkRandomSequence.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
+#include "vtkSphereSource.h"
 #include "vtksys/SystemTools.hxx"
 
 #include <algorithm>
@@ -285,6 +289,80 @@ inline void MakeSurfaceLights(vtkClusteredLightSet* lights, int n, vtkPolyData* 
     }
     lights->SetPosition(i, p[0], p[1], p[2]);
   }
+}
+
+/**
+ * Examples/Python/user_lights.py's scene: a ball of radius 0.6 (64 x 48 facets, colour
+ * (0.9, 0.85, 0.8), Specular 0.5) on a floor 8 x 8 at y = -1 (64 x 64 quads, grey 0.8, no
+ * specular), both of specular power 20, seen from (0, 1.5, 6) towards (0, -0.3, 0).
+ */
+inline void AddBallScene(vtkRenderer* ren)
+{
+  vtkNew<vtkPlaneSource> floor;
+  floor->SetOrigin(-4, -1, -4);
+  floor->SetPoint1(4, -1, -4);
+  floor->SetPoint2(-4, -1, 4);
+  floor->SetResolution(64, 64);
+  vtkNew<vtkSphereSource> ball;
+  ball->SetRadius(0.6);
+  ball->SetThetaResolution(64);
+  ball->SetPhiResolution(48);
+  const struct
+  {
+    vtkPolyDataAlgorithm* Source;
+    double Color[3];
+    double Specular;
+  } parts[] = { { floor, { 0.8, 0.8, 0.8 }, 0.0 }, { ball, { 0.9, 0.85, 0.8 }, 0.5 } };
+  for (const auto& part : parts)
+  {
+    vtkNew<vtkPolyDataMapper> mapper;
+    mapper->SetInputConnection(part.Source->GetOutputPort());
+    mapper->Update();
+    vtkNew<vtkActor> actor;
+    actor->SetMapper(mapper);
+    actor->GetProperty()->SetColor(part.Color[0], part.Color[1], part.Color[2]);
+    actor->GetProperty()->SetSpecular(part.Specular);
+    actor->GetProperty()->SetSpecularPower(20.0);
+    ren->AddActor(actor);
+  }
+  vtkCamera* camera = ren->GetActiveCamera();
+  camera->SetPosition(0, 1.5, 6);
+  camera->SetFocalPoint(0, -0.3, 0);
+  camera->SetViewUp(0, 1, 0);
+  camera->SetViewAngle(30.0);
+  ren->ResetCameraClippingRange();
+}
+
+/**
+ * The lights of AddBallScene as user_lights.py writes them: `count` white points of a
+ * vtkPointSource of radius 3, VTK's inverse-square attenuation (1, 0, 8), `intensity`
+ * each. `random` draws the points (nullptr: VTK's global sequence, which gives the
+ * example's points when nothing drew from it before). Returns the first light's position.
+ */
+inline std::array<double, 3> MakeBallLights(
+  vtkClusteredLightSet* lights, int count, double intensity, vtkRandomSequence* random)
+{
+  vtkNew<vtkPointSource> points;
+  points->SetNumberOfPoints(count);
+  points->SetRadius(3.0);
+  points->SetRandomSequence(random);
+  points->Update();
+  lights->SetNumberOfLights(count);
+  for (vtkIdType i = 0; i < count; ++i)
+  {
+    double p[3];
+    points->GetOutput()->GetPoint(i, p);
+    lights->SetPosition(i, p[0], p[1], p[2]);
+    lights->SetColor(i, 1.0, 1.0, 1.0);
+    lights->SetIntensity(i, intensity);
+    lights->SetAttenuation(i, 1.0, 0.0, 8.0);
+  }
+  std::array<double, 3> first = { { 0.0, 0.0, 0.0 } };
+  if (count > 0)
+  {
+    points->GetOutput()->GetPoint(0, first.data());
+  }
+  return first;
 }
 
 /// Wall-clock milliseconds of one synchronous render (GL work finished).

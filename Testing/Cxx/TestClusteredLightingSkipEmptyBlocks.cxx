@@ -21,10 +21,10 @@
 //    is shaded at the pixel's centre, on its primitive's plane extrapolated past the
 //    primitive, and at a silhouette that may be far from every surface. The scene of
 //    Examples/Python/user_lights.py (a ball on a floor, 2,000 lights as users write them)
-//    with 8 samples asked (llvmpipe gives 4), on a finer grid than the default (262,144 nodes:
-//    smaller blocks, which such a fragment leaves more often): within 2 steps of brute force (when
-//    only the surfaces' blocks were summed, 4 silhouette pixels were up to 12 steps darker), and a
-//    part of the grid again single-sampled;
+//    with 8 samples asked (llvmpipe gives 4), on a finer grid than the default (262,144
+//    nodes: smaller blocks, which such a fragment leaves more often): within 2 steps of
+//    brute force (when only the surfaces' blocks were summed, silhouette pixels were up
+//    to 12 steps off), and a part of the grid again single-sampled;
 //  - PrintSelf names the option and the counts; nothing is reported.
 #include "ClusteredLightingGLTestUtilities.h"
 #include "ClusteredLightingTestUtilities.h"
@@ -39,7 +39,6 @@
 #include "vtkLineSource.h"
 #include "vtkMinimalStandardRandomSequence.h"
 #include "vtkMultiBlockDataSet.h"
-#include "vtkPlaneSource.h"
 #include "vtkPointSource.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
@@ -87,19 +86,6 @@ vtkTypeInt64 GridNodes(vtkClusteredLightingPass* pass)
   return static_cast<vtkTypeInt64>(d[0]) * d[1] * d[2];
 }
 
-/// Adds an actor of `source`'s output to `ren`.
-void AddSurface(vtkRenderer* ren, vtkPolyDataAlgorithm* source, double grey, double specular)
-{
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputConnection(source->GetOutputPort());
-  vtkNew<vtkActor> actor;
-  actor->SetMapper(mapper);
-  actor->GetProperty()->SetColor(grey, grey, grey);
-  actor->GetProperty()->SetSpecular(specular);
-  actor->GetProperty()->SetSpecularPower(20.0);
-  ren->AddActor(actor);
-}
-
 /// A multisampled framebuffer: every block is summed (see the file's first comment).
 void CheckMultisampled()
 {
@@ -109,35 +95,15 @@ void CheckMultisampled()
   vtkNew<vtkRenderer> ren;
   ren->AutomaticLightCreationOff();
   rw->AddRenderer(ren);
-  vtkNew<vtkPlaneSource> floor;
-  floor->SetOrigin(-4, -1, -4);
-  floor->SetPoint1(4, -1, -4);
-  floor->SetPoint2(-4, -1, 4);
-  floor->SetResolution(64, 64);
-  AddSurface(ren, floor, 0.8, 0.0);
-  vtkNew<vtkSphereSource> sphere;
-  sphere->SetRadius(0.6);
-  sphere->SetThetaResolution(64);
-  sphere->SetPhiResolution(48);
-  AddSurface(ren, sphere, 0.85, 0.5);
+  ClusteredLightingScenes::AddBallScene(ren);
   vtkNew<vtkMinimalStandardRandomSequence> random;
   random->SetSeed(1177);
-  vtkNew<vtkPointSource> points;
-  points->SetNumberOfPoints(2000);
-  points->SetRadius(3.0);
-  points->SetRandomSequence(random);
-  points->Update();
   vtkNew<vtkClusteredLightSet> lights;
-  lights->SetInputData(points->GetOutput());
-  lights->SetDefaultAttenuation(1.0, 0.0, 8.0);
-  lights->SetDefaultIntensity(0.02);
+  ClusteredLightingScenes::MakeBallLights(lights, 2000, 0.02, random);
   vtkNew<vtkClusteredLightingPass> pass;
   pass->AddLightSet(lights);
   pass->SetFarFieldResolution(262144);
   ren->SetPass(pass);
-  ren->GetActiveCamera()->SetPosition(0, 1.5, 6);
-  ren->GetActiveCamera()->SetFocalPoint(0, -0.3, 0);
-  ren->ResetCameraClippingRange();
 
   rw->Render();
   if (rw->GetMultiSamples() < 2)

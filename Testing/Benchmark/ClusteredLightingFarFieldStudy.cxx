@@ -1199,8 +1199,12 @@ int main(int argc, char* argv[])
     // Examples/Python/user_lights.py's scene and lights (intensity 0.02 before --intensity).
     ctx.GetRenderer()->RemoveAllViewProps();
     ClusteredLightingScenes::AddBallScene(ctx.GetRenderer());
-    const std::array<double, 3> first =
-      ClusteredLightingScenes::MakeBallLights(set, lightsCount, 0.02, nullptr);
+    ClusteredLightingScenes::MakeBallLights(set, lightsCount, 0.02, nullptr);
+    double first[3] = { 0.0, 0.0, 0.0 };
+    if (lightsCount > 0)
+    {
+      set->GetPosition(0, first);
+    }
     std::printf("ball: first light at (%.6f, %.6f, %.6f)\n", first[0], first[1], first[2]);
   }
   if (intensity >= 0.0)

@@ -8,7 +8,8 @@
  *    triangles), optionally Loop-subdivided (2 levels: about 1.1 M triangles);
  *  - the KIT FZK-Haus interior (assimp-testmodels: AC14-FZK-Haus.ifc, converted to OBJ by
  *    `assimp export`, see scripts/prepare-data.sh).
- * Light layouts are seeded (std::mt19937), so every run places the same lights.
+ * Light layouts are seeded (std::mt19937), so every run places the same lights
+ * (MakeBallLights: the vtkRandomSequence it is given).
  */
 #ifndef ClusteredLightingScenes_h
 #define ClusteredLightingScenes_h
@@ -337,9 +338,9 @@ inline void AddBallScene(vtkRenderer* ren)
  * The lights of AddBallScene as user_lights.py writes them: `count` white points of a
  * vtkPointSource of radius 3, VTK's inverse-square attenuation (1, 0, 8), `intensity`
  * each. `random` draws the points (nullptr: VTK's global sequence, which gives the
- * example's points when nothing drew from it before). Returns the first light's position.
+ * example's points when nothing drew from it before).
  */
-inline std::array<double, 3> MakeBallLights(
+inline void MakeBallLights(
   vtkClusteredLightSet* lights, int count, double intensity, vtkRandomSequence* random)
 {
   vtkNew<vtkPointSource> points;
@@ -357,12 +358,6 @@ inline std::array<double, 3> MakeBallLights(
     lights->SetIntensity(i, intensity);
     lights->SetAttenuation(i, 1.0, 0.0, 8.0);
   }
-  std::array<double, 3> first = { { 0.0, 0.0, 0.0 } };
-  if (count > 0)
-  {
-    points->GetOutput()->GetPoint(0, first.data());
-  }
-  return first;
 }
 
 /// Wall-clock milliseconds of one synchronous render (GL work finished).

@@ -315,9 +315,17 @@ const vtkClusteredLightingAssignment& vtkClusteredLightingAssigner::Update(
   r.Grid[1] = inputs.View.Grid.TilesY;
   r.Grid[2] = inputs.View.Grid.Slices;
 
-  // 4. Light records, uploaded only when the lights changed. The far field is summed on
+  // 4. Depth-aware clusters: slices where the geometry is, each cluster cut to its depths
+  // (before the far field, whose marks in a multisampled framebuffer are made again when
+  // these change).
+  const auto boundsStart = std::chrono::steady_clock::now();
+  this->UpdateDepthBounds(inputs);
+  const double boundsTime = Milliseconds(boundsStart, std::chrono::steady_clock::now());
+
+  // 5. Light records, uploaded only when the lights changed. The far field is summed on
   // the blocks the surfaces read: all of them when the lights changed, else those that
-  // surfaces reached since (a prop that moved or appeared).
+  // surfaces reached since (a prop that moved or appeared, or, multisampled, a view whose
+  // recorded fragments reach new blocks).
   if (r.Enabled && this->FarFieldPlan.Active)
   {
     this->UpdateFarFieldBlocks(inputs);
@@ -401,11 +409,9 @@ const vtkClusteredLightingAssignment& vtkClusteredLightingAssigner::Update(
     {
       glFinish();
     }
-    r.LightUpdateTime = Milliseconds(t0, std::chrono::steady_clock::now());
+    // Not the depth bounds' time, measured on its own (DepthBoundsTime).
+    r.LightUpdateTime = Milliseconds(t0, std::chrono::steady_clock::now()) - boundsTime;
   }
-
-  // 5. Depth-aware clusters: slices where the geometry is, each cluster cut to its depths.
-  this->UpdateDepthBounds(inputs);
 
   // 6-7. View records, list and master: only when something changed.
   ViewKey view;
@@ -442,8 +448,15 @@ const vtkClusteredLightingAssignment& vtkClusteredLightingAssigner::Update(
 }
 
 //------------------------------------------------------------------------------
-// The blocks are marked again only when the surfaces' boxes or the grid changed: lights
-// that move every frame reuse the marks.
+// Squares of pixels marked together (MarkFarFieldBlocksOfPixels): 8 x 8 pixels at a few
+// metres are a fraction of a far-field cell, and a 1024 x 768 view is 12,288 squares.
+constexpr int FarFieldMarkPiece = 8;
+
+//------------------------------------------------------------------------------
+// The surfaces' marks are made again only when their boxes or the grid changed: lights
+// that move every frame reuse them. Where fragments may lie off their surfaces, the marks
+// of the prepass's recorded depths are added again when the depth-aware clusters or the
+// view changed (a moving camera); without that record every block is marked.
 void vtkClusteredLightingAssigner::UpdateFarFieldBlocks(
   const vtkClusteredLightingAssignerInputs& inputs)
 {
@@ -452,27 +465,64 @@ void vtkClusteredLightingAssigner::UpdateFarFieldBlocks(
   const vtkClusteredLightingSurfaceBoxes* surfaces = inputs.Surfaces;
   const bool everywhere = !surfaces || surfaces->GetEverywhere();
   const std::uint64_t version = surfaces ? surfaces->GetVersion() : 0;
-  if (this->FarFieldNeeded.size() == blocks && everywhere == this->NeededEverywhere &&
-    (everywhere || version == this->NeededVersion) && grid.Origin == this->NeededGrid.Origin &&
-    grid.Spacing == this->NeededGrid.Spacing && grid.Dims == this->NeededGrid.Dims)
+  bool changed = false;
+  if (!(this->SurfaceNeeded.size() == blocks && everywhere == this->NeededEverywhere &&
+        (everywhere || version == this->NeededVersion) && grid.Origin == this->NeededGrid.Origin &&
+        grid.Spacing == this->NeededGrid.Spacing && grid.Dims == this->NeededGrid.Dims))
   {
-    return;
-  }
-  this->NeededEverywhere = everywhere;
-  this->NeededVersion = version;
-  this->NeededGrid = grid;
-  this->FarFieldNeeded.assign(blocks, everywhere ? vtkClusteredLighting::FarFieldAllNodes : 0);
-  this->NeededBlocks = everywhere ? static_cast<std::int64_t>(blocks) : 0;
-  if (!everywhere)
-  {
-    const std::vector<glm::dvec3>& boxes = surfaces->GetBoxes();
-    for (std::size_t i = 0; i + 1 < boxes.size(); i += 2)
+    this->NeededEverywhere = everywhere;
+    this->NeededVersion = version;
+    this->NeededGrid = grid;
+    this->SurfaceNeeded.assign(blocks, everywhere ? vtkClusteredLighting::FarFieldAllNodes : 0);
+    this->SurfaceBlocks = everywhere ? static_cast<std::int64_t>(blocks) : 0;
+    if (!everywhere)
     {
-      this->NeededBlocks += vtkClusteredLighting::MarkFarFieldBlocks(
-        grid, boxes[i], boxes[i + 1], this->FarFieldNeeded);
+      const std::vector<glm::dvec3>& boxes = surfaces->GetBoxes();
+      for (std::size_t i = 0; i + 1 < boxes.size(); i += 2)
+      {
+        this->SurfaceBlocks += vtkClusteredLighting::MarkFarFieldBlocks(
+          grid, boxes[i], boxes[i + 1], this->SurfaceNeeded);
+      }
     }
+    changed = true;
   }
-  this->FarFieldNeededBuilt = false; // new marks: the textures may miss some
+  const bool offSurfaces = inputs.FragmentsOffSurfaces && !everywhere;
+  if (offSurfaces &&
+    (changed || !this->PixelsMarked || this->MarkedDepthBoundsVersion != this->DepthBoundsVersion ||
+      this->MarkedWCVC != inputs.View.WCVC || this->MarkedVCDC != inputs.View.VCDC))
+  {
+    this->FarFieldNeeded = this->SurfaceNeeded;
+    std::int64_t added = 0;
+    // The record holds the opaque fragments the prepass drew: a frame with translucent
+    // geometry (shaded off its surfaces too, and not recorded) marks every block.
+    if (inputs.Depths && this->DepthBounds.Valid && !inputs.DepthOptions.Translucent &&
+      vtkClusteredLighting::MarkFarFieldBlocksOfPixels(grid, *inputs.Depths, inputs.View.WCVC,
+        inputs.View.VCDC, inputs.DepthOptions.WindowMargin, FarFieldMarkPiece, this->FarFieldNeeded,
+        &added))
+    {
+      this->NeededBlocks = this->SurfaceBlocks + added;
+    }
+    else
+    {
+      this->FarFieldNeeded.assign(blocks, vtkClusteredLighting::FarFieldAllNodes);
+      this->NeededBlocks = static_cast<std::int64_t>(blocks);
+    }
+    this->MarkedDepthBoundsVersion = this->DepthBoundsVersion;
+    this->MarkedWCVC = inputs.View.WCVC;
+    this->MarkedVCDC = inputs.View.VCDC;
+    changed = true;
+  }
+  else if (!offSurfaces && (changed || this->PixelsMarked))
+  {
+    this->FarFieldNeeded = this->SurfaceNeeded;
+    this->NeededBlocks = this->SurfaceBlocks;
+    changed = true;
+  }
+  this->PixelsMarked = offSurfaces;
+  if (changed)
+  {
+    this->FarFieldNeededBuilt = false; // new marks: the textures may miss some
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -856,6 +906,7 @@ void vtkClusteredLightingAssigner::UpdateDepthBounds(vtkClusteredLightingAssigne
   {
     r.Reasons |= CL_DIRTY_DEPTHS;
     this->DepthBounds = std::move(bounds);
+    ++this->DepthBoundsVersion;
   }
 }
 

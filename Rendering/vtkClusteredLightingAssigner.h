@@ -122,6 +122,11 @@ struct vtkClusteredLightingAssignerInputs
   /// Where surfaces lie: the far field sums only the blocks they read (nullptr: every
   /// block; vtkClusteredLightingFarFieldBlocks.h).
   const vtkClusteredLightingSurfaceBoxes* Surfaces = nullptr;
+  /// Whether fragments may lie off their surfaces (a multisampled framebuffer shades
+  /// partly covered pixels at their centres): the far field then also sums the blocks
+  /// that the fragments the prepass recorded (Depths, with DepthMax) reach, every block
+  /// without that record (vtkClusteredLightingFarFieldBlocks.h, MarkFarFieldBlocksOfPixels).
+  bool FragmentsOffSurfaces = false;
   vtkClusteredLighting::ViewParameters View; ///< see vtkClusteredLightingAssigner::ComputeView
   bool Clustered = true;                     ///< false: brute force (no list and master passes)
   bool PerClusterCulling = true;
@@ -324,7 +329,8 @@ private:
     const vtkClusteredLighting::FarFieldBuildInputs& in);
   void UpdateRegion(const vtkClusteredLightingAssignerInputs& inputs);
   /// The far field's blocks that the surfaces read (FarFieldNeeded), marked again when
-  /// the surfaces or the grid changed.
+  /// the surfaces or the grid changed; with FragmentsOffSurfaces, and those the recorded
+  /// fragments reach, marked again when the depth-aware clusters or the view changed.
   void UpdateFarFieldBlocks(const vtkClusteredLightingAssignerInputs& inputs);
   bool CheckLimits(vtkOpenGLRenderWindow* rw, vtkClusteredLightingAssignerInputs& inputs);
   void CheckCulling(const vtkClusteredLightingAssignerInputs& inputs);
@@ -362,6 +368,7 @@ private:
   // View.
   ViewKey LastView;
   vtkClusteredLighting::ClusterDepthBounds DepthBounds; ///< of the last assignment
+  std::uint64_t DepthBoundsVersion = 0;                 ///< grows when DepthBounds change
   bool AssignmentValid = false;
   vtkClusteredLighting::ClusterTextureLayout Layout;
 
@@ -369,10 +376,17 @@ private:
   vtkClusteredLightingTextureBuffer LightView;
   vtkClusteredLighting::FarFieldPlan FarFieldPlan;
   vtkClusteredLightingFarFieldTextures FarField;
-  /// Per block of the far field's grid: its nodes some surface reads, as a mask
-  /// (UpdateFarFieldBlocks), and what they were marked from.
+  /// Per block of the far field's grid: its nodes some fragment reads, as a mask
+  /// (UpdateFarFieldBlocks), and what they were marked from: the surfaces' marks
+  /// (SurfaceNeeded), with those of the recorded fragments where fragments may lie off
+  /// their surfaces.
   std::vector<std::uint64_t> FarFieldNeeded;
-  std::int64_t NeededBlocks = 0;    ///< blocks with a node marked
+  std::vector<std::uint64_t> SurfaceNeeded;
+  std::int64_t NeededBlocks = 0;  ///< blocks with a node marked in FarFieldNeeded
+  std::int64_t SurfaceBlocks = 0; ///< blocks with a node marked in SurfaceNeeded
+  bool PixelsMarked = false;      ///< FarFieldNeeded has the recorded fragments' marks
+  std::uint64_t MarkedDepthBoundsVersion = 0;
+  glm::dmat4 MarkedWCVC = glm::dmat4(0.0), MarkedVCDC = glm::dmat4(0.0);
   bool FarFieldNeededBuilt = false; ///< whether the textures hold every node marked
   std::uint64_t NeededVersion = 0;
   bool NeededEverywhere = true;

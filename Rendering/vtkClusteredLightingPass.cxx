@@ -1093,13 +1093,14 @@ vtkClusteredLightingAssignerInputs vtkClusteredLightingPass::MakeAssignerInputs(
   // A multisampled framebuffer shades a fragment that covers some of its pixel's samples
   // at the pixel's centre, on its primitive's plane extrapolated past the primitive: at a
   // silhouette, possibly far from every surface, in a block no surface marks (whose
-  // moments are stale or zero). There every block is summed.
-  if (this->FarField && this->FarFieldSkipEmptyBlocks &&
-    !vtkClusteredLightingSampleDepths::IsDrawFramebufferMultisampled())
+  // moments are stale or zero). There the blocks that the fragments the depth prepass
+  // records reach are summed too (every block without that record).
+  if (this->FarField && this->FarFieldSkipEmptyBlocks)
   {
     vtkClusteredLightingSurfaceBoxes& surfaces = this->Internals->GetEntry(ren).Surfaces;
     surfaces.Update(ren);
     in.Surfaces = &surfaces;
+    in.FragmentsOffSurfaces = vtkClusteredLightingSampleDepths::IsDrawFramebufferMultisampled();
   }
   vtkClusteredLightingGridOptions grid;
   grid.TilesX = this->TilesX;

@@ -527,14 +527,18 @@ public:
    * appears later gets its blocks summed in the frame it does (the others are kept).
    * Switch it off only for shader replacements that move vertices off the mapper's
    * input (vtkShaderProperty), which the boxes do not see: every block is then summed.
-   * In a multisampled framebuffer (VTK's default MultiSamples of 8, for one) every block is
-   * summed whatever this says: a fragment covering part of its pixel is shaded at the
-   * pixel's centre, on its primitive's plane extrapolated past the primitive, and at a
-   * silhouette that point may lie far from every surface, in blocks no surface marks
-   * (docs/far-field.md, "Multisampled framebuffers"). So moving lights rebuild faster in a
-   * single-sampled window (SetMultiSamples(0), with FXAA for antialiasing): 13.1 ms
-   * instead of 28.4 at 20,000 lights in Examples/Python/user_lights.py.
-   * GetNumberOfFarFieldBlocksRead tells how many blocks the surfaces read. Default is on.
+   * In a multisampled framebuffer (VTK's default MultiSamples of 8, for one) a fragment
+   * covering part of its pixel is shaded at the pixel's centre, on its primitive's plane
+   * extrapolated past the primitive, and at a silhouette that point may lie far from every
+   * surface, in blocks no surface marks. There the blocks those fragments reach are summed
+   * too: the depth prepass records the depths each pixel's fragments are shaded at (for
+   * the depth-aware clusters), and every square of 8 x 8 pixels marks the blocks of the
+   * piece of the view those depths span. These marks follow the camera: a camera move
+   * sums the nodes it reaches anew, if any. Without that record (DepthAwareClusters or
+   * the depth prepass off, or a frame without the prepass), and in a frame with visible
+   * translucent geometry (not in the record), every block is summed (docs/far-field.md,
+   * "Multisampled framebuffers"). GetNumberOfFarFieldBlocksRead tells how many blocks are
+   * summed. Default is on.
    */
   vtkSetMacro(FarFieldSkipEmptyBlocks, bool);
   vtkGetMacro(FarFieldSkipEmptyBlocks, bool);
@@ -963,8 +967,9 @@ public:
   vtkGetMacro(NumberOfFarFieldNodesBuilt, vtkTypeInt64);
   /// Blocks of 4 x 4 x 4 nodes of the far field's grid; 0 without a far field.
   vtkGetMacro(NumberOfFarFieldBlocks, vtkTypeInt64);
-  /// Of those, the blocks the visible surfaces read (all of them with
-  /// FarFieldSkipEmptyBlocks off or in a multisampled framebuffer).
+  /// Of those, the blocks the visible surfaces read, with those the recorded fragments
+  /// reach in a multisampled framebuffer (all of them with FarFieldSkipEmptyBlocks off,
+  /// or multisampled without the prepass's record).
   vtkGetMacro(NumberOfFarFieldBlocksRead, vtkTypeInt64);
   /// Spacing of the far field's grid in world units, 0 without a far field.
   vtkGetMacro(FarFieldGridSpacing, double);

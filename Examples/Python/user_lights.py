@@ -30,8 +30,9 @@ translation each frame) and prints the median frame time, far-field build, light
 and assignment times (the first build of a still frame, which the default render's line
 gives, also allocates the far field's buffers and textures);
 --multisamples SAMPLES sets the window's MultiSamples (VTK's default, 8, when not given; in a
-multisampled framebuffer the far field sums every block, FarFieldSkipEmptyBlocks: 0 shows
-what single-sampled builds cost); --animate's line says how many blocks were summed.
+multisampled framebuffer the far field also sums the blocks that fragments shaded off their
+surfaces read, FarFieldSkipEmptyBlocks: 0 shows what single-sampled builds cost);
+--animate's line says how many blocks were summed.
 --back-face-sums also renders with FarFieldExactSumsOnBackFaces on (the floor here is a
 back face: vtkPlaneSource's normal points down). --specular-power POWER sets both actors'
 specular power (20 by default; VTK's own default is 1) and --floor-specular SPECULAR the

@@ -24,23 +24,32 @@
  * other 2.
  *
  * Blocks not marked are not summed: what the textures hold there is stale or zero, finite,
- * and never read by a surface inside a marked box. Nothing here depends on the camera: a
- * moving camera marks the same blocks. Only single-sampled fragments lie on their
+ * and never read by a surface inside a marked box. Nothing so far depends on the camera:
+ * a moving camera marks the same blocks. But only single-sampled fragments lie on their
  * surfaces: a multisampled one that covers part of its pixel is shaded at the pixel's
- * centre, on its primitive's plane extrapolated, possibly far from every box, so the
- * pass marks every block in a multisampled framebuffer (vtkClusteredLightingPass,
- * FarFieldSkipEmptyBlocks).
+ * centre, on its primitive's plane extrapolated, possibly cells away from every box. For
+ * those the pass adds the view's marks (MarkFarFieldBlocksOfPixels): the multisampled depth
+ * prepass records, per pixel, the range of window depths its fragments are shaded at
+ * (vtkClusteredLightingSampleDepths, for the depth-aware clusters), so every such
+ * fragment lies in a known piece of the view frustum, whose world box is marked too.
+ * These marks follow the camera; a camera move that reaches new nodes sums only those (a
+ * build adds only what is missing). Without that record (depth-aware clusters off, or a
+ * framebuffer it cannot be made for), or with translucent geometry in the frame (the
+ * record holds the opaque fragments only), the pass marks every block in a multisampled
+ * framebuffer (vtkClusteredLightingPass, FarFieldSkipEmptyBlocks).
  */
 #ifndef vtkClusteredLightingFarFieldBlocks_h
 #define vtkClusteredLightingFarFieldBlocks_h
 
+#include "vtkClusteredLightingDepthBounds.h"  // for DepthImage
 #include "vtkClusteredLightingFarFieldTree.h" // for FarFieldBlockSize, GetFarFieldBlocks
 
 #include <algorithm> // for std::min, std::max
 #include <array>     // for std::array
-#include <cmath>     // for std::floor
+#include <cmath>     // for std::floor, std::abs, std::isfinite
 #include <cstdint>   // for std::int64_t
 #include <glm/glm.hpp>
+#include <limits> // for std::numeric_limits
 #include <vector> // for std::vector
 
 namespace vtkClusteredLighting
@@ -131,6 +140,102 @@ inline std::int64_t MarkFarFieldBlocks(const FarFieldGrid& grid, const glm::dvec
 
 /// Every node of a block (the mask of nodes when nothing is known of the surfaces).
 constexpr std::uint64_t FarFieldAllNodes = ~std::uint64_t{ 0 };
+
+/**
+ * Marks in `needed` the nodes that a fragment shaded at its pixel's centre may read, from
+ * a multisampled depth prepass's record of the window depths each pixel's fragments have
+ * (`image`: [Depth, DepthMax] per pixel, vtkClusteredLightingSampleDepths; see the file's
+ * description). The pixels go in squares of `piece` x `piece`: their fragments' window
+ * positions lie in the box of the square's pixel centres and of its least and greatest
+ * depths, widened by `windowMargin` (the depth buffer's quantization and VTK's coincident
+ * offsets, DepthBoundsOptions::WindowMargin). The inverse of the projection and view maps
+ * that box to the convex hull of its 8 corners' images (a projective map whose denominator
+ * is positive at the corners, so on the whole box), and the world box of those corners is
+ * marked. A pixel at the cleared depth 1 (no fragment recorded) marks nothing: a fragment
+ * exactly on the far plane records the same, and is not marked. `added`, if given, grows
+ * by the number of blocks that had no mark before. Returns false and marks nothing when it
+ * cannot say: no image or no DepthMax, a projection that cannot be inverted, a corner that
+ * maps to infinity or behind the camera.
+ */
+inline bool MarkFarFieldBlocksOfPixels(const FarFieldGrid& grid, const DepthImage& image,
+  const glm::dmat4& wcvc, const glm::dmat4& vcdc, double windowMargin, int piece,
+  std::vector<std::uint64_t>& needed, std::int64_t* added = nullptr)
+{
+  if (!image.Depth || !image.DepthMax || image.Width < 1 || image.Height < 1 || piece < 1 ||
+    !(windowMargin >= 0.0))
+  {
+    return false;
+  }
+  const glm::dmat4 worldFromNdc = glm::inverse(vcdc * wcvc);
+  const double* m = &worldFromNdc[0][0];
+  for (int i = 0; i < 16; ++i)
+  {
+    if (!std::isfinite(m[i]))
+    {
+      return false;
+    }
+  }
+  std::vector<glm::dvec3> boxes;
+  for (int y0 = 0; y0 < image.Height; y0 += piece)
+  {
+    const int y1 = std::min(y0 + piece, image.Height) - 1;
+    for (int x0 = 0; x0 < image.Width; x0 += piece)
+    {
+      const int x1 = std::min(x0 + piece, image.Width) - 1;
+      float lo = 1.0f, hi = 0.0f;
+      for (int y = y0; y <= y1; ++y)
+      {
+        const std::size_t row = static_cast<std::size_t>(y) * image.Width;
+        for (int x = x0; x <= x1; ++x)
+        {
+          const float w = image.Depth[row + x];
+          if (w < 1.0f)
+          {
+            lo = std::min(lo, w);
+            hi = std::max(hi, std::max(w, image.DepthMax[row + x]));
+          }
+        }
+      }
+      if (lo > hi)
+      {
+        continue; // no fragment recorded
+      }
+      glm::dvec3 boxLo(std::numeric_limits<double>::infinity());
+      glm::dvec3 boxHi(-std::numeric_limits<double>::infinity());
+      for (int c = 0; c < 8; ++c)
+      {
+        const double px = ((c & 1) ? x1 : x0) + 0.5, py = ((c & 2) ? y1 : y0) + 0.5;
+        const double w = (c & 4) ? hi + windowMargin : lo - windowMargin;
+        const glm::dvec4 q = worldFromNdc *
+          glm::dvec4(
+            2.0 * px / image.Width - 1.0, 2.0 * py / image.Height - 1.0, 2.0 * w - 1.0, 1.0);
+        if (!(q.w > 0.0) || !std::isfinite(q.x + q.y + q.z + q.w))
+        {
+          return false;
+        }
+        const glm::dvec3 p = glm::dvec3(q) / q.w;
+        boxLo = glm::min(boxLo, p);
+        boxHi = glm::max(boxHi, p);
+      }
+      if (!std::isfinite(boxLo.x + boxLo.y + boxLo.z + boxHi.x + boxHi.y + boxHi.z))
+      {
+        return false;
+      }
+      boxes.push_back(boxLo);
+      boxes.push_back(boxHi);
+    }
+  }
+  std::int64_t count = 0;
+  for (std::size_t i = 0; i + 1 < boxes.size(); i += 2)
+  {
+    count += MarkFarFieldBlocks(grid, boxes[i], boxes[i + 1], needed);
+  }
+  if (added)
+  {
+    *added += count;
+  }
+  return true;
+}
 
 /// The nodes of a block in layers [first, last] along `axis`, as a mask.
 inline std::uint64_t GetFarFieldLayerMask(int axis, int first, int last)

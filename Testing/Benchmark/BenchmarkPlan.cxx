@@ -442,6 +442,15 @@ std::vector<Step> MakePlan(const PlanOptions& options)
           everyBlock.Apply = [](vtkClusteredLightingPass* p)
           { p->SetFarFieldSkipEmptyBlocks(false); };
           plan.push_back(everyBlock);
+          // In a multisampled window, as VTK's default asks for (8 samples): the surfaces'
+          // blocks and those the prepass's recorded fragments reach (fragments shaded at
+          // their pixels' centres, off their surfaces), against the window's own reference.
+          Step multisampled = s;
+          multisampled.Value = "animated (8 samples)";
+          multisampled.ChangesScene = "8 samples";
+          multisampled.Setup = [](Context& ctx) { ctx.GetWindow()->SetMultiSamples(8); };
+          multisampled.Teardown = [](Context& ctx) { ctx.GetWindow()->SetMultiSamples(0); };
+          plan.push_back(multisampled);
         }
         // Lights moving under a still camera: the prepass's depths are copied back
         // (ReuseDepthPrepass), and only the lights are assigned again.

@@ -4,13 +4,21 @@
 // inside, on the edge of and far outside the grid; a floor on a node plane marks two
 // layers of one row of blocks; a build of the marked layers writes exactly the values a
 // whole build writes there (spot lights and the specular's bins included) and leaves
-// every other node alone; a later build adds only what is missing.
+// every other node alone; a later build adds only what is missing. In a multisampled
+// framebuffer, the marks of the prepass's recorded depths hold every node that a fragment
+// shaded at its pixel's centre, at any depth its pixel's fragments have, reads (at scales
+// from 1e-3 to 1e6, perspective and parallel), and a record that cannot say marks nothing.
+#include "TestUtilities.h"
 #include "vtkClusteredLightingFarFieldBlocks.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <iostream>
+#include <limits>
 #include <random>
+#include <string>
 #include <vector>
 
 using namespace vtkClusteredLighting;
@@ -292,4 +300,199 @@ TEST(FarFieldBlocks, ABuildOfTheMarkedLayersIsTheWholeBuildThere)
     EXPECT_EQ(GetFarFieldLayerMask(extra.Axis[q], first, last) & missing, missing);
   }
   EXPECT_TRUE(GetFarFieldBlocksToBuild(more, more).Blocks.empty());
+}
+
+namespace
+{
+/// A multisampled view of a ball on a floor (world z up) from a camera above and in
+/// front, `scale` sized, far from the origin: per pixel the window depth of the nearest
+/// hit at its centre (24-bit), as Depth; as the range of depths a multisampled prepass
+/// records (vtkClusteredLightingSampleDepths), [Depth, DepthMax] spans the depths of the
+/// pixel and its 8 neighbours (primitives of the neighbours extrapolated to this centre,
+/// which at the ball's silhouette reach the floor behind it). Background pixels read 1.
+struct MultisampledView
+{
+  int Width = 96, Height = 72;
+  glm::dmat4 WCVC, VCDC;
+  std::vector<float> Depth, DepthMax;
+  vtkClusteredLighting::DepthImage Image() const
+  {
+    return { this->Depth.data(), this->Width, this->Height, this->DepthMax.data() };
+  }
+  /// The world point of pixel (x, y)'s centre at window depth w.
+  glm::dvec3 WorldPoint(int x, int y, double w) const
+  {
+    const glm::dvec4 ndc(2.0 * (x + 0.5) / this->Width - 1.0, 2.0 * (y + 0.5) / this->Height - 1.0,
+      2.0 * w - 1.0, 1.0);
+    const glm::dvec4 vc = glm::inverse(this->VCDC) * ndc;
+    const glm::dvec4 wc = glm::inverse(this->WCVC) * (vc / vc.w);
+    return glm::dvec3(wc) / wc.w;
+  }
+};
+
+MultisampledView RenderBallOnFloor(bool parallel, double scale, const glm::dvec3& offset)
+{
+  MultisampledView v;
+  const glm::dvec3 centre = offset + scale * glm::dvec3(0.0, 0.0, 1.0);
+  const double radius = scale;
+  const glm::dvec3 eye = offset + scale * glm::dvec3(0.5, -6.0, 3.5);
+  v.WCVC = glm::lookAt(eye, centre, glm::dvec3(0.0, 0.0, 1.0));
+  const double nearVC = 2.0 * scale, farVC = 20.0 * scale;
+  v.VCDC = parallel ? ClusteredLightingTest::Parallel(2.5 * scale, 4.0 / 3.0, nearVC, farVC)
+                    : ClusteredLightingTest::Perspective(35.0, 4.0 / 3.0, nearVC, farVC);
+  const glm::dmat4 inv = glm::inverse(v.VCDC * v.WCVC);
+  std::vector<float> depth(static_cast<std::size_t>(v.Width) * v.Height, 1.0f);
+  for (int y = 0; y < v.Height; ++y)
+  {
+    for (int x = 0; x < v.Width; ++x)
+    {
+      const double nx = 2.0 * (x + 0.5) / v.Width - 1.0, ny = 2.0 * (y + 0.5) / v.Height - 1.0;
+      const glm::dvec4 a = inv * glm::dvec4(nx, ny, -1.0, 1.0);
+      const glm::dvec4 b = inv * glm::dvec4(nx, ny, 1.0, 1.0);
+      const glm::dvec3 o = glm::dvec3(a) / a.w, e = glm::dvec3(b) / b.w;
+      const glm::dvec3 d = e - o; // t in [0, 1] spans near to far
+      double t = 2.0;
+      if (d.z < 0.0)
+      {
+        t = std::min(t, (offset.z - o.z) / d.z); // the floor
+      }
+      const glm::dvec3 oc = o - centre;
+      const double qa = glm::dot(d, d), qb = glm::dot(oc, d),
+                   qc = glm::dot(oc, oc) - radius * radius;
+      const double disc = qb * qb - qa * qc;
+      if (disc >= 0.0)
+      {
+        const double ts = (-qb - std::sqrt(disc)) / qa;
+        t = ts > 0.0 ? std::min(t, ts) : t;
+      }
+      if (t > 1.0)
+      {
+        continue;
+      }
+      const glm::dvec4 clip = v.VCDC * v.WCVC * glm::dvec4(o + t * d, 1.0);
+      const double w = 0.5 * clip.z / clip.w + 0.5;
+      depth[static_cast<std::size_t>(y) * v.Width + x] =
+        static_cast<float>(std::round(w * 16777216.0) / 16777216.0);
+    }
+  }
+  v.Depth.assign(depth.size(), 1.0f);
+  v.DepthMax.assign(depth.size(), 1.0f);
+  for (int y = 0; y < v.Height; ++y)
+  {
+    for (int x = 0; x < v.Width; ++x)
+    {
+      const std::size_t p = static_cast<std::size_t>(y) * v.Width + x;
+      if (depth[p] >= 1.0f)
+      {
+        continue; // no fragment here
+      }
+      float lo = depth[p], hi = depth[p];
+      for (int j = std::max(y - 1, 0); j <= std::min(y + 1, v.Height - 1); ++j)
+      {
+        for (int i = std::max(x - 1, 0); i <= std::min(x + 1, v.Width - 1); ++i)
+        {
+          const float n = depth[static_cast<std::size_t>(j) * v.Width + i];
+          lo = n < 1.0f ? std::min(lo, n) : lo;
+          hi = n < 1.0f ? std::max(hi, n) : hi;
+        }
+      }
+      v.Depth[p] = lo;
+      v.DepthMax[p] = hi;
+    }
+  }
+  return v;
+}
+} // namespace
+
+TEST(FarFieldBlocks, RecordedPixelsMarkEveryNodeAMultisampledFragmentReads)
+{
+  for (double scale : { 1e-3, 1.0, 1e6 })
+  {
+    for (bool parallel : { false, true })
+    {
+      const glm::dvec3 offset = scale * glm::dvec3(30.0, -12.0, 4.0);
+      const MultisampledView v = RenderBallOnFloor(parallel, scale, offset);
+      // The far field's grid over the floor's middle and the ball, 0.25 of the ball's
+      // radius per cell (as the pass's grids: a few cells per light radius).
+      FarFieldGrid g;
+      g.Origin = offset + scale * glm::dvec3(-4.0, -4.0, 0.0);
+      g.Spacing = 0.25 * scale;
+      g.Dims = { { 33, 33, 13 } };
+      // Squares of 8 pixels (the pass's), of 5 (partial squares at the image's edges) and
+      // single pixels.
+      for (int piece : { 8, 5, 1 })
+      {
+        std::vector<std::uint64_t> needed(
+          static_cast<std::size_t>(GetNumberOfFarFieldBlocks(g)), 0);
+        std::int64_t added = 0;
+        ASSERT_TRUE(MarkFarFieldBlocksOfPixels(
+          g, v.Image(), v.WCVC, v.VCDC, DepthBoundsOptions().WindowMargin, piece, needed, &added));
+        const std::int64_t marked =
+          std::count_if(needed.begin(), needed.end(), [](std::uint64_t m) { return m != 0; });
+        EXPECT_EQ(added, marked);
+        // Every fragment, at any depth its pixel's fragments have: every node it reads.
+        int misses = 0, fragments = 0;
+        for (int y = 0; y < v.Height; ++y)
+        {
+          for (int x = 0; x < v.Width; ++x)
+          {
+            const std::size_t p = static_cast<std::size_t>(y) * v.Width + x;
+            if (v.Depth[p] >= 1.0f)
+            {
+              continue;
+            }
+            for (double f : { 0.0, 0.25, 0.5, 0.75, 1.0 })
+            {
+              const double w = v.Depth[p] + f * (double(v.DepthMax[p]) - v.Depth[p]);
+              ++fragments;
+              for (const glm::ivec3& n : NodesRead(g, v.WorldPoint(x, y, w)))
+              {
+                misses += IsMarked(g, needed, n.x, n.y, n.z) ? 0 : 1;
+              }
+            }
+          }
+        }
+        const std::string what = "scale " + std::to_string(scale) +
+          (parallel ? " parallel" : " perspective") + ", squares of " + std::to_string(piece);
+        EXPECT_GT(fragments, 1000) << what;
+        EXPECT_EQ(misses, 0) << what;
+        // And a part of the grid: the pieces of the frustum lie around the surfaces (an
+        // assertion that could fail: marking everything would pass the one above).
+        EXPECT_GT(marked, 0) << what;
+        EXPECT_LT(marked, static_cast<std::int64_t>(needed.size()) * 3 / 4) << what;
+        std::cout << what << ": " << marked << " of " << needed.size() << " blocks marked\n";
+      }
+    }
+  }
+}
+
+TEST(FarFieldBlocks, RecordedPixelsThatCannotSayMarkNothing)
+{
+  const MultisampledView v = RenderBallOnFloor(false, 1.0, glm::dvec3(0.0));
+  FarFieldGrid g;
+  g.Origin = glm::dvec3(-4.0, -4.0, 0.0);
+  g.Spacing = 0.25;
+  g.Dims = { { 33, 33, 13 } };
+  const std::vector<std::uint64_t> none(static_cast<std::size_t>(GetNumberOfFarFieldBlocks(g)), 0);
+  const double margin = DepthBoundsOptions().WindowMargin;
+  std::vector<std::uint64_t> needed = none;
+  // Single-sampled (no DepthMax): nothing says where the fragments off surfaces are.
+  DepthImage single = v.Image();
+  single.DepthMax = nullptr;
+  EXPECT_FALSE(MarkFarFieldBlocksOfPixels(g, single, v.WCVC, v.VCDC, margin, 8, needed));
+  EXPECT_EQ(needed, none);
+  // A projection that cannot be inverted.
+  EXPECT_FALSE(
+    MarkFarFieldBlocksOfPixels(g, v.Image(), v.WCVC, glm::dmat4(0.0), margin, 8, needed));
+  EXPECT_EQ(needed, none);
+  // A margin that takes the deepest corners past infinity, behind the camera.
+  EXPECT_FALSE(MarkFarFieldBlocksOfPixels(g, v.Image(), v.WCVC, v.VCDC, 10.0, 8, needed));
+  EXPECT_EQ(needed, none);
+  // Only background (the cleared depth 1): nothing recorded, nothing marked.
+  const std::vector<float> cleared(v.Depth.size(), 1.0f);
+  const DepthImage background{ cleared.data(), v.Width, v.Height, cleared.data() };
+  EXPECT_TRUE(MarkFarFieldBlocksOfPixels(g, background, v.WCVC, v.VCDC, margin, 8, needed));
+  EXPECT_EQ(needed, none);
+  EXPECT_TRUE(MarkFarFieldBlocksOfPixels(g, v.Image(), v.WCVC, v.VCDC, margin, 8, needed));
+  EXPECT_NE(needed, none);
 }

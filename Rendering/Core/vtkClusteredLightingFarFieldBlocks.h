@@ -151,8 +151,9 @@ constexpr std::uint64_t FarFieldAllNodes = ~std::uint64_t{ 0 };
  * offsets, DepthBoundsOptions::WindowMargin). The inverse of the projection and view maps
  * that box to the convex hull of its 8 corners' images (a projective map whose denominator
  * is positive at the corners, so on the whole box), and the world box of those corners is
- * marked. A pixel at the cleared depth 1 (no fragment recorded) marks nothing: a fragment
- * exactly on the far plane records the same, and is not marked. `added`, if given, grows
+ * marked. A pixel at the cleared depths (1, 1) (no fragment recorded) marks nothing: a
+ * fragment exactly on the far plane records the same, and is not marked (one whose centre
+ * lies past the far plane records a depth above 1, and is). `added`, if given, grows
  * by the number of blocks that had no mark before. Returns false and marks nothing when it
  * cannot say: no image or no DepthMax, a projection that cannot be inverted, a corner that
  * maps to infinity or behind the camera.
@@ -182,21 +183,25 @@ inline bool MarkFarFieldBlocksOfPixels(const FarFieldGrid& grid, const DepthImag
     for (int x0 = 0; x0 < image.Width; x0 += piece)
     {
       const int x1 = std::min(x0 + piece, image.Width) - 1;
-      float lo = 1.0f, hi = 0.0f;
+      float lo = std::numeric_limits<float>::max(), hi = -std::numeric_limits<float>::max();
+      bool any = false;
       for (int y = y0; y <= y1; ++y)
       {
         const std::size_t row = static_cast<std::size_t>(y) * image.Width;
         for (int x = x0; x <= x1; ++x)
         {
-          const float w = image.Depth[row + x];
-          if (w < 1.0f)
+          // The cleared depth, (1, 1), records no fragment; a fragment extrapolated past
+          // the far plane records a depth above 1 and counts.
+          const float w = image.Depth[row + x], wMax = image.DepthMax[row + x];
+          if (w != 1.0f || wMax != 1.0f)
           {
             lo = std::min(lo, w);
-            hi = std::max(hi, std::max(w, image.DepthMax[row + x]));
+            hi = std::max(hi, std::max(w, wMax));
+            any = true;
           }
         }
       }
-      if (lo > hi)
+      if (!any)
       {
         continue; // no fragment recorded
       }

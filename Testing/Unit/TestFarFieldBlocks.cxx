@@ -488,6 +488,22 @@ TEST(FarFieldBlocks, RecordedPixelsThatCannotSayMarkNothing)
   // A margin that takes the deepest corners past infinity, behind the camera.
   EXPECT_FALSE(MarkFarFieldBlocksOfPixels(g, v.Image(), v.WCVC, v.VCDC, 10.0, 8, needed));
   EXPECT_EQ(needed, none);
+  // A fragment shaded past the far plane (a primitive's plane extrapolated to a pixel's
+  // centre) records a depth above 1: marked, as every other one.
+  std::vector<float> past(v.Depth.size(), 1.0f);
+  std::vector<float> pastMax(v.Depth.size(), 1.0f);
+  const std::size_t corner = static_cast<std::size_t>(v.Height / 2) * v.Width + v.Width / 2;
+  past[corner] = pastMax[corner] = 1.00001f;
+  const DepthImage beyond{ past.data(), v.Width, v.Height, pastMax.data() };
+  EXPECT_TRUE(MarkFarFieldBlocksOfPixels(g, beyond, v.WCVC, v.VCDC, margin, 8, needed));
+  int unmarked = 0;
+  for (const glm::ivec3& n : NodesRead(g, v.WorldPoint(v.Width / 2, v.Height / 2, 1.00001)))
+  {
+    unmarked += IsMarked(g, needed, n.x, n.y, n.z) ? 0 : 1;
+  }
+  EXPECT_EQ(unmarked, 0);
+  EXPECT_NE(needed, none);
+  needed = none;
   // Only background (the cleared depth 1): nothing recorded, nothing marked.
   const std::vector<float> cleared(v.Depth.size(), 1.0f);
   const DepthImage background{ cleared.data(), v.Width, v.Height, cleared.data() };
